@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <Eigen/Geometry>
+#include <string>
+#include <vector>
+
+namespace radio_follow {
+
+/// A UWB DWM1001 module in tag mode mounted on the robot (two-way ranging).
+struct TwrModule {
+  /// Module ID as the driver reports it in UwbRanges.tag_id, e.g. "5722".
+  std::string id;
+  /// TF frame of the module; the driver's frame_id.
+  std::string frame_id;
+  /// Antenna position in the layout's fixed frame, metres.
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+  /// Range calibration polynomial, corrected = sum_k c[k] * r^k (metres).
+  std::vector<double> calibration{0.0, 1.0};
+
+  /// Applies the calibration polynomial (Horner) to a raw range.
+  double correctRange(double raw_range) const;
+};
+
+/// Which u-blox antenna board (selects the simulator's measured noise tables).
+enum class AoaBoardKind { kXplrAoa1, kAntB10 };
+
+/// A Bluetooth AoA antenna board mounted on the robot.
+struct AoaBoard {
+  /// Board name, unique in the layout (also the driver's namespace in the launch files).
+  std::string id;
+  /// TF frame of the board: x along boresight, z up. Matches AoaBearing.header.frame_id.
+  std::string frame_id;
+  AoaBoardKind kind = AoaBoardKind::kXplrAoa1;
+  /// Board position in the fixed frame, metres.
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+  /// Board orientation in the fixed frame (maps board-frame vectors to the fixed frame).
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+  /// Half-angle of the cone around boresight in which bearings are trusted, radians.
+  double field_of_view = 1.22;  // 70 deg: the thesis found the edges unusable.
+};
+
+/// A TDoA anchor with a known position in the fixed frame.
+struct TdoaAnchor {
+  std::string id;
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+};
+
+/// Where every radio sensor sits on the robot, and what the target carries.
+/// Shared by the locator, the simulator and the placement advisor.
+struct Layout {
+  /// Frame every position is expressed in (on the robot), e.g. "base_link".
+  std::string fixed_frame = "base_link";
+  /// UWB anchor ID the target carries (UwbRange.anchor_id), e.g. "DA12".
+  std::string target_anchor_id;
+  /// Bluetooth tag ID the target carries (AoaBearing.tag_id); empty = any tag.
+  std::string target_tag_id;
+  std::vector<TwrModule> twr_modules;
+  std::vector<AoaBoard> aoa_boards;
+  std::vector<TdoaAnchor> tdoa_anchors;
+
+  /// Throws ParamError naming the first invalid field.
+  void validate() const;
+
+  const TwrModule* findTwrModule(const std::string& id_or_frame) const;
+  const AoaBoard* findAoaBoard(const std::string& id_or_frame) const;
+  const TdoaAnchor* findTdoaAnchor(const std::string& id) const;
+};
+
+/// Reads a layout from YAML text (see config/layouts/*.yaml for the format) and
+/// validates it. Throws ParamError on any missing or invalid field; `origin` names
+/// the source in messages (a file path, usually).
+Layout parseLayout(const std::string& yaml_text, const std::string& origin);
+
+/// Reads and validates a layout file. Throws ParamError when it cannot be read.
+Layout loadLayoutFile(const std::string& path);
+
+std::string toString(AoaBoardKind kind);
+
+}  // namespace radio_follow

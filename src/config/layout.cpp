@@ -1,0 +1,270 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/config/layout.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "radio_follow/common/angles.hpp"
+#include "radio_follow/common/param_error.hpp"
+
+namespace radio_follow {
+namespace {
+
+bool finite(const Eigen::Vector3d& v) { return v.allFinite(); }
+
+std::string describe(const YAML::Node& node) {
+  if (!node.IsDefined() || node.IsNull()) {
+    return "(missing)";
+  }
+  YAML::Emitter out;
+  out << YAML::Flow << node;
+  return out.c_str();
+}
+
+/// Reads a scalar of type T, throwing ParamError with the field's path when absent
+/// (unless a default is given) or of the wrong type.
+template <typename T>
+T readScalar(const YAML::Node& parent, const std::string& key, const std::string& path,
+             const std::string& expected, const T* fallback = nullptr) {
+  const YAML::Node node = parent[key];
+  if (!node.IsDefined() || node.IsNull()) {
+    if (fallback != nullptr) {
+      return *fallback;
+    }
+    throw ParamError(path + key, "(missing)", expected);
+  }
+  try {
+    return node.as<T>();
+  } catch (const YAML::Exception&) {
+    throw ParamError(path + key, describe(node), expected);
+  }
+}
+
+std::vector<double> readNumbers(const YAML::Node& node, const std::string& name,
+                                const std::string& expected) {
+  if (!node.IsSequence()) {
+    throw ParamError(name, describe(node), expected);
+  }
+  std::vector<double> values;
+  for (const auto& item : node) {
+    try {
+      values.push_back(item.as<double>());
+    } catch (const YAML::Exception&) {
+      throw ParamError(name, describe(node), expected);
+    }
+    if (!std::isfinite(values.back())) {
+      throw ParamError(name, describe(node), expected);
+    }
+  }
+  return values;
+}
+
+Eigen::Vector3d readVector3(const YAML::Node& parent, const std::string& key,
+                            const std::string& path, const std::string& unit) {
+  const std::string expected = "a list of 3 finite numbers [x, y, z] in " + unit;
+  const std::vector<double> v = readNumbers(parent[key], path + key, expected);
+  if (v.size() != 3) {
+    throw ParamError(path + key, describe(parent[key]), expected);
+  }
+  return Eigen::Vector3d(v[0], v[1], v[2]);
+}
+
+AoaBoardKind parseKind(const std::string& text, const std::string& name) {
+  if (text == "xplr_aoa_1") {
+    return AoaBoardKind::kXplrAoa1;
+  }
+  if (text == "ant_b10") {
+    return AoaBoardKind::kAntB10;
+  }
+  throw ParamError(name, paramValueString(text), "'xplr_aoa_1' or 'ant_b10'");
+}
+
+std::string itemPath(const std::string& list, std::size_t index) {
+  return list + "[" + std::to_string(index) + "].";
+}
+
+}  // namespace
+
+double TwrModule::correctRange(double raw_range) const {
+  double result = 0.0;
+  for (auto it = calibration.rbegin(); it != calibration.rend(); ++it) {
+    result = result * raw_range + *it;
+  }
+  return result;
+}
+
+std::string toString(AoaBoardKind kind) {
+  return kind == AoaBoardKind::kAntB10 ? "ant_b10" : "xplr_aoa_1";
+}
+
+void Layout::validate() const {
+  require(!fixed_frame.empty(), "fixed_frame", fixed_frame, "a non-empty TF frame name");
+  require(!twr_modules.empty() || !aoa_boards.empty() || !tdoa_anchors.empty(), "twr_modules",
+          std::string("(none)"), "at least one sensor in twr_modules, aoa_boards or tdoa_anchors");
+  require(twr_modules.empty() || !target_anchor_id.empty(), "target.uwb_anchor_id",
+          target_anchor_id, "the target's UWB anchor ID (e.g. 'DA12') when twr_modules exist");
+
+  std::set<std::string> frames;
+  std::set<std::string> ids;
+  for (std::size_t i = 0; i < twr_modules.size(); ++i) {
+    const TwrModule& m = twr_modules[i];
+    const std::string path = itemPath("twr_modules", i);
+    require(!m.id.empty(), path + "id", m.id, "a non-empty module ID (e.g. '5722')");
+    require(ids.insert("twr:" + m.id).second, path + "id", m.id, "an ID unique among twr_modules");
+    require(!m.frame_id.empty(), path + "frame_id", m.frame_id, "a non-empty TF frame name");
+    require(frames.insert(m.frame_id).second, path + "frame_id", m.frame_id,
+            "a frame_id unique in the layout");
+    require(finite(m.position), path + "position", m.position.transpose(), "finite metres");
+    require(!m.calibration.empty(), path + "calibration", std::string("[]"),
+            "polynomial coefficients [c0, c1, ...], at least one");
+  }
+  for (std::size_t i = 0; i < aoa_boards.size(); ++i) {
+    const AoaBoard& b = aoa_boards[i];
+    const std::string path = itemPath("aoa_boards", i);
+    require(!b.id.empty(), path + "id", b.id, "a non-empty board name");
+    require(ids.insert("aoa:" + b.id).second, path + "id", b.id, "an ID unique among aoa_boards");
+    require(!b.frame_id.empty(), path + "frame_id", b.frame_id, "a non-empty TF frame name");
+    require(frames.insert(b.frame_id).second, path + "frame_id", b.frame_id,
+            "a frame_id unique in the layout");
+    require(finite(b.position), path + "position", b.position.transpose(), "finite metres");
+    require(b.field_of_view > 0.0 && b.field_of_view <= kPi / 2.0, path + "field_of_view_deg",
+            rad2deg(b.field_of_view), "a half-angle in (0, 90] degrees");
+  }
+  for (std::size_t i = 0; i < tdoa_anchors.size(); ++i) {
+    const TdoaAnchor& a = tdoa_anchors[i];
+    const std::string path = itemPath("tdoa_anchors", i);
+    require(!a.id.empty(), path + "id", a.id, "a non-empty anchor ID");
+    require(ids.insert("tdoa:" + a.id).second, path + "id", a.id,
+            "an ID unique among tdoa_anchors");
+    require(finite(a.position), path + "position", a.position.transpose(), "finite metres");
+  }
+  require(tdoa_anchors.empty() || tdoa_anchors.size() >= 2, "tdoa_anchors",
+          tdoa_anchors.size(), "none, or at least 2 anchors (a difference needs two)");
+}
+
+const TwrModule* Layout::findTwrModule(const std::string& id_or_frame) const {
+  for (const auto& m : twr_modules) {
+    if (m.id == id_or_frame || m.frame_id == id_or_frame) {
+      return &m;
+    }
+  }
+  return nullptr;
+}
+
+const AoaBoard* Layout::findAoaBoard(const std::string& id_or_frame) const {
+  for (const auto& b : aoa_boards) {
+    if (b.id == id_or_frame || b.frame_id == id_or_frame) {
+      return &b;
+    }
+  }
+  return nullptr;
+}
+
+const TdoaAnchor* Layout::findTdoaAnchor(const std::string& id) const {
+  for (const auto& a : tdoa_anchors) {
+    if (a.id == id) {
+      return &a;
+    }
+  }
+  return nullptr;
+}
+
+Layout parseLayout(const std::string& yaml_text, const std::string& origin) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml_text);
+  } catch (const YAML::Exception& e) {
+    throw ParamError("layout", paramValueString(origin), std::string("valid YAML (") + e.what() + ")");
+  }
+  if (!root.IsMap()) {
+    throw ParamError("layout", paramValueString(origin), "a YAML mapping with fixed_frame, target, "
+                     "twr_modules, aoa_boards, tdoa_anchors");
+  }
+
+  Layout layout;
+  const std::string default_frame = layout.fixed_frame;
+  layout.fixed_frame =
+      readScalar<std::string>(root, "fixed_frame", "", "a TF frame name", &default_frame);
+  const YAML::Node target = root["target"];
+  if (target.IsDefined() && !target.IsNull()) {
+    const std::string empty;
+    layout.target_anchor_id =
+        readScalar<std::string>(target, "uwb_anchor_id", "target.", "an anchor ID", &empty);
+    layout.target_tag_id =
+        readScalar<std::string>(target, "aoa_tag_id", "target.", "a tag ID", &empty);
+  }
+
+  const YAML::Node twr = root["twr_modules"];
+  for (std::size_t i = 0; twr.IsSequence() && i < twr.size(); ++i) {
+    const std::string path = itemPath("twr_modules", i);
+    TwrModule m;
+    m.id = readScalar<std::string>(twr[i], "id", path, "a module ID string");
+    const std::string default_frame_id = "uwb_" + m.id;
+    m.frame_id = readScalar<std::string>(twr[i], "frame_id", path, "a TF frame name",
+                                         &default_frame_id);
+    m.position = readVector3(twr[i], "position", path, "metres");
+    if (twr[i]["calibration"].IsDefined()) {
+      m.calibration = readNumbers(twr[i]["calibration"], path + "calibration",
+                                  "a list of polynomial coefficients [c0, c1, ...]");
+    }
+    layout.twr_modules.push_back(m);
+  }
+
+  const YAML::Node aoa = root["aoa_boards"];
+  for (std::size_t i = 0; aoa.IsSequence() && i < aoa.size(); ++i) {
+    const std::string path = itemPath("aoa_boards", i);
+    AoaBoard b;
+    b.id = readScalar<std::string>(aoa[i], "id", path, "a board name");
+    const std::string default_frame_id = "aoa_" + b.id;
+    b.frame_id = readScalar<std::string>(aoa[i], "frame_id", path, "a TF frame name",
+                                         &default_frame_id);
+    const std::string default_kind = "xplr_aoa_1";
+    b.kind = parseKind(readScalar<std::string>(aoa[i], "kind", path, "a board kind", &default_kind),
+                       path + "kind");
+    b.position = readVector3(aoa[i], "position", path, "metres");
+    if (aoa[i]["rpy_deg"].IsDefined()) {
+      const Eigen::Vector3d rpy = deg2rad(1.0) * readVector3(aoa[i], "rpy_deg", path, "degrees");
+      b.orientation = Eigen::AngleAxisd(rpy.z(), Eigen::Vector3d::UnitZ()) *
+                      Eigen::AngleAxisd(rpy.y(), Eigen::Vector3d::UnitY()) *
+                      Eigen::AngleAxisd(rpy.x(), Eigen::Vector3d::UnitX());
+    }
+    const double default_fov = rad2deg(b.field_of_view);
+    b.field_of_view = deg2rad(readScalar<double>(aoa[i], "field_of_view_deg", path,
+                                                 "a half-angle in degrees", &default_fov));
+    layout.aoa_boards.push_back(b);
+  }
+
+  const YAML::Node tdoa = root["tdoa_anchors"];
+  for (std::size_t i = 0; tdoa.IsSequence() && i < tdoa.size(); ++i) {
+    const std::string path = itemPath("tdoa_anchors", i);
+    TdoaAnchor a;
+    a.id = readScalar<std::string>(tdoa[i], "id", path, "an anchor ID string");
+    a.position = readVector3(tdoa[i], "position", path, "metres");
+    layout.tdoa_anchors.push_back(a);
+  }
+
+  for (const char* list : {"twr_modules", "aoa_boards", "tdoa_anchors"}) {
+    const YAML::Node node = root[list];
+    if (node.IsDefined() && !node.IsNull() && !node.IsSequence()) {
+      throw ParamError(list, describe(node), "a list of sensors");
+    }
+  }
+  layout.validate();
+  return layout;
+}
+
+Layout loadLayoutFile(const std::string& path) {
+  std::ifstream file(path);
+  if (!file) {
+    throw ParamError("layout", paramValueString(path), "a readable layout YAML file");
+  }
+  std::stringstream text;
+  text << file.rdbuf();
+  return parseLayout(text.str(), path);
+}
+
+}  // namespace radio_follow

@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/config/layout.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "radio_follow/common/angles.hpp"
+#include "radio_follow/common/param_error.hpp"
+
+namespace radio_follow {
+namespace {
+
+const char* const kMinimal = R"(
+target: {uwb_anchor_id: "DA12"}
+twr_modules:
+  - {id: "5722", position: [0.175, 0.075, 0.115], calibration: [0.1, 0.9, 0.01]}
+  - {id: "5A84", frame_id: rear, position: [-0.07, -0.04, 0.093]}
+aoa_boards:
+  - {id: left, kind: ant_b10, position: [0, 0.065, 0.25], rpy_deg: [0, 0, 90],
+     field_of_view_deg: 60}
+tdoa_anchors:
+  - {id: A, position: [1, 0, 0]}
+  - {id: B, position: [0, 1, 0]}
+)";
+
+/// Expects parseLayout to throw a ParamError naming `parameter`.
+void expectRejected(const std::string& yaml, const std::string& parameter) {
+  try {
+    parseLayout(yaml, "test");
+    FAIL() << "accepted a layout with a bad " << parameter;
+  } catch (const ParamError& e) {
+    EXPECT_EQ(e.name(), parameter) << e.what();
+  }
+}
+
+TEST(Layout, ParsesEveryField) {
+  const Layout layout = parseLayout(kMinimal, "test");
+  EXPECT_EQ(layout.fixed_frame, "base_link");
+  EXPECT_EQ(layout.target_anchor_id, "DA12");
+  ASSERT_EQ(layout.twr_modules.size(), 2u);
+  EXPECT_EQ(layout.twr_modules[0].frame_id, "uwb_5722");
+  EXPECT_EQ(layout.twr_modules[1].frame_id, "rear");
+  EXPECT_DOUBLE_EQ(layout.twr_modules[0].position.y(), 0.075);
+  ASSERT_EQ(layout.aoa_boards.size(), 1u);
+  const AoaBoard& board = layout.aoa_boards[0];
+  EXPECT_EQ(board.frame_id, "aoa_left");
+  EXPECT_EQ(board.kind, AoaBoardKind::kAntB10);
+  EXPECT_NEAR(board.field_of_view, deg2rad(60.0), 1e-12);
+  // Yaw 90 deg: the board's boresight (x) points along the robot's +y.
+  const Eigen::Vector3d boresight = board.orientation * Eigen::Vector3d::UnitX();
+  EXPECT_NEAR(boresight.y(), 1.0, 1e-12);
+  EXPECT_EQ(layout.tdoa_anchors.size(), 2u);
+  EXPECT_NE(layout.findTwrModule("rear"), nullptr);
+  EXPECT_NE(layout.findAoaBoard("aoa_left"), nullptr);
+  EXPECT_EQ(layout.findTdoaAnchor("C"), nullptr);
+}
+
+TEST(Layout, CalibrationPolynomialIsLowestOrderFirst) {
+  const Layout layout = parseLayout(kMinimal, "test");
+  // 0.1 + 0.9 * 2 + 0.01 * 4
+  EXPECT_NEAR(layout.twr_modules[0].correctRange(2.0), 1.94, 1e-12);
+  EXPECT_DOUBLE_EQ(layout.twr_modules[1].correctRange(3.0), 3.0);
+}
+
+TEST(Layout, RejectsBadFieldsNamingThem) {
+  expectRejected("twr_modules: []", "twr_modules");
+  expectRejected("twr_modules: [{id: '1', position: [0, 0, 0]}]", "target.uwb_anchor_id");
+  expectRejected("target: {uwb_anchor_id: X}\ntwr_modules: [{id: '1', position: [0, 0]}]",
+                 "twr_modules[0].position");
+  expectRejected("target: {uwb_anchor_id: X}\ntwr_modules: [{id: '1', position: [0, a, 0]}]",
+                 "twr_modules[0].position");
+  expectRejected("target: {uwb_anchor_id: X}\ntwr_modules: [{position: [0, 0, 0]}]",
+                 "twr_modules[0].id");
+  expectRejected(
+      "target: {uwb_anchor_id: X}\ntwr_modules: [{id: '1', position: [0, 0, 0]},"
+      " {id: '1', position: [1, 0, 0]}]",
+      "twr_modules[1].id");
+  expectRejected(
+      "target: {uwb_anchor_id: X}\ntwr_modules: [{id: '1', position: [0, 0, 0], frame_id: f}]\n"
+      "aoa_boards: [{id: b, frame_id: f, position: [0, 0, 0]}]",
+      "aoa_boards[0].frame_id");
+  expectRejected("aoa_boards: [{id: b, kind: xplr, position: [0, 0, 0]}]", "aoa_boards[0].kind");
+  expectRejected("aoa_boards: [{id: b, position: [0, 0, 0], field_of_view_deg: 120}]",
+                 "aoa_boards[0].field_of_view_deg");
+  expectRejected("tdoa_anchors: [{id: A, position: [0, 0, 0]}]", "tdoa_anchors");
+  expectRejected("twr_modules: {id: 1}", "twr_modules");
+  expectRejected("[1, 2", "layout");
+  expectRejected("just text", "layout");
+}
+
+TEST(Layout, MissingFileIsAParamError) {
+  EXPECT_THROW(loadLayoutFile("/nonexistent/layout.yaml"), ParamError);
+}
+
+TEST(Layout, ShippedLayoutsAreValid) {
+  for (const char* name : {"spot", "spot_twr", "tracked", "cube"}) {
+    SCOPED_TRACE(name);
+    const Layout layout = loadLayoutFile(std::string(RF_CONFIG_DIR) + "/layouts/" + name + ".yaml");
+    EXPECT_FALSE(layout.twr_modules.empty());
+  }
+}
+
+}  // namespace
+}  // namespace radio_follow
