@@ -5,6 +5,9 @@
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$repo/scripts/setup.sh"
+export PATH="/usr/bin:$PATH"
+# Package hygiene first: catkin_lint errors fail the run (warnings are reported only).
+catkin_lint -W0 --quiet "$repo" || { echo "catkin_lint found errors" >&2; exit 1; }
 bash "$repo/scripts/build.sh"
 bash "$repo/scripts/build.sh" tests
 
