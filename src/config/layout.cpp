@@ -14,7 +14,9 @@
 namespace radio_follow {
 namespace {
 
-bool finite(const Eigen::Vector3d& v) { return v.allFinite(); }
+bool finite(const Eigen::Vector3d& v) {
+  return v.allFinite();
+}
 
 std::string describe(const YAML::Node& node) {
   if (!node.IsDefined() || node.IsNull()) {
@@ -142,8 +144,8 @@ void Layout::validate() const {
             "an ID unique among tdoa_anchors");
     require(finite(a.position), path + "position", a.position.transpose(), "finite metres");
   }
-  require(tdoa_anchors.empty() || tdoa_anchors.size() >= 2, "tdoa_anchors",
-          tdoa_anchors.size(), "none, or at least 2 anchors (a difference needs two)");
+  require(tdoa_anchors.empty() || tdoa_anchors.size() >= 2, "tdoa_anchors", tdoa_anchors.size(),
+          "none, or at least 2 anchors (a difference needs two)");
 }
 
 const TwrModule* Layout::findTwrModule(const std::string& id_or_frame) const {
@@ -178,10 +180,12 @@ Layout parseLayout(const std::string& yaml_text, const std::string& origin) {
   try {
     root = YAML::Load(yaml_text);
   } catch (const YAML::Exception& e) {
-    throw ParamError("layout", paramValueString(origin), std::string("valid YAML (") + e.what() + ")");
+    throw ParamError("layout", paramValueString(origin),
+                     std::string("valid YAML (") + e.what() + ")");
   }
   if (!root.IsMap()) {
-    throw ParamError("layout", paramValueString(origin), "a YAML mapping with fixed_frame, target, "
+    throw ParamError("layout", paramValueString(origin),
+                     "a YAML mapping with fixed_frame, target, "
                      "twr_modules, aoa_boards, tdoa_anchors");
   }
 
@@ -204,8 +208,8 @@ Layout parseLayout(const std::string& yaml_text, const std::string& origin) {
     TwrModule m;
     m.id = readScalar<std::string>(twr[i], "id", path, "a module ID string");
     const std::string default_frame_id = "uwb_" + m.id;
-    m.frame_id = readScalar<std::string>(twr[i], "frame_id", path, "a TF frame name",
-                                         &default_frame_id);
+    m.frame_id =
+        readScalar<std::string>(twr[i], "frame_id", path, "a TF frame name", &default_frame_id);
     m.position = readVector3(twr[i], "position", path, "metres");
     if (twr[i]["calibration"].IsDefined()) {
       m.calibration = readNumbers(twr[i]["calibration"], path + "calibration",
@@ -220,8 +224,8 @@ Layout parseLayout(const std::string& yaml_text, const std::string& origin) {
     AoaBoard b;
     b.id = readScalar<std::string>(aoa[i], "id", path, "a board name");
     const std::string default_frame_id = "aoa_" + b.id;
-    b.frame_id = readScalar<std::string>(aoa[i], "frame_id", path, "a TF frame name",
-                                         &default_frame_id);
+    b.frame_id =
+        readScalar<std::string>(aoa[i], "frame_id", path, "a TF frame name", &default_frame_id);
     const std::string default_kind = "xplr_aoa_1";
     b.kind = parseKind(readScalar<std::string>(aoa[i], "kind", path, "a board kind", &default_kind),
                        path + "kind");

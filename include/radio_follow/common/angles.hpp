@@ -7,8 +7,12 @@ namespace radio_follow {
 
 constexpr double kPi = 3.14159265358979323846;
 
-constexpr double deg2rad(double degrees) { return degrees * kPi / 180.0; }
-constexpr double rad2deg(double radians) { return radians * 180.0 / kPi; }
+constexpr double deg2rad(double degrees) {
+  return degrees * kPi / 180.0;
+}
+constexpr double rad2deg(double radians) {
+  return radians * 180.0 / kPi;
+}
 
 /// Wraps an angle to (-pi, pi]. Templated so Ceres jets use the same code.
 template <typename T>

@@ -31,7 +31,9 @@ std::string paramValueString(const T& value) {
   return out.str();
 }
 
-inline std::string paramValueString(const std::string& value) { return "'" + value + "'"; }
+inline std::string paramValueString(const std::string& value) {
+  return "'" + value + "'";
+}
 
 /// Throws ParamError unless `ok`.
 template <typename T>
