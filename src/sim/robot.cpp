@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/sim/robot.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "radio_follow/common/angles.hpp"
+#include "radio_follow/common/param_error.hpp"
+
+namespace radio_follow {
+namespace sim {
+namespace {
+
+double approach(double current, double target, double max_step) {
+  return current + std::clamp(target - current, -max_step, max_step);
+}
+
+bool positiveFinite(double v) {
+  return std::isfinite(v) && v > 0.0;
+}
+
+}  // namespace
+
+void RobotLimits::validate() const {
+  require(positiveFinite(max_linear), "robot.max_linear", max_linear, "a speed > 0 in m/s");
+  require(positiveFinite(max_angular), "robot.max_angular", max_angular, "a rate > 0 in rad/s");
+  require(positiveFinite(max_linear_accel), "robot.max_linear_accel", max_linear_accel,
+          "an acceleration > 0 in m/s^2");
+  require(positiveFinite(max_angular_accel), "robot.max_angular_accel", max_angular_accel,
+          "an acceleration > 0 in rad/s^2");
+}
+
+UnicycleRobot::UnicycleRobot(const RobotLimits& limits, const Pose2& start)
+    : limits_(limits), pose_(start) {
+  limits_.validate();
+}
+
+void UnicycleRobot::step(double cmd_linear, double cmd_angular, double dt) {
+  if (!(dt > 0.0)) {
+    return;
+  }
+  // A non-finite command is treated as stop: the simulator must not propagate NaN.
+  const double v_target = std::isfinite(cmd_linear)
+                              ? std::clamp(cmd_linear, -limits_.max_linear, limits_.max_linear)
+                              : 0.0;
+  const double w_target = std::isfinite(cmd_angular)
+                              ? std::clamp(cmd_angular, -limits_.max_angular, limits_.max_angular)
+                              : 0.0;
+  const double v0 = linear_;
+  const double w0 = angular_;
+  linear_ = approach(linear_, v_target, limits_.max_linear_accel * dt);
+  angular_ = approach(angular_, w_target, limits_.max_angular_accel * dt);
+  const double v = 0.5 * (v0 + linear_);
+  const double w = 0.5 * (w0 + angular_);
+
+  const double dyaw = w * dt;
+  if (std::abs(dyaw) < 1e-9) {
+    pose_.x += v * dt * std::cos(pose_.yaw + 0.5 * dyaw);
+    pose_.y += v * dt * std::sin(pose_.yaw + 0.5 * dyaw);
+  } else {
+    const double radius = v / w;
+    pose_.x += radius * (std::sin(pose_.yaw + dyaw) - std::sin(pose_.yaw));
+    pose_.y -= radius * (std::cos(pose_.yaw + dyaw) - std::cos(pose_.yaw));
+  }
+  pose_.yaw = wrapAngleFast(pose_.yaw + dyaw);
+  odometer_ += std::abs(v) * dt;
+}
+
+}  // namespace sim
+}  // namespace radio_follow

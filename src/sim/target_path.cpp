@@ -1,0 +1,220 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/sim/target_path.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include "radio_follow/common/angles.hpp"
+#include "radio_follow/common/param_error.hpp"
+
+namespace radio_follow {
+namespace sim {
+namespace {
+
+/// Arc legs are sampled every this many radians so interpolation stays on the arc.
+constexpr double kArcStep = deg2rad(5.0);
+
+void requireSpeed(double speed, const std::string& name) {
+  require(std::isfinite(speed) && speed > 0.0 && speed < 20.0, name, speed,
+          "a walking speed in (0, 20) m/s");
+}
+
+}  // namespace
+
+TargetPath::TargetPath(const Pose2& start) {
+  samples_.push_back(TargetSample{0.0, start, 0.0});
+}
+
+void TargetPath::append(const Pose2& pose, double speed, double distance) {
+  const TargetSample& last = samples_.back();
+  const double step =
+      distance >= 0.0 ? distance : std::hypot(pose.x - last.pose.x, pose.y - last.pose.y);
+  samples_.push_back(TargetSample{last.t + step / speed, pose, speed});
+  length_ += step;
+}
+
+void TargetPath::walkTo(double x, double y, double speed) {
+  requireSpeed(speed, "walk.speed");
+  const Pose2& from = samples_.back().pose;
+  const double heading = std::atan2(y - from.y, x - from.x);
+  // Turn on the spot (zero duration), then walk.
+  samples_.back().pose.yaw = heading;
+  append(Pose2{x, y, heading}, speed);
+}
+
+void TargetPath::arc(double radius, double angle, double speed) {
+  requireSpeed(speed, "arc.speed");
+  require(std::isfinite(radius) && radius > 0.0, "arc.radius", radius, "a radius > 0 in m");
+  const Pose2 start = samples_.back().pose;
+  const double side = angle >= 0.0 ? 1.0 : -1.0;
+  // Centre of the turn, to the left (positive angle) or right of the walking direction.
+  const double cx = start.x - side * radius * std::sin(start.yaw);
+  const double cy = start.y + side * radius * std::cos(start.yaw);
+  const int steps = std::max(1, static_cast<int>(std::ceil(std::abs(angle) / kArcStep)));
+  for (int i = 1; i <= steps; ++i) {
+    const double heading = start.yaw + angle * i / steps;
+    append(Pose2{cx + side * radius * std::sin(heading), cy - side * radius * std::cos(heading),
+                 wrapAngleFast(heading)},
+           speed, radius * std::abs(angle) / steps);
+  }
+}
+
+void TargetPath::wait(double duration) {
+  require(std::isfinite(duration) && duration >= 0.0, "wait", duration, "seconds >= 0");
+  TargetSample still = samples_.back();
+  still.t += duration;
+  still.speed = 0.0;
+  samples_.push_back(still);
+}
+
+void TargetPath::randomWalk(int steps, double step_length, double max_turn, double speed,
+                            std::uint64_t seed) {
+  require(steps > 0 && steps < 100000, "random_walk.steps", steps, "a count in [1, 100000)");
+  require(std::isfinite(step_length) && step_length > 0.0, "random_walk.step_length", step_length,
+          "a length > 0 in m");
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> turn(-max_turn, max_turn);
+  for (int i = 0; i < steps; ++i) {
+    const Pose2& from = samples_.back().pose;
+    const double heading = from.yaw + turn(rng);
+    walkTo(from.x + step_length * std::cos(heading), from.y + step_length * std::sin(heading),
+           speed);
+  }
+}
+
+TargetSample TargetPath::at(double t) const {
+  if (t <= samples_.front().t) {
+    return samples_.front();
+  }
+  if (t >= samples_.back().t) {
+    TargetSample end = samples_.back();
+    end.t = t;
+    end.speed = 0.0;
+    return end;
+  }
+  const auto hi = std::upper_bound(samples_.begin(), samples_.end(), t,
+                                   [](double time, const TargetSample& s) { return time < s.t; });
+  const auto lo = hi - 1;
+  const double span = hi->t - lo->t;
+  const double w = span > 0.0 ? (t - lo->t) / span : 1.0;
+  TargetSample s;
+  s.t = t;
+  s.pose.x = lo->pose.x + w * (hi->pose.x - lo->pose.x);
+  s.pose.y = lo->pose.y + w * (hi->pose.y - lo->pose.y);
+  s.pose.yaw = hi->pose.yaw;
+  s.speed = hi->speed;
+  return s;
+}
+
+namespace {
+
+double number(const YAML::Node& node, const std::string& key, const std::string& path,
+              const std::string& expected) {
+  const YAML::Node value = node[key];
+  try {
+    if (value.IsDefined() && value.IsScalar()) {
+      return value.as<double>();
+    }
+  } catch (const YAML::Exception&) {
+  }
+  throw ParamError(path + key, value.IsDefined() ? YAML::Dump(value) : "(missing)", expected);
+}
+
+double numberOr(const YAML::Node& node, const std::string& key, const std::string& path,
+                const std::string& expected, double fallback) {
+  return node[key].IsDefined() ? number(node, key, path, expected) : fallback;
+}
+
+Pose2 readPose(const YAML::Node& node, const std::string& path) {
+  const std::string expected = "[x, y] in m or [x, y, yaw_deg]";
+  if (!node.IsSequence() || node.size() < 2 || node.size() > 3) {
+    throw ParamError(path, node.IsDefined() ? YAML::Dump(node) : "(missing)", expected);
+  }
+  try {
+    Pose2 p{node[0].as<double>(), node[1].as<double>(), 0.0};
+    if (node.size() == 3) {
+      p.yaw = deg2rad(node[2].as<double>());
+    }
+    return p;
+  } catch (const YAML::Exception&) {
+    throw ParamError(path, YAML::Dump(node), expected);
+  }
+}
+
+void addLeg(TargetPath& path, const YAML::Node& leg, const std::string& name, double speed,
+            std::uint64_t seed) {
+  const double leg_speed = numberOr(leg, "speed", name, "a speed in m/s", speed);
+  if (leg["to"].IsDefined()) {
+    const Pose2 to = readPose(leg["to"], name + "to");
+    path.walkTo(to.x, to.y, leg_speed);
+  } else if (leg["arc_deg"].IsDefined()) {
+    path.arc(number(leg, "radius", name, "a radius in m"),
+             deg2rad(number(leg, "arc_deg", name, "a turn in degrees (+ = left)")), leg_speed);
+  } else if (leg["wait"].IsDefined()) {
+    path.wait(number(leg, "wait", name, "a duration in s"));
+  } else if (leg["random_walk"].IsDefined()) {
+    const YAML::Node rw = leg["random_walk"];
+    const std::string rw_name = name + "random_walk.";
+    path.randomWalk(static_cast<int>(number(rw, "steps", rw_name, "a step count")),
+                    number(rw, "step_length", rw_name, "a length in m"),
+                    deg2rad(numberOr(rw, "max_turn_deg", rw_name, "degrees", 45.0)), leg_speed,
+                    seed);
+  } else {
+    throw ParamError(name.substr(0, name.size() - 1), YAML::Dump(leg),
+                     "a leg with one of: to, arc_deg (+radius), wait, random_walk");
+  }
+}
+
+}  // namespace
+
+Scenario parseScenario(const std::string& yaml_text, const std::string& origin,
+                       std::uint64_t seed) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml_text);
+  } catch (const YAML::Exception& e) {
+    throw ParamError("scenario", "'" + origin + "'", std::string("valid YAML (") + e.what() + ")");
+  }
+  if (!root.IsMap() || !root["target"].IsMap()) {
+    throw ParamError("scenario", "'" + origin + "'", "a mapping with a 'target' mapping");
+  }
+  Scenario s;
+  s.name = root["name"].IsDefined() ? root["name"].as<std::string>() : origin;
+  if (root["robot_start"].IsDefined()) {
+    s.robot_start = readPose(root["robot_start"], "robot_start");
+  }
+  const YAML::Node target = root["target"];
+  s.target = TargetPath(readPose(target["start"], "target.start"));
+  s.target_height = numberOr(target, "height", "target.", "a height in m", s.target_height);
+  const double speed = numberOr(target, "speed", "target.", "a speed in m/s", 1.0);
+  const YAML::Node legs = target["legs"];
+  if (legs.IsDefined() && !legs.IsSequence()) {
+    throw ParamError("target.legs", YAML::Dump(legs), "a list of legs");
+  }
+  for (std::size_t i = 0; legs.IsDefined() && i < legs.size(); ++i) {
+    addLeg(s.target, legs[i], "target.legs[" + std::to_string(i) + "].", speed, seed + i);
+  }
+  s.settle_time = numberOr(root, "settle_time", "", "seconds >= 0", s.settle_time);
+  require(s.settle_time >= 0.0, "settle_time", s.settle_time, "seconds >= 0");
+  s.duration = numberOr(root, "duration", "", "seconds > 0", s.target.duration() + s.settle_time);
+  require(std::isfinite(s.duration) && s.duration > 0.0, "duration", s.duration, "seconds > 0");
+  return s;
+}
+
+Scenario loadScenarioFile(const std::string& path, std::uint64_t seed) {
+  std::ifstream file(path);
+  if (!file) {
+    throw ParamError("scenario_file", "'" + path + "'", "a readable scenario YAML file");
+  }
+  std::stringstream text;
+  text << file.rdbuf();
+  return parseScenario(text.str(), path, seed);
+}
+
+}  // namespace sim
+}  // namespace radio_follow
