@@ -40,7 +40,8 @@ std::optional<double> simulateTwrRange(const TwrModule& module, const TwrNoise& 
                  gaussian(noise.sigma_scale * error.sigma, rng);
   const double bearing = std::atan2(offset.y(), offset.x());
   for (const auto& sector : noise.occlusions) {
-    if (sector.contains(bearing) && chance(sector.reflection_probability, rng)) {
+    const bool applies = sector.module.empty() || sector.module == module.id;
+    if (applies && sector.contains(bearing) && chance(sector.reflection_probability, rng)) {
       range += sector.reflection_extra;
     }
   }

@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <optional>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "radio_follow/config/layout.hpp"
@@ -17,6 +18,7 @@ using Rng = std::mt19937_64;
 /// the direct path is blocked, e.g. the Spot's LiDAR mount (thesis Section 5.3): the
 /// range then jumps between the true value and a longer, reflected one.
 struct OcclusionSector {
+  std::string module;                   ///< TWR module ID it blocks; empty = every module
   double bearing_min = 0.0;             ///< rad, counter-clockwise from the robot's x axis
   double bearing_max = 0.0;             ///< rad; the sector may wrap through +-pi
   double reflection_extra = 0.8;        ///< m added to the range when the reflection is read

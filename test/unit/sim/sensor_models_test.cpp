@@ -77,7 +77,7 @@ TEST(VirtualSensors, TwrOcclusionJumpsToTheReflection) {
   TwrNoise noise;
   noise.use_table_bias = false;
   noise.sigma_scale = 0.0;
-  noise.occlusions.push_back(OcclusionSector{deg2rad(-60), deg2rad(-20), 1.0, 0.5});
+  noise.occlusions.push_back(OcclusionSector{"", deg2rad(-60), deg2rad(-20), 1.0, 0.5});
   Rng rng(2);
   int reflected = 0;
   const int n = 4000;
@@ -90,10 +90,14 @@ TEST(VirtualSensors, TwrOcclusionJumpsToTheReflection) {
   EXPECT_NEAR(reflected / static_cast<double>(n), 0.5, 0.03);
   // Outside the sector: always the direct path.
   EXPECT_NEAR(*simulateTwrRange(module, noise, Eigen::Vector3d(0, 3, 0), rng), 3.0, 1e-9);
+  // A sector naming another module leaves this one alone.
+  noise.occlusions.front().module = "OTHER";
+  noise.occlusions.front().reflection_probability = 1.0;
+  EXPECT_NEAR(*simulateTwrRange(module, noise, occluded, rng), 3.0, 1e-9);
 }
 
 TEST(VirtualSensors, OcclusionSectorWrapsThroughPi) {
-  const OcclusionSector back{deg2rad(150), deg2rad(-150), 1.0, 1.0};
+  const OcclusionSector back{"", deg2rad(150), deg2rad(-150), 1.0, 1.0};
   EXPECT_TRUE(back.contains(deg2rad(180)));
   EXPECT_TRUE(back.contains(deg2rad(-170)));
   EXPECT_FALSE(back.contains(0.0));

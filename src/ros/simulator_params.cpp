@@ -1,0 +1,113 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Loading and validating the simulator node's parameters (split from the node's wiring).
+#include <cmath>
+
+#include "radio_follow/common/angles.hpp"
+#include "radio_follow/common/param_error.hpp"
+#include "radio_follow/ros/simulator_node.hpp"
+
+namespace radio_follow {
+namespace {
+
+double xmlNumber(XmlRpc::XmlRpcValue& v, const std::string& name) {
+  if (v.getType() == XmlRpc::XmlRpcValue::TypeDouble) {
+    return static_cast<double>(v);
+  }
+  if (v.getType() == XmlRpc::XmlRpcValue::TypeInt) {
+    return static_cast<int>(v);
+  }
+  throw ParamError(name, v.toXml(), "a number");
+}
+
+/// `~twr_occlusions`: a list of {module, bearing_min_deg, bearing_max_deg, extra_range,
+/// probability}; see config/simulator.yaml.
+std::vector<sim::OcclusionSector> loadOcclusions(ros::NodeHandle& pnh) {
+  std::vector<sim::OcclusionSector> sectors;
+  XmlRpc::XmlRpcValue list;
+  if (!pnh.getParam("twr_occlusions", list)) {
+    return sectors;
+  }
+  if (list.getType() != XmlRpc::XmlRpcValue::TypeArray) {
+    throw ParamError("~twr_occlusions", list.toXml(), "a list of occlusion sectors");
+  }
+  for (int i = 0; i < list.size(); ++i) {
+    const std::string name = "~twr_occlusions[" + std::to_string(i) + "]";
+    XmlRpc::XmlRpcValue& item = list[i];
+    if (item.getType() != XmlRpc::XmlRpcValue::TypeStruct || !item.hasMember("bearing_min_deg") ||
+        !item.hasMember("bearing_max_deg")) {
+      throw ParamError(name, item.toXml(),
+                       "{module, bearing_min_deg, bearing_max_deg, extra_range, probability}");
+    }
+    sim::OcclusionSector s;
+    if (item.hasMember("module")) {
+      if (item["module"].getType() != XmlRpc::XmlRpcValue::TypeString) {
+        throw ParamError(name + ".module", item["module"].toXml(), "a TWR module ID string");
+      }
+      s.module = static_cast<std::string>(item["module"]);
+    }
+    s.bearing_min = deg2rad(xmlNumber(item["bearing_min_deg"], name + ".bearing_min_deg"));
+    s.bearing_max = deg2rad(xmlNumber(item["bearing_max_deg"], name + ".bearing_max_deg"));
+    if (item.hasMember("extra_range")) {
+      s.reflection_extra = xmlNumber(item["extra_range"], name + ".extra_range");
+    }
+    if (item.hasMember("probability")) {
+      s.reflection_probability = xmlNumber(item["probability"], name + ".probability");
+    }
+    sectors.push_back(s);
+  }
+  return sectors;
+}
+
+}  // namespace
+
+void SimulatorNode::Params::validate() const {
+  require(!layout_file.empty(), "~layout_file", layout_file, "the path of a layout YAML");
+  require(!scenario_file.empty(), "~scenario_file", scenario_file, "the path of a scenario YAML");
+  require(seed >= 0, "~seed", seed, "an integer >= 0");
+  require(std::isfinite(step_rate) && step_rate >= 10.0 && step_rate <= 10000.0, "~step_rate",
+          step_rate, "a rate in [10, 10000] Hz");
+  require(std::isfinite(time_factor) && time_factor > 0.0 && time_factor <= 1000.0, "~time_factor",
+          time_factor, "a factor in (0, 1000]");
+  require(std::isfinite(cmd_timeout) && cmd_timeout > 0.0, "~cmd_timeout", cmd_timeout,
+          "seconds > 0");
+  require(!odom_frame.empty(), "~odom_frame", odom_frame, "a non-empty frame name");
+  world.validate();
+}
+
+SimulatorNode::Params loadSimulatorParams(ros::NodeHandle& pnh) {
+  SimulatorNode::Params p;
+  pnh.param("layout_file", p.layout_file, p.layout_file);
+  pnh.param("scenario_file", p.scenario_file, p.scenario_file);
+  pnh.param("seed", p.seed, p.seed);
+  pnh.param("step_rate", p.step_rate, p.step_rate);
+  pnh.param("time_factor", p.time_factor, p.time_factor);
+  pnh.param("cmd_timeout", p.cmd_timeout, p.cmd_timeout);
+  pnh.param("shutdown_on_finish", p.shutdown_on_finish, p.shutdown_on_finish);
+  pnh.param("odom_frame", p.odom_frame, p.odom_frame);
+  sim::WorldConfig& w = p.world;
+  pnh.param("robot/max_linear", w.robot.max_linear, w.robot.max_linear);
+  pnh.param("robot/max_angular", w.robot.max_angular, w.robot.max_angular);
+  pnh.param("robot/max_linear_accel", w.robot.max_linear_accel, w.robot.max_linear_accel);
+  pnh.param("robot/max_angular_accel", w.robot.max_angular_accel, w.robot.max_angular_accel);
+  pnh.param("twr_rate", w.rates.twr_hz, w.rates.twr_hz);
+  pnh.param("aoa_rate", w.rates.aoa_hz, w.rates.aoa_hz);
+  pnh.param("tdoa_rate", w.rates.tdoa_hz, w.rates.tdoa_hz);
+  pnh.param("twr_table_bias", w.twr.use_table_bias, w.twr.use_table_bias);
+  pnh.param("twr_sigma_scale", w.twr.sigma_scale, w.twr.sigma_scale);
+  pnh.param("twr_dropout", w.twr.dropout_probability, w.twr.dropout_probability);
+  pnh.param("aoa_table_bias", w.aoa.use_table_bias, w.aoa.use_table_bias);
+  pnh.param("aoa_sigma_scale", w.aoa.sigma_scale, w.aoa.sigma_scale);
+  pnh.param("aoa_dropout", w.aoa.dropout_probability, w.aoa.dropout_probability);
+  pnh.param("aoa_max_range", w.aoa.max_range, w.aoa.max_range);
+  pnh.param("tdoa_sigma", w.tdoa_sigma, w.tdoa_sigma);
+  int reference = 0;
+  pnh.param("tdoa_reference", reference, reference);
+  require(reference >= 0, "~tdoa_reference", reference, "an anchor index >= 0");
+  w.tdoa_reference = static_cast<std::size_t>(reference);
+  w.seed = static_cast<std::uint64_t>(std::max(0, p.seed));
+  w.twr.occlusions = loadOcclusions(pnh);
+  p.validate();
+  return p;
+}
+
+}  // namespace radio_follow

@@ -1,0 +1,114 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/sim/world.hpp"
+
+#include <cmath>
+
+#include "radio_follow/common/param_error.hpp"
+
+namespace radio_follow {
+namespace sim {
+namespace {
+
+bool rateOk(double hz) {
+  return std::isfinite(hz) && hz > 0.0 && hz <= 1000.0;
+}
+
+double uniform(Rng& rng, double hi) {
+  return std::uniform_real_distribution<double>(0.0, hi)(rng);
+}
+
+}  // namespace
+
+void WorldConfig::validate() const {
+  robot.validate();
+  require(rateOk(rates.twr_hz), "twr_rate", rates.twr_hz, "a rate in (0, 1000] Hz");
+  require(rateOk(rates.aoa_hz), "aoa_rate", rates.aoa_hz, "a rate in (0, 1000] Hz");
+  require(rateOk(rates.tdoa_hz), "tdoa_rate", rates.tdoa_hz, "a rate in (0, 1000] Hz");
+  require(twr.sigma_scale >= 0.0, "twr_sigma_scale", twr.sigma_scale, "a factor >= 0");
+  require(twr.dropout_probability >= 0.0 && twr.dropout_probability <= 1.0, "twr_dropout",
+          twr.dropout_probability, "a probability in [0, 1]");
+  require(aoa.sigma_scale >= 0.0, "aoa_sigma_scale", aoa.sigma_scale, "a factor >= 0");
+  require(aoa.dropout_probability >= 0.0 && aoa.dropout_probability <= 1.0, "aoa_dropout",
+          aoa.dropout_probability, "a probability in [0, 1]");
+  require(tdoa_sigma >= 0.0, "tdoa_sigma", tdoa_sigma, "a standard deviation >= 0 in m");
+  for (std::size_t i = 0; i < twr.occlusions.size(); ++i) {
+    const auto& o = twr.occlusions[i];
+    const std::string name = "twr_occlusions[" + std::to_string(i) + "]";
+    require(o.reflection_probability >= 0.0 && o.reflection_probability <= 1.0,
+            name + ".probability", o.reflection_probability, "a probability in [0, 1]");
+    require(o.reflection_extra >= 0.0, name + ".extra_range", o.reflection_extra, "metres >= 0");
+  }
+}
+
+World::World(const Layout& layout, const Scenario& scenario, const WorldConfig& config)
+    : layout_(layout),
+      scenario_(scenario),
+      config_(config),
+      robot_(config.robot, scenario.robot_start),
+      rng_(config.seed) {
+  config_.validate();
+  require(layout_.tdoa_anchors.empty() || config_.tdoa_reference < layout_.tdoa_anchors.size(),
+          "tdoa_reference", config_.tdoa_reference, "an index into the layout's tdoa_anchors");
+  for (std::size_t i = 0; i < layout_.twr_modules.size(); ++i) {
+    const double period = 1.0 / config_.rates.twr_hz;
+    twr_schedule_.push_back(Schedule{period, uniform(rng_, period)});
+  }
+  for (std::size_t i = 0; i < layout_.aoa_boards.size(); ++i) {
+    const double period = 1.0 / config_.rates.aoa_hz;
+    aoa_schedule_.push_back(Schedule{period, uniform(rng_, period)});
+  }
+  tdoa_schedule_ =
+      Schedule{1.0 / config_.rates.tdoa_hz, uniform(rng_, 1.0 / config_.rates.tdoa_hz)};
+}
+
+Eigen::Vector3d World::targetInWorld() const {
+  const Pose2 p = scenario_.target.at(t_).pose;
+  return Eigen::Vector3d(p.x, p.y, scenario_.target_height);
+}
+
+Eigen::Vector3d World::targetInRobot() const {
+  const Pose2& r = robot_.pose();
+  const Eigen::Vector3d w = targetInWorld();
+  const double dx = w.x() - r.x;
+  const double dy = w.y() - r.y;
+  const double c = std::cos(r.yaw);
+  const double s = std::sin(r.yaw);
+  return Eigen::Vector3d(c * dx + s * dy, -s * dx + c * dy, w.z());
+}
+
+StepEvents World::step(double cmd_linear, double cmd_angular, double dt) {
+  StepEvents events;
+  if (!(dt > 0.0)) {
+    return events;
+  }
+  robot_.step(cmd_linear, cmd_angular, dt);
+  t_ += dt;
+  // Sensors sample the world as it is at the end of the step; their report times are
+  // their own schedule's, so several modules never report in lockstep.
+  const Eigen::Vector3d target = targetInRobot();
+  for (std::size_t i = 0; i < twr_schedule_.size(); ++i) {
+    for (Schedule& s = twr_schedule_[i]; s.next <= t_; s.next += s.period) {
+      if (const auto range = simulateTwrRange(layout_.twr_modules[i], config_.twr, target, rng_)) {
+        events.twr.push_back(TwrEvent{s.next, i, *range});
+      }
+    }
+  }
+  for (std::size_t i = 0; i < aoa_schedule_.size(); ++i) {
+    for (Schedule& s = aoa_schedule_[i]; s.next <= t_; s.next += s.period) {
+      if (const auto sample = simulateAoa(layout_.aoa_boards[i], config_.aoa, target, rng_)) {
+        events.aoa.push_back(AoaEvent{s.next, i, *sample});
+      }
+    }
+  }
+  if (layout_.tdoa_anchors.size() >= 2) {
+    for (Schedule& s = tdoa_schedule_; s.next <= t_; s.next += s.period) {
+      events.tdoa.push_back(
+          TdoaEvent{s.next, simulateTdoa(layout_.tdoa_anchors, config_.tdoa_reference,
+                                         config_.tdoa_sigma, target, rng_)});
+    }
+  }
+  return events;
+}
+
+}  // namespace sim
+}  // namespace radio_follow

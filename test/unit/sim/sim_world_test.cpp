@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "radio_follow/common/angles.hpp"
+#include "radio_follow/common/param_error.hpp"
+#include "radio_follow/sim/world.hpp"
+
+namespace radio_follow {
+namespace sim {
+namespace {
+
+Layout spot() {
+  return loadLayoutFile(std::string(RF_CONFIG_DIR) + "/layouts/spot.yaml");
+}
+
+Scenario standing(double x, double y) {
+  Scenario s;
+  s.target = TargetPath(Pose2{x, y, 0.0});
+  s.duration = 100.0;
+  return s;
+}
+
+TEST(World, EverySensorReportsAtItsRate) {
+  WorldConfig config;
+  config.rates.twr_hz = 10.0;
+  config.rates.aoa_hz = 20.0;
+  World world(spot(), standing(4.0, 0.0), config);
+  std::vector<int> twr(3, 0), aoa(4, 0);
+  for (int i = 0; i < 1000; ++i) {  // 10 s in 10 ms steps
+    const StepEvents e = world.step(0.0, 0.0, 0.01);
+    for (const auto& ev : e.twr) {
+      ++twr[ev.module];
+      EXPECT_LE(ev.t, world.time());
+      EXPECT_GT(ev.t, world.time() - 0.01 - 1e-12);
+    }
+    for (const auto& ev : e.aoa)
+      ++aoa[ev.board];
+  }
+  for (int n : twr)
+    EXPECT_NEAR(n, 100, 1);
+  for (int n : aoa)
+    EXPECT_NEAR(n, 200, 1);
+}
+
+TEST(World, TargetIsSeenInTheRobotFrame) {
+  Scenario s = standing(3.0, 4.0);
+  s.robot_start = Pose2{3.0, 0.0, kPi / 2.0};  // robot faces +y, target 4 m ahead
+  s.target_height = 1.2;
+  World world(spot(), s, WorldConfig{});
+  const Eigen::Vector3d p = world.targetInRobot();
+  EXPECT_NEAR(p.x(), 4.0, 1e-9);
+  EXPECT_NEAR(p.y(), 0.0, 1e-9);
+  EXPECT_NEAR(p.z(), 1.2, 1e-12);
+}
+
+TEST(World, RangesMatchTheGeometry) {
+  WorldConfig config;
+  config.twr.use_table_bias = false;
+  config.twr.sigma_scale = 0.0;
+  const Layout layout = spot();
+  World world(layout, standing(5.0, 2.0), config);
+  int seen = 0;
+  for (int i = 0; i < 50; ++i) {
+    for (const auto& ev : world.step(0.0, 0.0, 0.02).twr) {
+      const double truth = (world.targetInRobot() - layout.twr_modules[ev.module].position).norm();
+      EXPECT_NEAR(ev.range, truth, 1e-9);
+      ++seen;
+    }
+  }
+  EXPECT_GT(seen, 0);
+}
+
+TEST(World, SameSeedSameEventsOtherSeedOtherNoise) {
+  auto run = [](std::uint64_t seed) {
+    WorldConfig config;
+    config.seed = seed;
+    World world(spot(), standing(4.0, 1.0), config);
+    double sum = 0.0;
+    for (int i = 0; i < 200; ++i) {
+      for (const auto& ev : world.step(0.3, 0.1, 0.02).twr)
+        sum += ev.range;
+    }
+    return sum;
+  };
+  EXPECT_DOUBLE_EQ(run(5), run(5));
+  EXPECT_NE(run(5), run(6));
+}
+
+TEST(World, RejectsBadConfigNamingTheParameter) {
+  WorldConfig config;
+  config.rates.aoa_hz = 0.0;
+  try {
+    World world(spot(), standing(1, 1), config);
+    FAIL();
+  } catch (const ParamError& e) {
+    EXPECT_EQ(e.name(), "aoa_rate");
+  }
+}
+
+}  // namespace
+}  // namespace sim
+}  // namespace radio_follow
