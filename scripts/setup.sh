@@ -19,6 +19,8 @@ packages=(
   librostest-dev python3-rostest libgtest-dev googletest catkin-lint
   # math, I/O, benchmarks
   libceres-dev libeigen3-dev libboost-system-dev libboost-dev libyaml-cpp-dev libbenchmark-dev
+  # reports (demo plot)
+  python3-matplotlib
 )
 
 missing=()

@@ -1,0 +1,160 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/ros/follow_evaluator_node.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <system_error>
+
+#include "radio_follow/common/param_error.hpp"
+
+namespace radio_follow {
+namespace {
+
+/// Estimates older than this (s) count as missing in the sample.
+constexpr double kEstimateMaxAge = 1.0;
+/// Seconds of ground truth kept to match estimates by stamp.
+constexpr double kTruthHistory = 2.0;
+
+/// Writes through a temporary file and a rename, so a reader never sees half a file.
+void writeFile(const std::string& path, const std::string& text) {
+  const std::string temporary = path + ".tmp";
+  {
+    std::ofstream out(temporary);
+    out << text;
+    if (!out) {
+      ROS_ERROR_THROTTLE(10.0, "follow_evaluator: could not write %s", temporary.c_str());
+      return;
+    }
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    ROS_ERROR_THROTTLE(10.0, "follow_evaluator: could not rename %s", temporary.c_str());
+  }
+}
+
+}  // namespace
+
+void FollowEvaluatorNode::Params::validate() const {
+  require(std::isfinite(rate) && rate > 0.0 && rate <= 1000.0, "~rate", rate,
+          "a rate in (0, 1000] Hz");
+  require(std::isfinite(write_period) && write_period > 0.0, "~write_period", write_period,
+          "seconds > 0");
+  require(settings.follow_distance > 0.0, "~follow_distance", settings.follow_distance,
+          "metres > 0");
+  require(settings.safe_distance > 0.0, "~safe_distance", settings.safe_distance, "metres > 0");
+  require(settings.gap_tolerance > 0.0, "~gap_tolerance", settings.gap_tolerance, "metres > 0");
+  require(settings.robot_max_speed > 0.0, "~robot_max_speed", settings.robot_max_speed, "m/s > 0");
+  require(settings.settle_time >= 0.0, "~settle_time", settings.settle_time, "seconds >= 0");
+}
+
+FollowEvaluatorNode::FollowEvaluatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
+    : metrics_(sim::FollowSettings{}) {
+  private_nh.param("report_dir", params_.report_dir, params_.report_dir);
+  private_nh.param("rate", params_.rate, params_.rate);
+  private_nh.param("write_period", params_.write_period, params_.write_period);
+  sim::FollowSettings& s = params_.settings;
+  private_nh.param("follow_distance", s.follow_distance, s.follow_distance);
+  private_nh.param("safe_distance", s.safe_distance, s.safe_distance);
+  private_nh.param("gap_tolerance", s.gap_tolerance, s.gap_tolerance);
+  private_nh.param("robot_max_speed", s.robot_max_speed, s.robot_max_speed);
+  private_nh.param("settle_time", s.settle_time, s.settle_time);
+  params_.validate();
+  if (!params_.report_dir.empty()) {
+    std::error_code error;
+    std::filesystem::create_directories(params_.report_dir, error);
+    require(!error, "~report_dir", params_.report_dir,
+            "a directory that exists or can be created (" + error.message() + ")");
+  }
+  metrics_ = sim::FollowMetrics(params_.settings);
+
+  odom_sub_ = nh.subscribe<nav_msgs::Odometry>(
+      "odom", 10, [this](const nav_msgs::OdometryConstPtr& m) { odom_ = m; });
+  truth_sub_ = nh.subscribe<geometry_msgs::PointStamped>(
+      "ground_truth/target", 10, [this](const geometry_msgs::PointStampedConstPtr& m) {
+        if (truth_) {
+          const double dt = (m->header.stamp - truth_->header.stamp).toSec();
+          if (dt > 0.0) {
+            target_speed_ =
+                std::hypot(m->point.x - truth_->point.x, m->point.y - truth_->point.y) / dt;
+          }
+        }
+        truth_ = m;
+      });
+  relative_sub_ = nh.subscribe<geometry_msgs::PointStamped>(
+      "ground_truth/target_relative", 10, [this](const geometry_msgs::PointStampedConstPtr& m) {
+        relative_history_.push_back(m);
+        while (relative_history_.size() > 1 &&
+               (m->header.stamp - relative_history_.front()->header.stamp).toSec() >
+                   kTruthHistory) {
+          relative_history_.pop_front();
+        }
+      });
+  estimate_sub_ = nh.subscribe<TargetEstimate>(
+      "target", 10, [this](const TargetEstimateConstPtr& m) { estimate_ = m; });
+  cmd_sub_ = nh.subscribe<geometry_msgs::Twist>(
+      "cmd_vel", 10, [this](const geometry_msgs::TwistConstPtr& m) { cmd_ = *m; });
+  timer_ = nh.createTimer(ros::Duration(1.0 / params_.rate), &FollowEvaluatorNode::onTick, this);
+  if (!params_.report_dir.empty()) {
+    write_timer_ = nh.createTimer(ros::Duration(params_.write_period),
+                                  [this](const ros::TimerEvent&) { writeFiles(); });
+  }
+}
+
+FollowEvaluatorNode::~FollowEvaluatorNode() {
+  writeReport();
+}
+
+void FollowEvaluatorNode::onTick(const ros::TimerEvent& event) {
+  if (!odom_ || !truth_ || relative_history_.empty()) {
+    return;
+  }
+  const auto& relative = relative_history_.back();
+  sim::FollowSample s;
+  s.t = event.current_real.toSec();
+  s.robot_x = odom_->pose.pose.position.x;
+  s.robot_y = odom_->pose.pose.position.y;
+  const auto& q = odom_->pose.pose.orientation;
+  s.robot_yaw = std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
+  s.robot_speed = odom_->twist.twist.linear.x;
+  s.cmd_linear = cmd_.linear.x;
+  s.cmd_angular = cmd_.angular.z;
+  s.target_x = truth_->point.x;
+  s.target_y = truth_->point.y;
+  s.target_speed = target_speed_;
+  s.truth_x = relative->point.x;
+  s.truth_y = relative->point.y;
+  const bool usable = estimate_ && (estimate_->status == TargetEstimate::STATUS_OK ||
+                                    estimate_->status == TargetEstimate::STATUS_DEGRADED);
+  if (usable && (event.current_real - estimate_->header.stamp).toSec() <= kEstimateMaxAge) {
+    // Compare with the truth closest to the estimate's stamp.
+    const ros::Time stamp = estimate_->header.stamp;
+    const auto closest = std::min_element(relative_history_.begin(), relative_history_.end(),
+                                          [&stamp](const auto& a, const auto& b) {
+                                            return std::abs((a->header.stamp - stamp).toSec()) <
+                                                   std::abs((b->header.stamp - stamp).toSec());
+                                          });
+    s.truth_x = (*closest)->point.x;
+    s.truth_y = (*closest)->point.y;
+    s.estimate_x = estimate_->position.x;
+    s.estimate_y = estimate_->position.y;
+  }
+  metrics_.add(s);
+}
+
+void FollowEvaluatorNode::writeFiles() const {
+  if (params_.report_dir.empty()) {
+    return;
+  }
+  writeFile(params_.report_dir + "/trajectory.csv", metrics_.toCsv());
+  writeFile(params_.report_dir + "/metrics.json", metrics_.report().toJson());
+}
+
+void FollowEvaluatorNode::writeReport() const {
+  ROS_INFO("follow_evaluator: %zu samples\n%s", metrics_.samples().size(),
+           metrics_.report().toJson().c_str());
+  writeFiles();
+}
+
+}  // namespace radio_follow
