@@ -48,7 +48,8 @@ T readScalar(const YAML::Node& parent, const std::string& key, const std::string
 
 std::vector<double> readNumbers(const YAML::Node& node, const std::string& name,
                                 const std::string& expected) {
-  if (!node.IsSequence()) {
+  // A missing key of a const node is an invalid ("zombie") node: test IsDefined first.
+  if (!node.IsDefined() || !node.IsSequence()) {
     throw ParamError(name, describe(node), expected);
   }
   std::vector<double> values;

@@ -8,8 +8,11 @@
 #include <radio_follow/TdoaMeasurements.h>
 #include <radio_follow/UwbRanges.h>
 #include <rosgraph_msgs/Clock.h>
+#include <sensor_msgs/LaserScan.h>
+#include <std_msgs/Float64.h>
 
 #include <cmath>
+#include <limits>
 
 #include "radio_follow/common/param_error.hpp"
 
@@ -26,7 +29,9 @@ geometry_msgs::Quaternion yawQuaternion(double yaw) {
 }  // namespace
 
 SimulatorNode::SimulatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
-    : params_(loadSimulatorParams(private_nh)) {
+    : params_(loadSimulatorParams(private_nh)),
+      min_clearance_(std::numeric_limits<double>::infinity()),
+      scan_rng_(params_.world.seed + 1) {
   layout_ = loadLayoutFile(params_.layout_file);
   const sim::Scenario scenario =
       sim::loadScenarioFile(params_.scenario_file, static_cast<std::uint64_t>(params_.seed));
@@ -50,6 +55,10 @@ SimulatorNode::SimulatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
       nh.advertise<geometry_msgs::PointStamped>("ground_truth/target_relative", 20);
   if (sim_time_) {
     clock_pub_ = nh.advertise<rosgraph_msgs::Clock>("/clock", 10);
+  }
+  if (!scenario.obstacles.empty()) {
+    scan_pub_ = nh.advertise<sensor_msgs::LaserScan>("scan", 5);
+    clearance_pub_ = nh.advertise<std_msgs::Float64>("ground_truth/obstacle_clearance", 5);
   }
   cmd_sub_ = nh.subscribe("cmd_vel", 10, &SimulatorNode::onCmdVel, this);
 
@@ -79,7 +88,8 @@ void SimulatorNode::onCmdVel(const geometry_msgs::TwistConstPtr& msg) {
 void SimulatorNode::onTick(const ros::WallTimerEvent&) {
   if (world_->finished()) {
     if (params_.shutdown_on_finish) {
-      ROS_INFO("simulator: scenario finished at %.1f s", world_->time());
+      ROS_INFO("simulator: scenario finished at %.1f s; closest approach to an obstacle %.2f m",
+               world_->time(), min_clearance_);
       timer_.stop();
       ros::requestShutdown();
     }
@@ -97,6 +107,37 @@ void SimulatorNode::onTick(const ros::WallTimerEvent&) {
   }
   publishState(now);
   publish(events);
+  if (scan_pub_ && world_->time() >= next_scan_) {
+    next_scan_ = world_->time() + 1.0 / params_.scan_rate;
+    publishScan(now);
+  }
+}
+
+void SimulatorNode::publishScan(const ros::Time& stamp) {
+  const sim::Obstacles& obstacles = world_->scenario().obstacles;
+  const sim::Pose2& pose = world_->robot().pose();
+  const double clearance = sim::clearance(obstacles, pose.x, pose.y);
+  min_clearance_ = std::min(min_clearance_, clearance);
+  std_msgs::Float64 clearance_msg;
+  clearance_msg.data = clearance;
+  clearance_pub_.publish(clearance_msg);
+
+  sensor_msgs::LaserScan scan;
+  scan.header.stamp = stamp;
+  scan.header.frame_id = layout_.fixed_frame;
+  scan.angle_min = static_cast<float>(params_.scan.angle_min);
+  scan.angle_max = static_cast<float>(params_.scan.angle_max);
+  scan.angle_increment = static_cast<float>((params_.scan.angle_max - params_.scan.angle_min) /
+                                            (params_.scan.beams - 1));
+  scan.scan_time = static_cast<float>(1.0 / params_.scan_rate);
+  scan.range_min = static_cast<float>(params_.scan.range_min);
+  scan.range_max = static_cast<float>(params_.scan.range_max);
+  std::normal_distribution<double> noise(0.0, params_.scan.sigma);
+  for (double r : sim::scanRanges(obstacles, params_.scan, pose)) {
+    scan.ranges.push_back(
+        static_cast<float>(std::isfinite(r) ? std::max(0.0, r + noise(scan_rng_)) : r));
+  }
+  scan_pub_.publish(scan);
 }
 
 void SimulatorNode::publish(const sim::StepEvents& events) {

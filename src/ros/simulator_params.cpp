@@ -72,6 +72,9 @@ void SimulatorNode::Params::validate() const {
           "seconds > 0");
   require(!odom_frame.empty(), "~odom_frame", odom_frame, "a non-empty frame name");
   world.validate();
+  scan.validate();
+  require(std::isfinite(scan_rate) && scan_rate > 0.0 && scan_rate <= 100.0, "~scan/rate",
+          scan_rate, "a rate in (0, 100] Hz");
 }
 
 SimulatorNode::Params loadSimulatorParams(ros::NodeHandle& pnh) {
@@ -106,6 +109,17 @@ SimulatorNode::Params loadSimulatorParams(ros::NodeHandle& pnh) {
   w.tdoa_reference = static_cast<std::size_t>(reference);
   w.seed = static_cast<std::uint64_t>(std::max(0, p.seed));
   w.twr.occlusions = loadOcclusions(pnh);
+  pnh.param("scan/rate", p.scan_rate, p.scan_rate);
+  double angle_min_deg = rad2deg(p.scan.angle_min);
+  double angle_max_deg = rad2deg(p.scan.angle_max);
+  pnh.param("scan/angle_min_deg", angle_min_deg, angle_min_deg);
+  pnh.param("scan/angle_max_deg", angle_max_deg, angle_max_deg);
+  p.scan.angle_min = deg2rad(angle_min_deg);
+  p.scan.angle_max = deg2rad(angle_max_deg);
+  pnh.param("scan/beams", p.scan.beams, p.scan.beams);
+  pnh.param("scan/range_min", p.scan.range_min, p.scan.range_min);
+  pnh.param("scan/range_max", p.scan.range_max, p.scan.range_max);
+  pnh.param("scan/sigma", p.scan.sigma, p.scan.sigma);
   p.validate();
   return p;
 }

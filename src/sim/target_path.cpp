@@ -132,7 +132,7 @@ double numberOr(const YAML::Node& node, const std::string& key, const std::strin
 
 Pose2 readPose(const YAML::Node& node, const std::string& path) {
   const std::string expected = "[x, y] in m or [x, y, yaw_deg]";
-  if (!node.IsSequence() || node.size() < 2 || node.size() > 3) {
+  if (!node.IsDefined() || !node.IsSequence() || node.size() < 2 || node.size() > 3) {
     throw ParamError(path, node.IsDefined() ? YAML::Dump(node) : "(missing)", expected);
   }
   try {
@@ -170,6 +170,41 @@ void addLeg(TargetPath& path, const YAML::Node& leg, const std::string& name, do
   }
 }
 
+std::vector<double> readRow(const YAML::Node& node, std::size_t size, const std::string& name,
+                            const std::string& expected) {
+  std::vector<double> row;
+  try {
+    if (node.IsSequence() && node.size() == size) {
+      for (const auto& v : node)
+        row.push_back(v.as<double>());
+      return row;
+    }
+  } catch (const YAML::Exception&) {
+  }
+  throw ParamError(name, YAML::Dump(node), expected);
+}
+
+Obstacles readObstacles(const YAML::Node& node) {
+  Obstacles o;
+  if (!node.IsMap()) {
+    throw ParamError("obstacles", YAML::Dump(node), "a mapping with 'circles' and/or 'walls'");
+  }
+  const YAML::Node circles = node["circles"];
+  for (std::size_t i = 0; circles.IsDefined() && circles.IsSequence() && i < circles.size(); ++i) {
+    const auto r = readRow(circles[i], 3, "obstacles.circles[" + std::to_string(i) + "]",
+                           "[x, y, radius] in m");
+    require(r[2] > 0.0, "obstacles.circles[" + std::to_string(i) + "]", r[2], "a radius > 0 m");
+    o.circles.push_back(CircleObstacle{r[0], r[1], r[2]});
+  }
+  const YAML::Node walls = node["walls"];
+  for (std::size_t i = 0; walls.IsDefined() && walls.IsSequence() && i < walls.size(); ++i) {
+    const auto w =
+        readRow(walls[i], 4, "obstacles.walls[" + std::to_string(i) + "]", "[x1, y1, x2, y2] in m");
+    o.walls.push_back(WallObstacle{w[0], w[1], w[2], w[3]});
+  }
+  return o;
+}
+
 }  // namespace
 
 Scenario parseScenario(const std::string& yaml_text, const std::string& origin,
@@ -198,6 +233,10 @@ Scenario parseScenario(const std::string& yaml_text, const std::string& origin,
   }
   for (std::size_t i = 0; legs.IsDefined() && i < legs.size(); ++i) {
     addLeg(s.target, legs[i], "target.legs[" + std::to_string(i) + "].", speed, seed + i);
+  }
+  const YAML::Node obstacles = root["obstacles"];
+  if (obstacles.IsDefined()) {
+    s.obstacles = readObstacles(obstacles);
   }
   s.settle_time = numberOr(root, "settle_time", "", "seconds >= 0", s.settle_time);
   require(s.settle_time >= 0.0, "settle_time", s.settle_time, "seconds >= 0");

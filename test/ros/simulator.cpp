@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Checks the running simulator (static_beacon scenario, Spot layout, noise-free ranges):
-// ranges agree with ground truth, bearings arrive from every board facing the target,
+// Checks the running simulator (a static target and a post, Spot layout, noise-free ranges):
+// ranges agree with ground truth, bearings arrive from every board facing the target, the
+// scan sees the post,
 // /clock advances, and the base drives under cmd_vel.
 #include <geometry_msgs/PointStamped.h>
 #include <geometry_msgs/Twist.h>
@@ -9,6 +10,8 @@
 #include <radio_follow/AoaBearing.h>
 #include <radio_follow/UwbRanges.h>
 #include <ros/ros.h>
+#include <sensor_msgs/LaserScan.h>
+#include <std_msgs/Float64.h>
 
 #include <cmath>
 
@@ -33,13 +36,29 @@ TEST(Simulator, RangesMatchGroundTruth) {
 
 TEST(Simulator, FrontFacingBoardSeesTheTarget) {
   ros::NodeHandle nh;
-  // static_beacon: target at (6, -4): in front (x > 0) of the front board, behind the back one.
+  // Target at (6, -4): in front (x > 0) of the front board, behind the back one.
   const auto bearing = ros::topic::waitForMessage<radio_follow::AoaBearing>("aoa/front/bearing", nh,
                                                                             ros::Duration(30.0));
   ASSERT_TRUE(bearing);
   EXPECT_EQ(bearing->header.frame_id, "aoa_front");
   EXPECT_NEAR(bearing->azimuth, std::atan2(-4.0, 6.0 - 0.065), 0.35);
   EXPECT_LT(bearing->rssi, -30.0);
+}
+
+TEST(Simulator, ScanSeesThePostToTheLeft) {
+  ros::NodeHandle nh;
+  const auto scan =
+      ros::topic::waitForMessage<sensor_msgs::LaserScan>("scan", nh, ros::Duration(30.0));
+  ASSERT_TRUE(scan);
+  const int left =
+      static_cast<int>(std::lround((M_PI / 2.0 - scan->angle_min) / scan->angle_increment));
+  ASSERT_LT(left, static_cast<int>(scan->ranges.size()));
+  EXPECT_NEAR(scan->ranges[left], 1.7, 0.05);                      // post at 2 m, radius 0.3 m
+  EXPECT_TRUE(std::isinf(scan->ranges[scan->ranges.size() / 2]));  // nothing ahead
+  const auto clearance = ros::topic::waitForMessage<std_msgs::Float64>(
+      "ground_truth/obstacle_clearance", nh, ros::Duration(30.0));
+  ASSERT_TRUE(clearance);
+  EXPECT_NEAR(clearance->data, 1.7, 1e-6);
 }
 
 TEST(Simulator, BaseDrivesUnderCmdVel) {

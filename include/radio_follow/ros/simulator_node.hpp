@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "radio_follow/config/layout.hpp"
+#include "radio_follow/sim/obstacles.hpp"
 #include "radio_follow/sim/world.hpp"
 
 namespace radio_follow {
@@ -32,6 +33,8 @@ class SimulatorNode {
     /// World frame of odometry; the robot frame is the layout's fixed_frame.
     std::string odom_frame = "odom";
     sim::WorldConfig world;
+    sim::ScanConfig scan;
+    double scan_rate = 10.0;  ///< Hz; a scan is published only when the scenario has obstacles
 
     void validate() const;
   };
@@ -43,6 +46,7 @@ class SimulatorNode {
   void onTick(const ros::WallTimerEvent&);
   void publish(const sim::StepEvents& events);
   void publishState(const ros::Time& stamp);
+  void publishScan(const ros::Time& stamp);
   ros::Time stampOf(double sim_seconds) const;
 
   Params params_;
@@ -59,6 +63,11 @@ class SimulatorNode {
   ros::Publisher truth_pub_;
   ros::Publisher truth_relative_pub_;
   ros::Publisher clock_pub_;
+  ros::Publisher scan_pub_;
+  ros::Publisher clearance_pub_;
+  double next_scan_ = 0.0;  ///< sim seconds of the next scan
+  double min_clearance_;    ///< closest the robot came to an obstacle, m
+  sim::Rng scan_rng_;
   tf2_ros::TransformBroadcaster tf_;
   ros::WallTimer timer_;
 

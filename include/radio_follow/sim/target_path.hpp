@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "radio_follow/sim/obstacles.hpp"
 #include "radio_follow/sim/robot.hpp"
 
 namespace radio_follow {
@@ -60,6 +61,8 @@ struct Scenario {
   /// Seconds to simulate; defaults to the target path's end plus `settle_time`.
   double duration = 0.0;
   double settle_time = 10.0;
+  /// Obstacles the simulated laser scanner sees (none: no scan is published).
+  Obstacles obstacles;
 };
 
 /// Reads a scenario from YAML (format in config/scenarios/*.yaml and doc/simulator.md).

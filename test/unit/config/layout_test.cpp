@@ -70,6 +70,8 @@ TEST(Layout, RejectsBadFieldsNamingThem) {
                  "twr_modules[0].position");
   expectRejected("target: {uwb_anchor_id: X}\ntwr_modules: [{id: '1', position: [0, a, 0]}]",
                  "twr_modules[0].position");
+  expectRejected("target: {uwb_anchor_id: X}\ntwr_modules: [{id: '1'}]", "twr_modules[0].position");
+  expectRejected("aoa_boards: [{id: b}]", "aoa_boards[0].position");
   expectRejected("target: {uwb_anchor_id: X}\ntwr_modules: [{position: [0, 0, 0]}]",
                  "twr_modules[0].id");
   expectRejected(

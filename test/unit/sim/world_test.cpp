@@ -126,6 +126,7 @@ TEST(Scenario, RejectsBadLegsNamingThem) {
   EXPECT_EQ(rejected("target: {start: [0, 0], legs: [{jump: 3}]}"), "target.legs[0]");
   EXPECT_EQ(rejected("target: {start: [0, 0], legs: [{to: [1, 0], speed: -1}]}"), "walk.speed");
   EXPECT_EQ(rejected("target: {start: [0]}"), "target.start");
+  EXPECT_EQ(rejected("target: {speed: 1}"), "target.start");
   EXPECT_EQ(rejected("target: {start: [0, 0], legs: [{wait: x}]}"), "target.legs[0].wait");
   EXPECT_EQ(rejected("target: {start: [0, 0]}\nduration: -3"), "duration");
   EXPECT_EQ(rejected("name: only"), "scenario");

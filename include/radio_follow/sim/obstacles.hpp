@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "radio_follow/sim/robot.hpp"
+
+namespace radio_follow {
+namespace sim {
+
+/// A round obstacle (a post, a tree, a person standing by) in the world frame.
+struct CircleObstacle {
+  double x = 0.0;
+  double y = 0.0;
+  double radius = 0.1;  ///< m
+};
+
+/// A wall segment in the world frame.
+struct WallObstacle {
+  double x1 = 0.0, y1 = 0.0, x2 = 0.0, y2 = 0.0;  ///< m
+};
+
+struct Obstacles {
+  std::vector<CircleObstacle> circles;
+  std::vector<WallObstacle> walls;
+
+  bool empty() const { return circles.empty() && walls.empty(); }
+};
+
+/// Parameters of a simulated planar laser scanner mounted at the robot's origin.
+struct ScanConfig {
+  double angle_min = -2.35619449;  ///< rad (-135 deg)
+  double angle_max = 2.35619449;   ///< rad (+135 deg)
+  int beams = 271;
+  double range_min = 0.05;  ///< m
+  double range_max = 10.0;  ///< m
+  double sigma = 0.01;      ///< m, range noise
+
+  void validate() const;
+};
+
+/// Distance along the ray from (x, y) in direction `angle` (world) to the first obstacle,
+/// or +infinity when nothing is hit.
+double castRay(const Obstacles& obstacles, double x, double y, double angle);
+
+/// Noise-free ranges of every beam for a robot at `pose` (beams beyond range_max are
+/// +infinity, as REP-117 asks for "no return").
+std::vector<double> scanRanges(const Obstacles& obstacles, const ScanConfig& config,
+                               const Pose2& pose);
+
+/// Distance from (x, y) to the nearest obstacle surface (negative inside a circle).
+double clearance(const Obstacles& obstacles, double x, double y);
+
+}  // namespace sim
+}  // namespace radio_follow
