@@ -1,24 +1,24 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
-# Builds radio_follow in a catkin workspace at $RF_WS (default: .ws/ inside the clone,
-# ignored by git) whose src/ links to this clone. Extra arguments go to catkin_make.
+# Builds radio_follow in a catkin workspace at $RF_WS (see scripts/workspace.sh; printed
+# at the end) whose src/ links to this clone. Extra arguments go to catkin_make.
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-ws="${RF_WS:-$repo/.ws}"
+RF_REPO="$repo"
+# shellcheck source=workspace.sh
+source "$repo/scripts/workspace.sh"
+ws="$RF_WS"
 
 # catkin runs its Python helpers with the first python3 on PATH; Debian's python3 has
 # catkin's modules, a pyenv shim does not. Put /usr/bin first and name it explicitly.
 export PATH="/usr/bin:$PATH"
 
 mkdir -p "$ws/src"
-# Keep catkin tools that walk the clone (catkin_lint, catkin_make) out of the workspace.
-touch "$ws/CATKIN_IGNORE"
-if [ ! -e "$ws/src/radio_follow" ]; then
-  ln -s "$repo" "$ws/src/radio_follow"
-fi
+ln -sfn "$repo" "$ws/src/radio_follow"
 cd "$ws"
 catkin_make -j"${RF_JOBS:-$(nproc)}" \
   -DPYTHON_EXECUTABLE=/usr/bin/python3 \
   -DCMAKE_BUILD_TYPE="${RF_BUILD_TYPE:-Release}" \
   -DCMAKE_EXPORT_COMPILE_COMMANDS=ON \
   "$@"
+echo "build: workspace $ws"

@@ -13,7 +13,7 @@ bash "$repo/scripts/build.sh" tests
 
 # shellcheck disable=SC1091
 source "$repo/scripts/env.sh"
-ws="${RF_WS:-$repo/.ws}"
+ws="$RF_WS"
 results="$ws/build/test_results/radio_follow"
 export ROS_HOME="${ROS_HOME:-$ws/ros_home}"
 rm -rf "$results"
