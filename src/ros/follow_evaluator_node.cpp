@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/ros/follow_evaluator_node.hpp"
 
+#include <std_msgs/String.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -95,6 +97,8 @@ FollowEvaluatorNode::FollowEvaluatorNode(ros::NodeHandle& nh, ros::NodeHandle& p
       "target", 10, [this](const TargetEstimateConstPtr& m) { estimate_ = m; });
   cmd_sub_ = nh.subscribe<geometry_msgs::Twist>(
       "cmd_vel", 10, [this](const geometry_msgs::TwistConstPtr& m) { cmd_ = *m; });
+  report_pub_ = nh.advertise<std_msgs::String>("evaluation/report", 1, true);
+  finished_sub_ = nh.subscribe("ground_truth/finished", 1, &FollowEvaluatorNode::onFinished, this);
   timer_ = nh.createTimer(ros::Duration(1.0 / params_.rate), &FollowEvaluatorNode::onTick, this);
   if (!params_.report_dir.empty()) {
     write_timer_ = nh.createTimer(ros::Duration(params_.write_period),
@@ -106,8 +110,21 @@ FollowEvaluatorNode::~FollowEvaluatorNode() {
   writeReport();
 }
 
+void FollowEvaluatorNode::onFinished(const std_msgs::BoolConstPtr& msg) {
+  if (!msg->data || finished_) {
+    return;
+  }
+  finished_ = true;
+  timer_.stop();
+  write_timer_.stop();
+  writeFiles();
+  std_msgs::String report;
+  report.data = metrics_.report().toJson();
+  report_pub_.publish(report);
+}
+
 void FollowEvaluatorNode::onTick(const ros::TimerEvent& event) {
-  if (!odom_ || !truth_ || relative_history_.empty()) {
+  if (finished_ || !odom_ || !truth_ || relative_history_.empty()) {
     return;
   }
   const auto& relative = relative_history_.back();

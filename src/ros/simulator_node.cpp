@@ -9,6 +9,7 @@
 #include <radio_follow/UwbRanges.h>
 #include <rosgraph_msgs/Clock.h>
 #include <sensor_msgs/LaserScan.h>
+#include <std_msgs/Bool.h>
 #include <std_msgs/Float64.h>
 
 #include <cmath>
@@ -18,6 +19,9 @@
 
 namespace radio_follow {
 namespace {
+
+/// Wall seconds between announcing the end and shutting down.
+constexpr double kFinishLinger = 1.0;
 
 geometry_msgs::Quaternion yawQuaternion(double yaw) {
   geometry_msgs::Quaternion q;
@@ -29,7 +33,8 @@ geometry_msgs::Quaternion yawQuaternion(double yaw) {
 }  // namespace
 
 SimulatorNode::SimulatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
-    : params_(loadSimulatorParams(private_nh)),
+    : nh_(nh),
+      params_(loadSimulatorParams(private_nh)),
       min_clearance_(std::numeric_limits<double>::infinity()),
       scan_rng_(params_.world.seed + 1) {
   layout_ = loadLayoutFile(params_.layout_file);
@@ -60,6 +65,7 @@ SimulatorNode::SimulatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
     scan_pub_ = nh.advertise<sensor_msgs::LaserScan>("scan", 5);
     clearance_pub_ = nh.advertise<std_msgs::Float64>("ground_truth/obstacle_clearance", 5);
   }
+  finished_pub_ = nh.advertise<std_msgs::Bool>("ground_truth/finished", 1, true);
   cmd_sub_ = nh.subscribe("cmd_vel", 10, &SimulatorNode::onCmdVel, this);
 
   // On sim time the node owns the clock and runs time_factor x real time; on wall time
@@ -87,11 +93,17 @@ void SimulatorNode::onCmdVel(const geometry_msgs::TwistConstPtr& msg) {
 
 void SimulatorNode::onTick(const ros::WallTimerEvent&) {
   if (world_->finished()) {
+    timer_.stop();
+    ROS_INFO("simulator: scenario finished at %.1f s; closest approach to an obstacle %.2f m",
+             world_->time(), min_clearance_);
+    std_msgs::Bool finished;
+    finished.data = true;
+    finished_pub_.publish(finished);
     if (params_.shutdown_on_finish) {
-      ROS_INFO("simulator: scenario finished at %.1f s; closest approach to an obstacle %.2f m",
-               world_->time(), min_clearance_);
-      timer_.stop();
-      ros::requestShutdown();
+      // Give listeners (the evaluator) a moment to close their books, then end.
+      shutdown_timer_ = nh_.createWallTimer(
+          ros::WallDuration(kFinishLinger),
+          [](const ros::WallTimerEvent&) { ros::requestShutdown(); }, true);
     }
     return;
   }

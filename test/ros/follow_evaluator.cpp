@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // A perfect stand-in locator (estimate = ground truth) and a constant forward command:
 // the evaluator's metrics.json must report a near-zero estimate error and the driven
-// distance, and its trajectory.csv must hold the samples.
+// distance, and its trajectory.csv must hold the samples; at the scenario's end the
+// simulator announces it and the evaluator publishes its final report.
 #include <geometry_msgs/PointStamped.h>
 #include <geometry_msgs/Twist.h>
 #include <gtest/gtest.h>
 #include <radio_follow/TargetEstimate.h>
 #include <ros/ros.h>
+#include <std_msgs/Bool.h>
+#include <std_msgs/String.h>
 
 #include <fstream>
 #include <regex>
@@ -70,6 +73,20 @@ TEST(FollowEvaluator, ReportsAPerfectEstimateAndTheDrivenDistance) {
   EXPECT_LT(driven, 6.0);
   const std::string csv = readFile(report_dir + "/trajectory.csv");
   EXPECT_GT(std::count(csv.begin(), csv.end(), '\n'), 100);
+}
+
+TEST(FollowEvaluator, PublishesTheFinalReportWhenTheScenarioEnds) {
+  ros::NodeHandle nh;
+  // straight_walk: 28 m at 1 m/s plus 10 s settle time = 38 s of simulated time.
+  const auto finished =
+      ros::topic::waitForMessage<std_msgs::Bool>("ground_truth/finished", nh, ros::Duration(90.0));
+  ASSERT_TRUE(finished);
+  EXPECT_TRUE(finished->data);
+  const auto report =
+      ros::topic::waitForMessage<std_msgs::String>("evaluation/report", nh, ros::Duration(30.0));
+  ASSERT_TRUE(report);
+  EXPECT_NEAR(jsonNumber(report->data, "duration_s"), 38.0, 1.0);
+  EXPECT_NEAR(jsonNumber(report->data, "target_distance_m"), 28.0, 1.0);
 }
 
 }  // namespace

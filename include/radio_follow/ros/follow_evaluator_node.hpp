@@ -6,6 +6,7 @@
 #include <nav_msgs/Odometry.h>
 #include <radio_follow/TargetEstimate.h>
 #include <ros/ros.h>
+#include <std_msgs/Bool.h>
 
 #include <deque>
 #include <string>
@@ -36,6 +37,8 @@ class FollowEvaluatorNode {
 
  private:
   void onTick(const ros::TimerEvent&);
+  /// The simulator announced the end: stop sampling, write, publish the report.
+  void onFinished(const std_msgs::BoolConstPtr& msg);
   void writeReport() const;
   void writeFiles() const;
 
@@ -44,6 +47,9 @@ class FollowEvaluatorNode {
   ros::Subscriber odom_sub_, truth_sub_, relative_sub_, estimate_sub_, cmd_sub_;
   ros::Timer timer_;
   ros::Timer write_timer_;
+  ros::Subscriber finished_sub_;
+  ros::Publisher report_pub_;
+  bool finished_ = false;
   nav_msgs::OdometryConstPtr odom_;
   geometry_msgs::PointStampedConstPtr truth_;
   geometry_msgs::PointStampedConstPtr previous_truth_;

@@ -49,6 +49,7 @@ class SimulatorNode {
   void publishScan(const ros::Time& stamp);
   ros::Time stampOf(double sim_seconds) const;
 
+  ros::NodeHandle nh_;
   Params params_;
   Layout layout_;
   std::unique_ptr<sim::World> world_;
@@ -70,6 +71,8 @@ class SimulatorNode {
   sim::Rng scan_rng_;
   tf2_ros::TransformBroadcaster tf_;
   ros::WallTimer timer_;
+  ros::WallTimer shutdown_timer_;
+  ros::Publisher finished_pub_;
 
   double cmd_linear_ = 0.0;
   double cmd_angular_ = 0.0;
