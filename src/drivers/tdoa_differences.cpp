@@ -24,8 +24,8 @@ void TdoaDifferenceConfig::validate() const {
     const std::string name = "~anchors[" + std::to_string(i) + "]";
     require(!anchors[i].id.empty(), name + ".id", anchors[i].id, "a non-empty name");
     require(ids.insert(anchors[i].id).second, name + ".id", anchors[i].id, "a unique name");
-    require(addresses.insert(anchors[i].address).second, name + ".address",
-            anchors[i].address, "a unique address");
+    require(addresses.insert(anchors[i].address).second, name + ".address", anchors[i].address,
+            "a unique address");
     require(anchors[i].position.allFinite(), name + ".position", "non-finite",
             "three finite coordinates");
   }
@@ -33,8 +33,8 @@ void TdoaDifferenceConfig::validate() const {
   require(reference < anchors.size(), "~reference", reference, "one of the anchors");
   require(std::isfinite(distance_variance) && distance_variance > 0.0, "~distance_variance",
           distance_variance, "a positive variance in m^2");
-  require(std::isfinite(plausibility_margin) && plausibility_margin >= 0.0,
-          "~plausibility_margin", plausibility_margin, "a non-negative distance in metres");
+  require(std::isfinite(plausibility_margin) && plausibility_margin >= 0.0, "~plausibility_margin",
+          plausibility_margin, "a non-negative distance in metres");
   require(min_anchors >= 2 && min_anchors <= anchors.size(), "~min_anchors", min_anchors,
           "an anchor count in [2, number of anchors]");
 }
@@ -65,8 +65,9 @@ TdoaDifferenceCalculator::Outcome TdoaDifferenceCalculator::compute(
   if (group.receptions.size() < config_.min_anchors) {
     return Outcome::kTooFewAnchors;
   }
-  const auto ref = std::find_if(group.receptions.begin(), group.receptions.end(),
-                                [&](const TdoaReception& r) { return r.anchor == config_.reference; });
+  const auto ref =
+      std::find_if(group.receptions.begin(), group.receptions.end(),
+                   [&](const TdoaReception& r) { return r.anchor == config_.reference; });
   if (ref == group.receptions.end()) {
     return Outcome::kNoReference;
   }
@@ -76,9 +77,9 @@ TdoaDifferenceCalculator::Outcome TdoaDifferenceCalculator::compute(
     }
     // Differences of ticks first (exact integers), then seconds: converting absolute
     // 64-bit tick counts to double would lose the 15 ps resolution.
-    const double dt = static_cast<double>(tickDifference(r.rx_ticks, ref->rx_ticks)) /
-                          kTdoaTickFrequency +
-                      (sync_delay_[r.anchor] - sync_delay_[config_.reference]);
+    const double dt =
+        static_cast<double>(tickDifference(r.rx_ticks, ref->rx_ticks)) / kTdoaTickFrequency +
+        (sync_delay_[r.anchor] - sync_delay_[config_.reference]);
     const double d = kSpeedOfLight * dt;
     if (std::abs(d) > baseline_[r.anchor] + config_.plausibility_margin) {
       if (implausible != nullptr) {

@@ -33,8 +33,9 @@ TdoaBlinkGrouper::AddResult TdoaBlinkGrouper::add(std::uint16_t tag, std::uint8_
     open_.push_back(std::move(fresh));
     group = open_.end() - 1;
   } else {
-    const bool seen = std::any_of(group->receptions.begin(), group->receptions.end(),
-                                  [&](const TdoaReception& r) { return r.anchor == reception.anchor; });
+    const bool seen =
+        std::any_of(group->receptions.begin(), group->receptions.end(),
+                    [&](const TdoaReception& r) { return r.anchor == reception.anchor; });
     if (seen) {
       return AddResult::kDuplicate;
     }

@@ -17,7 +17,9 @@ std::uint64_t readLe(const std::uint8_t* p, std::size_t n) {
   return value;
 }
 
-std::uint16_t readU16(const std::uint8_t* p) { return static_cast<std::uint16_t>(readLe(p, 2)); }
+std::uint16_t readU16(const std::uint8_t* p) {
+  return static_cast<std::uint16_t>(readLe(p, 2));
+}
 
 // Fixed field sizes of the TLVs whose contents are decoded.
 constexpr std::size_t kTimestampTlvSize = 16;

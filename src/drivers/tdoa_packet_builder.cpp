@@ -25,9 +25,14 @@ TdoaPacketBuilder::TdoaPacketBuilder(std::uint64_t anchor_address, std::uint8_t 
 
 TdoaPacketBuilder& TdoaPacketBuilder::mac(std::uint16_t tag) {
   // Blink source address, least significant byte first; the tag ID sits in bytes 3, 4.
-  std::vector<std::uint8_t> bytes{0xC5, sequence_, 0x00,
+  std::vector<std::uint8_t> bytes{0xC5,
+                                  sequence_,
+                                  0x00,
                                   static_cast<std::uint8_t>(tag & 0xFF),
-                                  static_cast<std::uint8_t>(tag >> 8), 0xCA, 0xDE, 0x00};
+                                  static_cast<std::uint8_t>(tag >> 8),
+                                  0xCA,
+                                  0xDE,
+                                  0x00};
   return rawTlv(static_cast<std::uint32_t>(TdoaTlvType::kMac), bytes);
 }
 

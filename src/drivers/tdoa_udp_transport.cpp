@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/drivers/tdoa_udp_transport.hpp"
 
+#include <algorithm>
 #include <boost/asio/ip/address.hpp>
 #include <boost/asio/post.hpp>
-#include <algorithm>
 #include <chrono>
 #include <utility>
 
@@ -21,7 +21,9 @@ TdoaUdpTransport::TdoaUdpTransport(Config config, DatagramHandler on_datagram,
       retry_timer_(io_),
       backoff_(config_.initial_backoff) {}
 
-TdoaUdpTransport::~TdoaUdpTransport() { stop(); }
+TdoaUdpTransport::~TdoaUdpTransport() {
+  stop();
+}
 
 void TdoaUdpTransport::start() {
   asio::post(io_, [this] { tryOpen(); });
@@ -70,18 +72,18 @@ void TdoaUdpTransport::tryOpen() {
 }
 
 void TdoaUdpTransport::receive() {
-  socket_.async_receive_from(
-      asio::buffer(buffer_), sender_, [this](const boost::system::error_code& ec, std::size_t n) {
-        if (ec == asio::error::operation_aborted) {
-          return;
-        }
-        if (ec) {
-          fail("receive failed: " + ec.message());
-          return;
-        }
-        on_datagram_(buffer_.data(), n);
-        receive();
-      });
+  socket_.async_receive_from(asio::buffer(buffer_), sender_,
+                             [this](const boost::system::error_code& ec, std::size_t n) {
+                               if (ec == asio::error::operation_aborted) {
+                                 return;
+                               }
+                               if (ec) {
+                                 fail("receive failed: " + ec.message());
+                                 return;
+                               }
+                               on_datagram_(buffer_.data(), n);
+                               receive();
+                             });
 }
 
 void TdoaUdpTransport::fail(const std::string& what) {

@@ -18,8 +18,8 @@ TdoaDriverNode::TdoaDriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
   diagnostics_.add("TDoA anchors", this, &TdoaDriverNode::diagnose);
   last_datagram_ = last_diagnosis_ = ros::WallTime::now();
   // Incomplete blinks are published when their window passes; check twice per window.
-  timer_ = nh.createTimer(ros::Duration(params_.group_window / 2.0), &TdoaDriverNode::onTimer,
-                          this);
+  timer_ =
+      nh.createTimer(ros::Duration(params_.group_window / 2.0), &TdoaDriverNode::onTimer, this);
 
   TdoaUdpTransport::Config config;
   config.address = params_.address;
@@ -30,8 +30,8 @@ TdoaDriverNode::TdoaDriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
       config, [this](const std::uint8_t* data, std::size_t size) { onDatagram(data, size); },
       [this](const std::string& what, double retry_in) { onSocketError(what, retry_in); });
   transport_->start();
-  ROS_INFO("tdoa_driver: listening on %s:%d for %zu anchors (master %s)",
-           params_.address.c_str(), params_.port, params_.anchors.size(), params_.master.c_str());
+  ROS_INFO("tdoa_driver: listening on %s:%d for %zu anchors (master %s)", params_.address.c_str(),
+           params_.port, params_.anchors.size(), params_.master.c_str());
 }
 
 TdoaDriverNode::~TdoaDriverNode() {

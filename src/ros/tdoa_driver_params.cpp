@@ -49,8 +49,8 @@ TdoaAnchorConfig parseAnchor(XmlRpc::XmlRpcValue& v, const std::string& name) {
   }
   TdoaAnchorConfig anchor;
   anchor.id = text(v["id"], name + ".id", "a string");
-  anchor.address = parseAddress(text(v["address"], name + ".address", "a hex string"),
-                                name + ".address");
+  anchor.address =
+      parseAddress(text(v["address"], name + ".address", "a hex string"), name + ".address");
   XmlRpc::XmlRpcValue& p = v["position"];
   if (p.getType() != XmlRpc::XmlRpcValue::TypeArray || p.size() != 3) {
     throw ParamError(name + ".position", p.toXml(), "a list [x, y, z] in metres");
@@ -105,15 +105,15 @@ void TdoaDriverNode::Params::validate() const {
           "the id of one of ~anchors");
   require(reference.empty() || indexOf(anchors, reference) < anchors.size(), "~reference",
           reference, "empty (= master) or the id of one of ~anchors");
-  require(std::isfinite(group_window) && group_window > 0.0 && group_window <= 1.0,
-          "~group_window", group_window, "a time in seconds in (0, 1]");
+  require(std::isfinite(group_window) && group_window > 0.0 && group_window <= 1.0, "~group_window",
+          group_window, "a time in seconds in (0, 1]");
   require(min_anchors >= 2, "~min_anchors", min_anchors, "at least 2");
   require(std::isfinite(data_timeout) && data_timeout > 0.0, "~data_timeout", data_timeout,
           "a positive time in seconds");
   require(std::isfinite(initial_backoff) && initial_backoff > 0.0, "~initial_backoff",
           initial_backoff, "a positive time in seconds");
-  require(std::isfinite(max_backoff) && max_backoff >= initial_backoff, "~max_backoff",
-          max_backoff, "a time in seconds >= ~initial_backoff");
+  require(std::isfinite(max_backoff) && max_backoff >= initial_backoff, "~max_backoff", max_backoff,
+          "a time in seconds >= ~initial_backoff");
   differenceConfig().validate();  // anchors, variance, margin, min_anchors vs anchor count
 }
 

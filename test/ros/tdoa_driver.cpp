@@ -173,8 +173,8 @@ TEST(TdoaDriver, PublishesDifferencesAndCountsBadDatagramsWithoutStopping) {
     ros::WallDuration(0.1).sleep();
   }
   EXPECT_EQ(received.diagnostic("rejected"), kBlinks);
-  for (const char* reason : {"no_magic", "too_short", "length_beyond_packet", "tlv_overrun",
-                             "unknown_anchor"}) {
+  for (const char* reason :
+       {"no_magic", "too_short", "length_beyond_packet", "tlv_overrun", "unknown_anchor"}) {
     EXPECT_EQ(received.diagnostic(std::string("rejected: ") + reason), kBlinks / 5) << reason;
   }
   EXPECT_EQ(received.diagnostic("reconnects"), 0);

@@ -16,8 +16,8 @@ constexpr double kSpeedOfLight = 299792458.0;
 
 /// A configured TDoA anchor.
 struct TdoaAnchorConfig {
-  std::string id;               ///< Name used in TdoaDifference.anchor_a/b.
-  std::uint64_t address = 0;    ///< 64-bit address in its reports.
+  std::string id;                                      ///< Name used in TdoaDifference.anchor_a/b.
+  std::uint64_t address = 0;                           ///< 64-bit address in its reports.
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  ///< Fixed frame, metres.
 };
 
@@ -61,9 +61,9 @@ class TdoaDifferenceCalculator {
 
   enum class Outcome {
     kOk,
-    kNoReference,      ///< The reference anchor did not hear the blink.
-    kTooFewAnchors,    ///< Fewer than min_anchors heard it.
-    kNoPlausible,      ///< Every difference failed the plausibility bound.
+    kNoReference,    ///< The reference anchor did not hear the blink.
+    kTooFewAnchors,  ///< Fewer than min_anchors heard it.
+    kNoPlausible,    ///< Every difference failed the plausibility bound.
   };
 
   /// Appends the group's differences to `out` (cleared first); `implausible` (if given)

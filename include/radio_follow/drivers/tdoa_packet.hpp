@@ -35,8 +35,8 @@ enum class TdoaDecodeError : std::uint8_t {
   kLengthBeyondPacket,  ///< The header's length field claims more bytes than arrived.
   kTlvTruncated,        ///< A TLV header does not fit in the length the header declares.
   kTlvOverrun,          ///< A TLV's length runs past the declared length.
-  kTlvTooShort,         ///< A known TLV is shorter than its fixed fields, or a MAC is not 5..16 bytes.
-  kLengthMismatch,      ///< Bytes are left over after the declared TLV count.
+  kTlvTooShort,     ///< A known TLV is shorter than its fixed fields, or a MAC is not 5..16 bytes.
+  kLengthMismatch,  ///< Bytes are left over after the declared TLV count.
   kCount,
 };
 
@@ -52,8 +52,8 @@ struct TdoaReport {
   std::uint64_t anchor_address = 0;  ///< The reporting anchor's 64-bit address.
   std::uint16_t platform = 0;
   std::uint16_t version = 0;
-  std::uint16_t length = 0;      ///< Bytes of TLVs following the header.
-  std::uint8_t sequence = 0;     ///< Sequence number of the received blink.
+  std::uint16_t length = 0;   ///< Bytes of TLVs following the header.
+  std::uint8_t sequence = 0;  ///< Sequence number of the received blink.
   std::uint8_t tlv_count = 0;
   std::uint16_t header_crc = 0;  ///< As sent; not verified (the algorithm is undocumented).
   std::uint16_t frame_crc = 0;   ///< As sent; not verified.
@@ -83,8 +83,8 @@ struct TdoaReport {
   std::uint32_t rtto = 0;        ///< 24-bit receiver time tracking offset, raw.
   std::uint32_t integrator = 0;  ///< 24-bit receiver time tracking integrator, raw.
   std::uint8_t channel = 0;
-  std::uint8_t prf = 0;          ///< High nibble of the PRF/bit-rate byte.
-  std::uint8_t bitrate = 0;      ///< Low nibble of the PRF/bit-rate byte.
+  std::uint8_t prf = 0;      ///< High nibble of the PRF/bit-rate byte.
+  std::uint8_t bitrate = 0;  ///< Low nibble of the PRF/bit-rate byte.
 
   /// TLVs of a type other than 1..5, skipped by their length field.
   std::uint16_t unknown_tlvs = 0;

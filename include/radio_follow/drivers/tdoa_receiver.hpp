@@ -15,15 +15,15 @@ namespace radio_follow {
 
 /// Counters of the TDoA pipeline, one per outcome; the node turns them into diagnostics.
 struct TdoaStats {
-  std::uint64_t packets = 0;         ///< Datagrams handed in.
-  std::uint64_t reports = 0;         ///< Reports filed into a blink group.
+  std::uint64_t packets = 0;  ///< Datagrams handed in.
+  std::uint64_t reports = 0;  ///< Reports filed into a blink group.
   std::array<std::uint64_t, kTdoaDecodeErrorCount> decode_errors{};  ///< By TdoaDecodeError.
-  std::uint64_t unknown_anchor = 0;  ///< Decoded, but from an address not configured.
-  std::uint64_t missing_tlv = 0;     ///< No MAC (tag) or no timestamp TLV.
-  std::uint64_t duplicate = 0;       ///< Same anchor reported the same blink twice.
-  std::uint64_t blinks = 0;          ///< Blinks published.
-  std::uint64_t blinks_incomplete = 0;    ///< Of those, published after a timeout.
-  std::uint64_t blinks_dropped = 0;       ///< Too few anchors / no reference / none plausible.
+  std::uint64_t unknown_anchor = 0;     ///< Decoded, but from an address not configured.
+  std::uint64_t missing_tlv = 0;        ///< No MAC (tag) or no timestamp TLV.
+  std::uint64_t duplicate = 0;          ///< Same anchor reported the same blink twice.
+  std::uint64_t blinks = 0;             ///< Blinks published.
+  std::uint64_t blinks_incomplete = 0;  ///< Of those, published after a timeout.
+  std::uint64_t blinks_dropped = 0;     ///< Too few anchors / no reference / none plausible.
   std::uint64_t implausible_differences = 0;
 
   /// Datagrams that did not become a filed report.

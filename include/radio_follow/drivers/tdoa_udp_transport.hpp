@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <array>
+#include <atomic>
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/udp.hpp>
 #include <boost/asio/steady_timer.hpp>
-#include <array>
-#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -23,8 +23,8 @@ class TdoaUdpTransport {
   struct Config {
     std::string address = "0.0.0.0";  ///< Local IPv4/IPv6 address to bind.
     std::uint16_t port = 6666;
-    double initial_backoff = 0.5;      ///< Seconds.
-    double max_backoff = 10.0;         ///< Seconds.
+    double initial_backoff = 0.5;  ///< Seconds.
+    double max_backoff = 10.0;     ///< Seconds.
   };
 
   /// Called on the I/O thread with each datagram (the bytes live only during the call).

@@ -25,15 +25,15 @@ class TdoaDriverNode {
     int port = 6666;
     std::string frame_id = "base_link";  ///< Frame of the anchor positions.
     std::vector<TdoaAnchorConfig> anchors;
-    std::string master;     ///< Anchor ID of the clock master (required).
-    std::string reference;  ///< Anchor ID differences are taken against; empty = master.
-    double group_window = 0.05;        ///< s
-    double distance_variance = 0.0225; ///< m^2
-    double plausibility_margin = 0.5;  ///< m
+    std::string master;          ///< Anchor ID of the clock master (required).
+    std::string reference;       ///< Anchor ID differences are taken against; empty = master.
+    double group_window = 0.05;  ///< s
+    double distance_variance = 0.0225;  ///< m^2
+    double plausibility_margin = 0.5;   ///< m
     int min_anchors = 2;
-    double data_timeout = 2.0;      ///< s without datagrams before a warning
-    double initial_backoff = 0.5;   ///< s
-    double max_backoff = 10.0;      ///< s
+    double data_timeout = 2.0;     ///< s without datagrams before a warning
+    double initial_backoff = 0.5;  ///< s
+    double max_backoff = 10.0;     ///< s
 
     /// Reads every parameter from `private_nh`; throws ParamError on a malformed value.
     void load(const ros::NodeHandle& private_nh);

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/drivers/tdoa_grouper.hpp"
+
 #include <gtest/gtest.h>
 
 #include <vector>
-
-#include "radio_follow/drivers/tdoa_grouper.hpp"
 
 namespace radio_follow {
 namespace {
@@ -71,7 +71,7 @@ TEST(TdoaBlinkGrouper, SequenceWraparoundStartsANewBlink) {
   grouper.add(1, 255, {0, 10}, 1.0, &out);
   grouper.add(1, 0, {0, 20}, 1.01, &out);
   grouper.add(1, 255, {1, 99}, 26.6, &out);  // a later blink with the same number
-  ASSERT_EQ(out.size(), 2u);  // both stale groups expired, incomplete
+  ASSERT_EQ(out.size(), 2u);                 // both stale groups expired, incomplete
   EXPECT_FALSE(out[0].complete);
   EXPECT_EQ(out[0].sequence, 255);
   EXPECT_EQ(out[1].sequence, 0);

@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Decoder tests: packets built from the documented layout (doc/tdoa_protocol.md), plus
 // hand-written bytes, and one test per rejection reason.
+#include "radio_follow/drivers/tdoa_packet.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <vector>
 
-#include "radio_follow/drivers/tdoa_packet.hpp"
 #include "radio_follow/drivers/tdoa_packet_builder.hpp"
 
 namespace radio_follow {
@@ -176,7 +177,8 @@ TEST(TdoaPacket, RejectsTlvOverrunningTheDeclaredLength) {
             TdoaDecodeError::kTlvOverrun);
   // The bytes are in the datagram but outside the header's length: still an overrun.
   const Bytes inner = TdoaPacketBuilder(1, 0).timestamp(5).build();
-  EXPECT_EQ(decode(TdoaPacketBuilder(1, 0).timestamp(5)
+  EXPECT_EQ(decode(TdoaPacketBuilder(1, 0)
+                       .timestamp(5)
                        .lengthField(static_cast<std::uint16_t>(inner.size() - kTdoaHeaderSize - 1))
                        .build(),
                    &r),

@@ -2,6 +2,8 @@
 // Time differences from a simulated blink: a tag at a known position, anchors whose
 // clocks are synchronised to the master's sync frame (so each runs late by its time of
 // flight from the master), timestamps quantised to ticks.
+#include "radio_follow/drivers/tdoa_receiver.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,7 +12,6 @@
 
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/drivers/tdoa_packet_builder.hpp"
-#include "radio_follow/drivers/tdoa_receiver.hpp"
 
 namespace radio_follow {
 namespace {
@@ -30,8 +31,8 @@ TdoaDifferenceConfig layout() {
 std::uint64_t rxTicks(const TdoaDifferenceConfig& c, std::size_t i, const Eigen::Vector3d& tag,
                       double t0) {
   const double flight = (tag - c.anchors[i].position).norm() / kSpeedOfLight;
-  const double sync_lag = (c.anchors[i].position - c.anchors[c.master].position).norm() /
-                          kSpeedOfLight;
+  const double sync_lag =
+      (c.anchors[i].position - c.anchors[c.master].position).norm() / kSpeedOfLight;
   return static_cast<std::uint64_t>(std::llround((t0 + flight - sync_lag) * kTdoaTickFrequency));
 }
 
@@ -47,8 +48,7 @@ double expected(const TdoaDifferenceConfig& c, std::size_t a, const Eigen::Vecto
 // One tick is 4.7 mm of light travel; two rounded timestamps differ by at most that.
 constexpr double kTickMetres = kSpeedOfLight / kTdoaTickFrequency;
 
-void checkBlink(const TdoaDifferenceConfig& c, const TdoaBlink& blink,
-                const Eigen::Vector3d& tag) {
+void checkBlink(const TdoaDifferenceConfig& c, const TdoaBlink& blink, const Eigen::Vector3d& tag) {
   ASSERT_EQ(blink.differences.size(), c.anchors.size() - 1);
   for (const auto& d : blink.differences) {
     EXPECT_EQ(d.anchor_b, c.reference);

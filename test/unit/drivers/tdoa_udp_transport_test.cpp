@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The transport on loopback: datagrams arrive intact, and a bind that cannot succeed is
 // retried with backoff instead of ending the transport.
+#include "radio_follow/drivers/tdoa_udp_transport.hpp"
+
 #include <gtest/gtest.h>
 
 #include <boost/asio/io_context.hpp>
@@ -11,8 +13,6 @@
 #include <string>
 #include <thread>
 #include <vector>
-
-#include "radio_follow/drivers/tdoa_udp_transport.hpp"
 
 namespace radio_follow {
 namespace {
