@@ -51,10 +51,9 @@ void TdoaUdpTransport::tryOpen() {
     return;
   }
   const udp::endpoint local(address, config_.port);
+  // No SO_REUSEADDR: a second driver on the same port should fail loudly (and retry)
+  // rather than silently share the anchors' unicast datagrams with the first.
   socket_.open(local.protocol(), ec);
-  if (!ec) {
-    socket_.set_option(udp::socket::reuse_address(true), ec);
-  }
   if (!ec) {
     socket_.bind(local, ec);
   }
@@ -63,6 +62,7 @@ void TdoaUdpTransport::tryOpen() {
          ec.message());
     return;
   }
+  local_port_ = socket_.local_endpoint(ec).port();
   open_ = true;
   backoff_ = config_.initial_backoff;
   if (binds_++ > 0) {

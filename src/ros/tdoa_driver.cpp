@@ -123,6 +123,7 @@ void TdoaDriverNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& statu
   status.add("rejected: missing_tlv", s.missing_tlv);
   status.add("rejected: duplicate", s.duplicate);
   status.add("socket open", transport_->isOpen());
+  status.add("local port", transport_->localPort());
   status.add("reconnects", transport_->reconnects());
   status.add("socket failures", transport_->failures());
   status.add("seconds since last datagram", silence);

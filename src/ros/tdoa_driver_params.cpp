@@ -98,7 +98,7 @@ void TdoaDriverNode::Params::load(const ros::NodeHandle& nh) {
 
 void TdoaDriverNode::Params::validate() const {
   require(!address.empty(), "~address", address, "a local IP address");
-  require(port > 0 && port < 65536, "~port", port, "a UDP port in [1, 65535]");
+  require(port >= 0 && port < 65536, "~port", port, "a UDP port in [0, 65535] (0 = any)");
   require(!frame_id.empty(), "~frame_id", frame_id, "a TF frame name");
   require(anchors.size() >= 2, "~anchors", anchors.size(), "a list of at least two anchors");
   require(indexOf(anchors, master) < anchors.size(), "~master", master,

@@ -120,8 +120,6 @@ struct Received {
 
 TEST(TdoaDriver, PublishesDifferencesAndCountsBadDatagramsWithoutStopping) {
   ros::NodeHandle nh;
-  int port = 0;
-  ASSERT_TRUE(nh.getParam("tdoa_port", port));
   Received received;
   ros::Subscriber sub = nh.subscribe<TdoaMeasurements>(
       "tdoa_measurements", 100, [&](const TdoaMeasurements::ConstPtr& msg) {
@@ -140,7 +138,14 @@ TEST(TdoaDriver, PublishesDifferencesAndCountsBadDatagramsWithoutStopping) {
           }
         }
       });
-  Anchors anchors(port);
+  // The node binds port 0 (any free port) and reports the kernel's choice.
+  const ros::WallTime bind_deadline = ros::WallTime::now() + ros::WallDuration(30.0);
+  while (received.diagnostic("local port") <= 0 && ros::WallTime::now() < bind_deadline) {
+    ros::WallDuration(0.1).sleep();
+  }
+  const long long port = received.diagnostic("local port");
+  ASSERT_GT(port, 0) << "the driver did not report a bound port within 30 s";
+  Anchors anchors(static_cast<int>(port));
   auto count = [&] {
     std::lock_guard<std::mutex> lock(received.mutex);
     return received.blinks.size();

@@ -22,9 +22,9 @@ class TdoaUdpTransport {
  public:
   struct Config {
     std::string address = "0.0.0.0";  ///< Local IPv4/IPv6 address to bind.
-    std::uint16_t port = 6666;
-    double initial_backoff = 0.5;  ///< Seconds.
-    double max_backoff = 10.0;     ///< Seconds.
+    std::uint16_t port = 6666;        ///< 0 = any free port (see localPort()).
+    double initial_backoff = 0.5;     ///< Seconds.
+    double max_backoff = 10.0;        ///< Seconds.
   };
 
   /// Called on the I/O thread with each datagram (the bytes live only during the call).
@@ -43,6 +43,8 @@ class TdoaUdpTransport {
   void stop();
 
   bool isOpen() const { return open_.load(); }
+  /// Port of the last successful bind (the kernel's choice when Config::port is 0).
+  std::uint16_t localPort() const { return local_port_.load(); }
   /// Successful binds after the first.
   std::uint64_t reconnects() const { return reconnects_.load(); }
   /// Failed open/bind/receive attempts.
@@ -64,6 +66,7 @@ class TdoaUdpTransport {
   std::thread thread_;
   double backoff_;
   std::atomic<bool> open_{false};
+  std::atomic<std::uint16_t> local_port_{0};
   std::atomic<std::uint64_t> binds_{0};
   std::atomic<std::uint64_t> reconnects_{0};
   std::atomic<std::uint64_t> failures_{0};

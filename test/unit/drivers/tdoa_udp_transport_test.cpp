@@ -20,13 +20,6 @@ namespace {
 using boost::asio::ip::udp;
 using namespace std::chrono_literals;
 
-// A port the kernel just handed out on loopback (released again for the transport).
-std::uint16_t freeLoopbackPort() {
-  boost::asio::io_context io;
-  udp::socket socket(io, udp::endpoint(boost::asio::ip::make_address("127.0.0.1"), 0));
-  return socket.local_endpoint().port();
-}
-
 struct Inbox {
   std::mutex mutex;
   std::condition_variable cv;
@@ -39,7 +32,7 @@ TEST(TdoaUdpTransport, DeliversDatagramsFromLoopback) {
   Inbox inbox;
   TdoaUdpTransport::Config config;
   config.address = "127.0.0.1";
-  config.port = freeLoopbackPort();
+  config.port = 0;  // the kernel picks a free port
   TdoaUdpTransport transport(
       config,
       [&](const std::uint8_t* data, std::size_t size) {
@@ -53,13 +46,17 @@ TEST(TdoaUdpTransport, DeliversDatagramsFromLoopback) {
       });
   transport.start();
 
+  // The transport binds on its own thread; wait for the port it got.
+  for (int i = 0; i < 2000 && transport.localPort() == 0; ++i) {
+    std::this_thread::sleep_for(10ms);
+  }
+  ASSERT_NE(transport.localPort(), 0);
   boost::asio::io_context io;
   udp::socket sender(io, udp::v4());
-  const udp::endpoint target(boost::asio::ip::make_address("127.0.0.1"), config.port);
+  const udp::endpoint target(boost::asio::ip::make_address("127.0.0.1"), transport.localPort());
   const std::vector<std::uint8_t> payload{0x02, 0x01, 0xFF, 0x00, 0x7F};
-  // The transport binds on its own thread; keep sending until one arrives.
   std::unique_lock<std::mutex> lock(inbox.mutex);
-  for (int attempt = 0; attempt < 200 && inbox.datagrams.empty(); ++attempt) {
+  for (int attempt = 0; attempt < 400 && inbox.datagrams.empty(); ++attempt) {
     lock.unlock();
     sender.send_to(boost::asio::buffer(payload), target);
     lock.lock();
@@ -71,6 +68,25 @@ TEST(TdoaUdpTransport, DeliversDatagramsFromLoopback) {
   EXPECT_TRUE(transport.isOpen());
   EXPECT_EQ(transport.reconnects(), 0u);
   lock.unlock();
+  // A second transport on the same port cannot bind (no SO_REUSEADDR) and says so.
+  std::vector<std::string> errors;
+  std::mutex errors_mutex;
+  TdoaUdpTransport::Config same = config;
+  same.port = transport.localPort();
+  same.initial_backoff = 0.01;
+  TdoaUdpTransport second(
+      same, [](const std::uint8_t*, std::size_t) {},
+      [&](const std::string& what, double) {
+        std::lock_guard<std::mutex> guard(errors_mutex);
+        errors.push_back(what);
+      });
+  second.start();
+  for (int i = 0; i < 2000 && second.failures() == 0; ++i) {
+    std::this_thread::sleep_for(10ms);
+  }
+  second.stop();
+  EXPECT_GE(second.failures(), 1u);
+  EXPECT_FALSE(second.isOpen());
   transport.stop();
   EXPECT_FALSE(transport.isOpen());
 }
