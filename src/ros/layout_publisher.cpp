@@ -10,7 +10,8 @@
 namespace radio_follow {
 namespace {
 
-geometry_msgs::TransformStamped sensorTransform(const std::string& parent, const std::string& child,
+geometry_msgs::TransformStamped sensorTransform(const std::string& parent,
+                                                const std::string& child,
                                                 const Eigen::Vector3d& position,
                                                 const Eigen::Quaterniond& orientation,
                                                 const ros::Time& stamp) {
@@ -125,8 +126,8 @@ LayoutPublisherNode::LayoutPublisherNode(ros::NodeHandle& nh, ros::NodeHandle& p
                                          Eigen::Quaterniond::Identity(), now));
   }
   for (const auto& board : layout_.aoa_boards) {
-    transforms.push_back(sensorTransform(layout_.fixed_frame, board.frame_id, board.position,
-                                         board.orientation, now));
+    transforms.push_back(
+        sensorTransform(layout_.fixed_frame, board.frame_id, board.position, board.orientation, now));
   }
   static_tf_.sendTransform(transforms);
 
