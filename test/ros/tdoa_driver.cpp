@@ -3,6 +3,8 @@
 // with the test packet builder, interleaved with malformed datagrams. Checks the
 // published distance differences and that the bad datagrams are counted in the
 // diagnostics without interrupting the stream.
+#include "radio_follow/ros/tdoa_driver.hpp"
+
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <gtest/gtest.h>
 #include <radio_follow/TdoaMeasurements.h>
@@ -16,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "radio_follow/common/param_error.hpp"
 #include "radio_follow/drivers/tdoa_differences.hpp"
 #include "radio_follow/drivers/tdoa_packet.hpp"
 #include "radio_follow/drivers/tdoa_packet_builder.hpp"
@@ -197,6 +200,94 @@ TEST(TdoaDriver, PublishesDifferencesAndCountsBadDatagramsWithoutStopping) {
       EXPECT_DOUBLE_EQ(d.variance, 0.0225);
     }
   }
+}
+
+// Parameter loading and validation against a live parameter server (no node started).
+class TdoaDriverParams : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    for (const char* key :
+         {"anchors", "master", "reference", "port", "group_window", "max_backoff", "min_anchors"}) {
+      nh_.deleteParam(key);
+    }
+    XmlRpc::XmlRpcValue anchors;
+    for (int i = 0; i < 3; ++i) {
+      XmlRpc::XmlRpcValue a;
+      a["id"] = kAnchors[i].id;
+      a["address"] = "0x" + std::to_string(2000 + i);
+      XmlRpc::XmlRpcValue position;
+      for (int k = 0; k < 3; ++k) {
+        position[k] = kAnchors[i].position[k];
+      }
+      position[2] = 1;  // an int must be accepted as a coordinate
+      a["position"] = position;
+      anchors[i] = a;
+    }
+    nh_.setParam("anchors", anchors);
+    nh_.setParam("master", "49");
+    anchors_ = anchors;
+  }
+
+  TdoaDriverNode::Params load() {
+    TdoaDriverNode::Params p;
+    p.load(nh_);
+    p.validate();
+    return p;
+  }
+
+  // The ParamError's parameter name, or "" if loading succeeded.
+  std::string failingParam() {
+    try {
+      load();
+    } catch (const ParamError& e) {
+      return e.name();
+    }
+    return "";
+  }
+
+  ros::NodeHandle nh_{"tdoa_params_test"};
+  XmlRpc::XmlRpcValue anchors_;
+};
+
+TEST_F(TdoaDriverParams, LoadsAnchorsAndResolvesIds) {
+  const TdoaDriverNode::Params p = load();
+  ASSERT_EQ(p.anchors.size(), 3u);
+  EXPECT_EQ(p.anchors[2].address, 0x2002u);
+  EXPECT_DOUBLE_EQ(p.anchors[1].position.y(), -0.165);
+  EXPECT_DOUBLE_EQ(p.anchors[1].position.z(), 1.0);
+  const TdoaDifferenceConfig c = p.differenceConfig();
+  EXPECT_EQ(c.master, 1u);
+  EXPECT_EQ(c.reference, 1u);  // empty reference = master
+}
+
+TEST_F(TdoaDriverParams, RejectsInvalidValuesNamingTheParameter) {
+  nh_.setParam("master", "nope");
+  EXPECT_EQ(failingParam(), "~master");
+  SetUp();
+  nh_.setParam("reference", "nope");
+  EXPECT_EQ(failingParam(), "~reference");
+  SetUp();
+  nh_.setParam("port", 70000);
+  EXPECT_EQ(failingParam(), "~port");
+  SetUp();
+  nh_.setParam("group_window", 0.0);
+  EXPECT_EQ(failingParam(), "~group_window");
+  SetUp();
+  nh_.setParam("max_backoff", 0.1);
+  EXPECT_EQ(failingParam(), "~max_backoff");
+  SetUp();
+  nh_.setParam("min_anchors", 4);
+  EXPECT_EQ(failingParam(), "~min_anchors");
+  SetUp();
+  anchors_[1]["address"] = "0xZZ";
+  nh_.setParam("anchors", anchors_);
+  EXPECT_EQ(failingParam(), "~anchors[1].address");
+  SetUp();
+  nh_.setParam("anchors", 5);
+  EXPECT_EQ(failingParam(), "~anchors");
+  SetUp();
+  nh_.deleteParam("anchors");
+  EXPECT_EQ(failingParam(), "~anchors");
 }
 
 }  // namespace
