@@ -1,0 +1,139 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/ros/tdoa_driver.hpp"
+
+#include <radio_follow/TdoaMeasurements.h>
+
+#include <algorithm>
+#include <functional>
+
+namespace radio_follow {
+
+TdoaDriverNode::TdoaDriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh) {
+  params_.load(private_nh);
+  params_.validate();
+  receiver_ = std::make_unique<TdoaReceiver>(params_.differenceConfig(), params_.group_window);
+
+  pub_ = nh.advertise<TdoaMeasurements>("tdoa_measurements", 10);
+  diagnostics_.setHardwareIDf("tdoa udp %s:%d", params_.address.c_str(), params_.port);
+  diagnostics_.add("TDoA anchors", this, &TdoaDriverNode::diagnose);
+  last_datagram_ = last_diagnosis_ = ros::WallTime::now();
+  // Incomplete blinks are published when their window passes; check twice per window.
+  timer_ =
+      nh.createTimer(ros::Duration(params_.group_window / 2.0), &TdoaDriverNode::onTimer, this);
+
+  TdoaUdpTransport::Config config;
+  config.address = params_.address;
+  config.port = static_cast<std::uint16_t>(params_.port);
+  config.initial_backoff = params_.initial_backoff;
+  config.max_backoff = params_.max_backoff;
+  transport_ = std::make_unique<TdoaUdpTransport>(
+      config, [this](const std::uint8_t* data, std::size_t size) { onDatagram(data, size); },
+      [this](const std::string& what, double retry_in) { onSocketError(what, retry_in); });
+  transport_->start();
+  ROS_INFO("tdoa_driver: listening on %s:%d for %zu anchors (master %s)", params_.address.c_str(),
+           params_.port, params_.anchors.size(), params_.master.c_str());
+}
+
+TdoaDriverNode::~TdoaDriverNode() {
+  // Stop the I/O thread before the members its callbacks touch go away.
+  if (transport_) {
+    transport_->stop();
+  }
+}
+
+void TdoaDriverNode::onDatagram(const std::uint8_t* data, std::size_t size) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  last_datagram_ = ros::WallTime::now();
+  const TdoaDecodeError error =
+      receiver_->onDatagram(data, size, ros::Time::now().toSec(), &blinks_);
+  const TdoaStats& stats = receiver_->stats();
+  if (stats.rejected() != last_logged_rejections_) {
+    last_logged_rejections_ = stats.rejected();
+    // One line per 5 s at most, however many packets are bad.
+    ROS_WARN_THROTTLE(5.0, "tdoa_driver: dropped a datagram (%s); %llu of %llu dropped so far",
+                      error == TdoaDecodeError::kOk ? "unknown anchor, missing TLV or duplicate"
+                                                    : toString(error),
+                      static_cast<unsigned long long>(stats.rejected()),
+                      static_cast<unsigned long long>(stats.packets));
+  }
+  publish(blinks_);
+  blinks_.clear();
+}
+
+void TdoaDriverNode::onSocketError(const std::string& what, double retry_in) {
+  ROS_WARN_THROTTLE(10.0, "tdoa_driver: %s; retrying in %.1f s", what.c_str(), retry_in);
+}
+
+void TdoaDriverNode::onTimer(const ros::TimerEvent&) {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    receiver_->onTimer(ros::Time::now().toSec(), &blinks_);
+    publish(blinks_);
+    blinks_.clear();
+    const double silence = (ros::WallTime::now() - last_datagram_).toSec();
+    if (silence > params_.data_timeout) {
+      ROS_WARN_THROTTLE(5.0, "tdoa_driver: no datagram for %.1f s (socket %s)", silence,
+                        transport_->isOpen() ? "open" : "not bound");
+    }
+  }
+  diagnostics_.update();
+}
+
+void TdoaDriverNode::publish(const std::vector<TdoaBlink>& blinks) {
+  const auto& anchors = receiver_->config().anchors;
+  for (const auto& blink : blinks) {
+    TdoaMeasurements msg;
+    msg.header.stamp = ros::Time(blink.first_arrival);
+    msg.header.frame_id = params_.frame_id;
+    msg.tag_id = tdoaTagIdString(blink.tag);
+    for (const auto& d : blink.differences) {
+      TdoaDifference out;
+      out.anchor_a = anchors[d.anchor_a].id;
+      out.anchor_b = anchors[d.anchor_b].id;
+      out.distance_difference = d.distance_difference;
+      out.variance = d.variance;
+      msg.differences.push_back(out);
+    }
+    pub_.publish(msg);
+  }
+}
+
+void TdoaDriverNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  const TdoaStats& s = receiver_->stats();
+  const ros::WallTime now = ros::WallTime::now();
+  const double span = std::max((now - last_diagnosis_).toSec(), 1e-3);
+  const double silence = (now - last_datagram_).toSec();
+  status.add("datagram rate (1/s)", (s.packets - packets_at_last_diagnosis_) / span);
+  status.add("blink rate (1/s)", (s.blinks - blinks_at_last_diagnosis_) / span);
+  packets_at_last_diagnosis_ = s.packets;
+  blinks_at_last_diagnosis_ = s.blinks;
+  last_diagnosis_ = now;
+  status.add("datagrams", s.packets);
+  status.add("blinks published", s.blinks);
+  status.add("blinks published incomplete", s.blinks_incomplete);
+  status.add("blinks dropped", s.blinks_dropped);
+  status.add("implausible differences", s.implausible_differences);
+  status.add("rejected", s.rejected());
+  for (std::size_t i = 1; i < kTdoaDecodeErrorCount; ++i) {
+    status.add(std::string("rejected: ") + toString(static_cast<TdoaDecodeError>(i)),
+               s.decode_errors[i]);
+  }
+  status.add("rejected: unknown_anchor", s.unknown_anchor);
+  status.add("rejected: missing_tlv", s.missing_tlv);
+  status.add("rejected: duplicate", s.duplicate);
+  status.add("socket open", transport_->isOpen());
+  status.add("local port", transport_->localPort());
+  status.add("reconnects", transport_->reconnects());
+  status.add("socket failures", transport_->failures());
+  status.add("seconds since last datagram", silence);
+  if (!transport_->isOpen()) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "socket not bound, retrying");
+  } else if (silence > params_.data_timeout) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "no data from the anchors");
+  } else {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "receiving");
+  }
+}
+
+}  // namespace radio_follow
