@@ -13,7 +13,7 @@ TdoaDriverNode::TdoaDriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
   params_.validate();
   receiver_ = std::make_unique<TdoaReceiver>(params_.differenceConfig(), params_.group_window);
 
-  pub_ = nh.advertise<TdoaMeasurements>("tdoa_measurements", 10);
+  pub_ = nh.advertise<TdoaMeasurements>("measurements", 10);
   diagnostics_.setHardwareIDf("tdoa udp %s:%d", params_.address.c_str(), params_.port);
   diagnostics_.add("TDoA anchors", this, &TdoaDriverNode::diagnose);
   last_datagram_ = last_diagnosis_ = ros::WallTime::now();

@@ -125,7 +125,7 @@ TEST(TdoaDriver, PublishesDifferencesAndCountsBadDatagramsWithoutStopping) {
   ros::NodeHandle nh;
   Received received;
   ros::Subscriber sub = nh.subscribe<TdoaMeasurements>(
-      "tdoa_measurements", 100, [&](const TdoaMeasurements::ConstPtr& msg) {
+      "measurements", 100, [&](const TdoaMeasurements::ConstPtr& msg) {
         std::lock_guard<std::mutex> lock(received.mutex);
         received.blinks.push_back(*msg);
       });

@@ -16,7 +16,7 @@
 namespace radio_follow {
 
 /// ROS wrapper of the UDP TDoA driver: receives anchor reports (doc/tdoa_protocol.md),
-/// groups them per blink and publishes `tdoa_measurements` (TdoaMeasurements) with the
+/// groups them per blink and publishes `measurements` (TdoaMeasurements) with the
 /// distance differences against the reference anchor. See doc/nodes/tdoa_driver.md.
 class TdoaDriverNode {
  public:
