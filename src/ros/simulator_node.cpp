@@ -13,6 +13,7 @@
 #include <std_msgs/Float64.h>
 
 #include <cmath>
+#include <filesystem>
 #include <limits>
 
 #include "radio_follow/common/param_error.hpp"
@@ -43,13 +44,22 @@ SimulatorNode::SimulatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
   require(layout_.fixed_frame != params_.odom_frame, "~odom_frame", params_.odom_frame,
           "a frame other than the layout's fixed_frame '" + layout_.fixed_frame + "'");
   world_ = std::make_unique<sim::World>(layout_, scenario, params_.world);
+  if (params_.output == "serial") {
+    std::error_code error;
+    std::filesystem::create_directories(params_.serial_dir, error);
+    serial_ = std::make_unique<sim::SerialDevices>(layout_, params_.serial_dir, params_.unplug);
+  }
   ros::param::param("/use_sim_time", sim_time_, false);
 
   for (const auto& module : layout_.twr_modules) {
-    range_pubs_.push_back(nh.advertise<UwbRanges>("uwb/" + module.id + "/ranges", 20));
+    if (!serial_) {
+      range_pubs_.push_back(nh.advertise<UwbRanges>("uwb/" + module.id + "/ranges", 20));
+    }
   }
   for (const auto& board : layout_.aoa_boards) {
-    bearing_pubs_.push_back(nh.advertise<AoaBearing>("aoa/" + board.id + "/bearing", 20));
+    if (!serial_) {
+      bearing_pubs_.push_back(nh.advertise<AoaBearing>("aoa/" + board.id + "/bearing", 20));
+    }
   }
   if (layout_.tdoa_anchors.size() >= 2) {
     tdoa_pub_ = nh.advertise<TdoaMeasurements>("tdoa/measurements", 20);
@@ -118,7 +128,13 @@ void SimulatorNode::onTick(const ros::WallTimerEvent&) {
     clock_pub_.publish(clock);
   }
   publishState(now);
-  publish(events);
+  if (serial_) {
+    serial_->service(world_->time());
+    serial_->write(events);
+    publishTdoa(events);
+  } else {
+    publish(events);
+  }
   if (scan_pub_ && world_->time() >= next_scan_) {
     next_scan_ = world_->time() + 1.0 / params_.scan_rate;
     publishScan(now);
@@ -180,6 +196,10 @@ void SimulatorNode::publish(const sim::StepEvents& events) {
     msg.event_counter = -1;
     bearing_pubs_[e.board].publish(msg);
   }
+  publishTdoa(events);
+}
+
+void SimulatorNode::publishTdoa(const sim::StepEvents& events) {
   for (const auto& e : events.tdoa) {
     TdoaMeasurements msg;
     msg.header.stamp = stampOf(e.t);

@@ -58,6 +58,31 @@ std::vector<sim::OcclusionSector> loadOcclusions(ros::NodeHandle& pnh) {
   return sectors;
 }
 
+/// `~unplug`: a list of {device, at, duration} (serial mode only).
+std::vector<sim::UnplugFault> loadUnplugFaults(ros::NodeHandle& pnh) {
+  std::vector<sim::UnplugFault> faults;
+  XmlRpc::XmlRpcValue list;
+  if (!pnh.getParam("unplug", list)) {
+    return faults;
+  }
+  if (list.getType() != XmlRpc::XmlRpcValue::TypeArray) {
+    throw ParamError("~unplug", list.toXml(), "a list of {device, at, duration}");
+  }
+  for (int i = 0; i < list.size(); ++i) {
+    const std::string name = "~unplug[" + std::to_string(i) + "]";
+    XmlRpc::XmlRpcValue& item = list[i];
+    if (item.getType() != XmlRpc::XmlRpcValue::TypeStruct || !item.hasMember("device") ||
+        item["device"].getType() != XmlRpc::XmlRpcValue::TypeString || !item.hasMember("at") ||
+        !item.hasMember("duration")) {
+      throw ParamError(name, item.toXml(), "{device: uwb_<id> | aoa_<id>, at: s, duration: s}");
+    }
+    faults.push_back(sim::UnplugFault{static_cast<std::string>(item["device"]),
+                                      xmlNumber(item["at"], name + ".at"),
+                                      xmlNumber(item["duration"], name + ".duration")});
+  }
+  return faults;
+}
+
 }  // namespace
 
 void SimulatorNode::Params::validate() const {
@@ -71,6 +96,12 @@ void SimulatorNode::Params::validate() const {
   require(std::isfinite(cmd_timeout) && cmd_timeout > 0.0, "~cmd_timeout", cmd_timeout,
           "seconds > 0");
   require(!odom_frame.empty(), "~odom_frame", odom_frame, "a non-empty frame name");
+  require(output == "messages" || output == "serial", "~output", output,
+          "'messages' or 'serial'");
+  require(output != "serial" || !serial_dir.empty(), "~serial_dir", serial_dir,
+          "a directory for the device links");
+  require(unplug.empty() || output == "serial", "~unplug", std::string("(list)"),
+          "no faults unless ~output is 'serial'");
   world.validate();
   scan.validate();
   require(std::isfinite(scan_rate) && scan_rate > 0.0 && scan_rate <= 100.0, "~scan/rate",
@@ -109,6 +140,9 @@ SimulatorNode::Params loadSimulatorParams(ros::NodeHandle& pnh) {
   w.tdoa_reference = static_cast<std::size_t>(reference);
   w.seed = static_cast<std::uint64_t>(std::max(0, p.seed));
   w.twr.occlusions = loadOcclusions(pnh);
+  pnh.param("output", p.output, p.output);
+  pnh.param("serial_dir", p.serial_dir, p.serial_dir);
+  p.unplug = loadUnplugFaults(pnh);
   pnh.param("scan/rate", p.scan_rate, p.scan_rate);
   double angle_min_deg = rad2deg(p.scan.angle_min);
   double angle_max_deg = rad2deg(p.scan.angle_max);

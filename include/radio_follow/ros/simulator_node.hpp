@@ -12,6 +12,7 @@
 
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/sim/obstacles.hpp"
+#include "radio_follow/sim/serial_devices.hpp"
 #include "radio_follow/sim/world.hpp"
 
 namespace radio_follow {
@@ -35,6 +36,11 @@ class SimulatorNode {
     sim::WorldConfig world;
     sim::ScanConfig scan;
     double scan_rate = 10.0;  ///< Hz; a scan is published only when the scenario has obstacles
+    /// "messages": publish driver messages; "serial": speak the devices' protocols on
+    /// pseudo-terminals under serial_dir so the real drivers run in the loop.
+    std::string output = "messages";
+    std::string serial_dir = "/tmp/radio_follow_sim";
+    std::vector<sim::UnplugFault> unplug;
 
     void validate() const;
   };
@@ -45,6 +51,7 @@ class SimulatorNode {
   void onCmdVel(const geometry_msgs::TwistConstPtr& msg);
   void onTick(const ros::WallTimerEvent&);
   void publish(const sim::StepEvents& events);
+  void publishTdoa(const sim::StepEvents& events);
   void publishState(const ros::Time& stamp);
   void publishScan(const ros::Time& stamp);
   ros::Time stampOf(double sim_seconds) const;
@@ -53,6 +60,7 @@ class SimulatorNode {
   Params params_;
   Layout layout_;
   std::unique_ptr<sim::World> world_;
+  std::unique_ptr<sim::SerialDevices> serial_;
   bool sim_time_ = false;
   ros::Time start_;
 
