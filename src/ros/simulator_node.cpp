@@ -85,10 +85,10 @@ SimulatorNode::SimulatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
   timer_ = nh.createWallTimer(ros::WallDuration(wall_period), &SimulatorNode::onTick, this);
   ROS_INFO(
       "simulator: scenario '%s' (%.1f s), %zu UWB modules, %zu AoA boards, %zu TDoA anchors, "
-      "%s time x%.1f",
+      "%s time x%.1f, output %s",
       scenario.name.c_str(), scenario.duration, layout_.twr_modules.size(),
       layout_.aoa_boards.size(), layout_.tdoa_anchors.size(), sim_time_ ? "sim" : "wall",
-      sim_time_ ? params_.time_factor : 1.0);
+      sim_time_ ? params_.time_factor : 1.0, params_.output.c_str());
 }
 
 ros::Time SimulatorNode::stampOf(double sim_seconds) const {
