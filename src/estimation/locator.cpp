@@ -181,6 +181,7 @@ LocatorEstimate Locator::update(double now) {
     z.sigma = config_.range_sigma;
     obs.ranges.push_back(z);
     out.ranges_used.push_back(i);
+    out.ranges_m.push_back(z.range);
     newest = std::max(newest, ranges_[i].t);
   }
   for (auto& slot : tdoas_) {
@@ -207,6 +208,7 @@ LocatorEstimate Locator::update(double now) {
     c.rssi = bearings_[i].rssi;
     candidates.push_back(c);
     out.bearings_fresh.push_back(i);
+    out.bearing_angles.emplace_back(bearings_[i].azimuth, bearings_[i].elevation);
   }
   std::optional<Eigen::Vector3d> believed;
   if (warm_ && warm_ranged_) {

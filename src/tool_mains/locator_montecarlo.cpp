@@ -166,12 +166,13 @@ void accuracyTable(const Options& opt, const std::vector<Case>& cases) {
 // One range reads +2 m (blocked direct path) in 10 % of epochs.
 void outlierTable(const Options& opt, const std::vector<Case>& cases) {
   std::printf("\nNLOS outlier test: one range +2 m in 10 %% of epochs; RMSE (m) over the grid, "
-              "warm start at the truth:\n\n| layout | az sigma | bearings | loss | clean | with "
+              "cold start, bearing loss = range loss:\n\n| layout | az sigma | bearings | loss | clean | with "
               "outliers | ratio |\n|---|---|---|---|---|---|---|\n");
   const std::vector<rf::LossConfig> losses{{rf::LossType::kNone, 1.0},
                                            {rf::LossType::kHuber, 2.0},
                                            {rf::LossType::kSoftL1, 1.0},
-                                           {rf::LossType::kCauchy, 1.0}};
+                                           {rf::LossType::kCauchy, 1.0},
+                                           {rf::LossType::kCauchy, 2.0}};
   for (const Case& c : cases) {
     const rf::Layout layout = rf::loadLayoutFile(opt.layouts + "/" + c.layout + ".yaml");
     for (const auto& loss : losses) {
@@ -193,7 +194,9 @@ void outlierTable(const Options& opt, const std::vector<Case>& cases) {
             const double u = unit(rng);
             const auto which = static_cast<std::size_t>(unit(rng) * obs.ranges.size());
             if (pass == 1 && u < 0.1) obs.ranges[which].range += 2.0;
-            const rf::SolveResult r = solver.solve(obs, truth);
+            rf::InitializerConfig init;
+            init.height = kHeight;
+            const rf::SolveResult r = coldSolve(solver, obs, init);
             if (r.success) {
               se[pass] += (r.position - truth).squaredNorm();
               ++n[pass];
@@ -203,9 +206,9 @@ void outlierTable(const Options& opt, const std::vector<Case>& cases) {
       }
       const double clean = std::sqrt(se[0] / n[0]);
       const double dirty = std::sqrt(se[1] / n[1]);
-      std::printf("| %s | %.0f | %d | %s | %.3f | %.3f | %.2f |\n", c.layout.c_str(),
-                  c.azimuth_deg, c.max_bearings, rf::toString(loss.type).c_str(), clean, dirty,
-                  dirty / clean);
+      std::printf("| %s | %.0f | %d | %s %.0f | %.3f | %.3f | %.2f |\n", c.layout.c_str(),
+                  c.azimuth_deg, c.max_bearings, rf::toString(loss.type).c_str(), loss.scale,
+                  clean, dirty, dirty / clean);
     }
   }
 }
@@ -234,7 +237,7 @@ int main(int argc, char** argv) {
   try {
     std::printf("Target on the plane z = %.1f m (2D mode), range sigma %.2f m, elevation sigma = "
                 "azimuth sigma, %d trials per grid point (1-10 m x 12 directions), default "
-                "losses (huber 2), cold start (trilateration or multi-start).\n\n",
+                "losses (ranges cauchy 2, bearings huber 2), cold start (trilateration or multi-start).\n\n",
                 kHeight, kRangeSigma, opt.trials);
     accuracyTable(opt, {{"spot_twr", 0, 0},
                         {"tracked", 0, 0},

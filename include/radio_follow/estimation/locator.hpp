@@ -32,8 +32,8 @@ struct LocatorConfig {
   double azimuth_sigma = deg2rad(5.0);         ///< rad
   double elevation_sigma = deg2rad(10.0);      ///< rad
   bool use_elevation = true;
-  LossConfig range_loss{LossType::kHuber, 2.0};
-  LossConfig tdoa_loss{LossType::kHuber, 2.0};
+  LossConfig range_loss{LossType::kCauchy, 2.0};
+  LossConfig tdoa_loss{LossType::kCauchy, 2.0};
   LossConfig bearing_loss{LossType::kHuber, 2.0};
   double max_age = 0.5;                        ///< s; older measurements are dropped
   AoaSelectorConfig aoa;
@@ -64,7 +64,10 @@ struct LocatorEstimate {
   double stamp = 0.0;        ///< time of the newest measurement used, s
   /// What the solve used (layout indices), for markers and diagnostics.
   std::vector<std::size_t> ranges_used;
+  std::vector<double> ranges_m;  ///< calibrated range of each entry of ranges_used, m
   std::vector<std::size_t> bearings_fresh;
+  /// (azimuth, elevation) in the board frame of each entry of bearings_fresh, rad.
+  std::vector<Eigen::Vector2d> bearing_angles;
   std::vector<std::size_t> bearings_used;
 };
 

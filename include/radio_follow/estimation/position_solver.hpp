@@ -27,8 +27,8 @@ struct SolverConfig {
   /// 2D mode: z is held at `height` (a Ceres subset manifold), 3D mode: z is free.
   bool planar = true;
   double height = 1.0;
-  LossConfig range_loss{LossType::kHuber, 2.0};
-  LossConfig tdoa_loss{LossType::kHuber, 2.0};
+  LossConfig range_loss{LossType::kCauchy, 2.0};
+  LossConfig tdoa_loss{LossType::kCauchy, 2.0};
   LossConfig bearing_loss{LossType::kHuber, 2.0};
   int max_iterations = 25;
   /// Covariance from ceres::Covariance (robust-loss-weighted Jacobian, SVD, rank deficiency
