@@ -251,7 +251,7 @@ LocatorEstimate Locator::update(double now) {
   if (warm_usable) {
     result = solver_.solve(obs, *warm_);
   } else if (const auto guess = trilaterate(obs.ranges, init_config_)) {
-    result = solver_.solve(obs, *guess);
+    result = solver_.solveCold(obs, *guess);
   } else {
     result = solver_.solveMultiStart(obs, multiStartCandidates(obs, init_config_));
   }

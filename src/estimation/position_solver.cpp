@@ -59,6 +59,7 @@ struct PositionSolver::CeresParts {
   std::unique_ptr<ceres::LossFunction> range_loss;
   std::unique_ptr<ceres::LossFunction> tdoa_loss;
   std::unique_ptr<ceres::LossFunction> bearing_loss;
+  ceres::HuberLoss convex_loss{2.0};
   ceres::SubsetManifold fixed_z{3, {2}};
   ceres::Problem::Options problem_options;
   ceres::Solver::Options solver_options;
@@ -91,7 +92,13 @@ PositionSolver::~PositionSolver() = default;
 
 SolveResult PositionSolver::solve(const ObservationSet& observations,
                                   const Eigen::Vector3d& initial) const {
-  return solveOnce(observations, initial, true);
+  return solveOnce(observations, initial, true, false);
+}
+
+SolveResult PositionSolver::solveCold(const ObservationSet& observations,
+                                      const Eigen::Vector3d& initial) const {
+  const SolveResult first = solveOnce(observations, initial, false, true);
+  return solveOnce(observations, first.success ? first.position : initial, true, false);
 }
 
 SolveResult PositionSolver::solveMultiStart(const ObservationSet& observations,
@@ -99,19 +106,20 @@ SolveResult PositionSolver::solveMultiStart(const ObservationSet& observations,
   SolveResult best;
   best.cost = std::numeric_limits<double>::infinity();
   for (const auto& start : starts) {
-    SolveResult r = solveOnce(observations, start, false);
+    SolveResult r = solveOnce(observations, start, false, true);
     if (r.success && r.cost < best.cost) {
       best = r;
     }
   }
-  if (best.success) {
-    computeCovariance(observations, best);
+  if (!best.success) {
+    return best;
   }
-  return best;
+  return solveOnce(observations, best.position, true, false);
 }
 
 SolveResult PositionSolver::solveOnce(const ObservationSet& observations,
-                                      const Eigen::Vector3d& initial, bool with_covariance) const {
+                                      const Eigen::Vector3d& initial, bool with_covariance,
+                                      bool convex_stage) const {
   SolveResult result;
   double p[3] = {initial.x(), initial.y(), config_.planar ? config_.height : initial.z()};
   // Cost functions are not movable; deques keep their addresses stable while growing.
@@ -119,18 +127,22 @@ SolveResult PositionSolver::solveOnce(const ObservationSet& observations,
   std::deque<TdoaCost> tdoas;
   std::deque<BearingCost> bearings;
 
+  ceres::LossFunction* convex = convex_stage ? &parts_->convex_loss : nullptr;
+  ceres::LossFunction* range_loss = convex_stage ? convex : parts_->range_loss.get();
+  ceres::LossFunction* tdoa_loss = convex_stage ? convex : parts_->tdoa_loss.get();
+  ceres::LossFunction* bearing_loss = convex_stage ? convex : parts_->bearing_loss.get();
   ceres::Problem problem(parts_->problem_options);
   for (const auto& z : observations.ranges) {
     ranges.emplace_back(z);
-    problem.AddResidualBlock(&ranges.back(), parts_->range_loss.get(), p);
+    problem.AddResidualBlock(&ranges.back(), range_loss, p);
   }
   for (const auto& z : observations.tdoas) {
     tdoas.emplace_back(z);
-    problem.AddResidualBlock(&tdoas.back(), parts_->tdoa_loss.get(), p);
+    problem.AddResidualBlock(&tdoas.back(), tdoa_loss, p);
   }
   for (const auto& z : observations.bearings) {
     bearings.emplace_back(z);
-    problem.AddResidualBlock(&bearings.back(), parts_->bearing_loss.get(), p);
+    problem.AddResidualBlock(&bearings.back(), bearing_loss, p);
   }
   if (observations.ranges.empty()) {
     RangeObservation prior;

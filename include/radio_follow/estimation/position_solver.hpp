@@ -63,9 +63,16 @@ class PositionSolver {
   PositionSolver(const PositionSolver&) = delete;
   PositionSolver& operator=(const PositionSolver&) = delete;
 
+  /// Solves from a start close to the answer (the last estimate).
   SolveResult solve(const ObservationSet& observations, const Eigen::Vector3d& initial) const;
 
-  /// Solves from every start and keeps the lowest final cost (covariance only for it).
+  /// Solves from a rough start (closed-form guess): first with a convex Huber loss on every
+  /// residual, then with the configured losses from there. A redescending loss (Cauchy)
+  /// started far away can settle where the residuals it ignores are the good ones.
+  SolveResult solveCold(const ObservationSet& observations, const Eigen::Vector3d& initial) const;
+
+  /// Convex first stage from every start, the lowest cost wins, then the configured losses
+  /// from there (covariance only for the result).
   SolveResult solveMultiStart(const ObservationSet& observations,
                               const std::vector<Eigen::Vector3d>& starts) const;
 
@@ -73,7 +80,7 @@ class PositionSolver {
 
  private:
   SolveResult solveOnce(const ObservationSet& observations, const Eigen::Vector3d& initial,
-                        bool with_covariance) const;
+                        bool with_covariance, bool convex_stage) const;
   void computeCovariance(const ObservationSet& observations, SolveResult& result) const;
 
   struct CeresParts;
