@@ -3,7 +3,8 @@
 // sensor layout and noise level, plus the NLOS outlier test and per-solve latency.
 // ROS-free; prints Markdown tables (doc/locator_accuracy.md holds a run and the command).
 //
-//   locator_montecarlo [--trials N] [--seed S] [--layouts DIR]
+//   locator_montecarlo [--trials N] [--seed S] [--layouts DIR] [--range-loss TYPE]
+//                      [--range-loss-scale S] [--outliers 0|1]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -35,6 +36,8 @@ struct Options {
   int trials = 200;
   unsigned long seed = 1;
   std::string layouts = "config/layouts";
+  rf::LossConfig range_loss = rf::SolverConfig{}.range_loss;
+  bool outliers = true;
 };
 
 constexpr double kHeight = 1.0;        // target plane (2D mode), m
@@ -82,6 +85,7 @@ void accuracyTable(const Options& opt, const std::vector<Case>& cases) {
       "(us) |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
   rf::SolverConfig config;
   config.height = kHeight;
+  config.range_loss = opt.range_loss;
   const rf::PositionSolver solver(config);
   rf::InitializerConfig init;
   init.height = kHeight;
@@ -230,8 +234,20 @@ int main(int argc, char** argv) {
       opt.seed = std::strtoul(argv[i + 1], nullptr, 10);
     } else if (key == "--layouts") {
       opt.layouts = argv[i + 1];
+    } else if (key == "--range-loss") {
+      try {
+        opt.range_loss.type = rf::parseLossType(argv[i + 1], "--range-loss");
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "%s\n", e.what());
+        return 2;
+      }
+    } else if (key == "--range-loss-scale") {
+      opt.range_loss.scale = std::atof(argv[i + 1]);
+    } else if (key == "--outliers") {
+      opt.outliers = std::string(argv[i + 1]) != "0";
     } else {
-      std::fprintf(stderr, "usage: %s [--trials N] [--seed S] [--layouts DIR]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--trials N] [--seed S] [--layouts DIR] [--range-loss "
+                   "none|huber|soft_l1|cauchy] [--range-loss-scale S] [--outliers 0|1]\n", argv[0]);
       return 2;
     }
   }
@@ -241,9 +257,10 @@ int main(int argc, char** argv) {
   }
   try {
     std::printf("Target on the plane z = %.1f m (2D mode), range sigma %.2f m, elevation sigma = "
-                "azimuth sigma, %d trials per grid point (1-10 m x 12 directions), default "
-                "losses (ranges cauchy 2, bearings huber 2), cold start (trilateration or multi-start).\n\n",
-                kHeight, kRangeSigma, opt.trials);
+                "azimuth sigma, %d trials per grid point (1-10 m x 12 directions), range "
+                "loss %s %.1f, bearing loss huber 2, cold start (trilateration or multi-start).\n\n",
+                kHeight, kRangeSigma, opt.trials, rf::toString(opt.range_loss.type).c_str(),
+                opt.range_loss.scale);
     accuracyTable(opt, {{"spot_twr", 0, 0},
                         {"tracked", 0, 0},
                         {"cube", 2, 1},
@@ -252,7 +269,7 @@ int main(int argc, char** argv) {
                         {"spot", 2, 1},
                         {"spot", 5, 1},
                         {"spot", 5, 2}});
-    outlierTable(opt, {{"tracked", 0, 0}, {"spot", 2, 1}, {"spot_twr", 0, 0}});
+    if (opt.outliers) outlierTable(opt, {{"tracked", 0, 0}, {"spot", 2, 1}, {"spot_twr", 0, 0}});
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 1;
