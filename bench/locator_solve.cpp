@@ -91,7 +91,8 @@ void locatorUpdate(benchmark::State& state) {
       locator.addRange(m.id, (truth - m.position).norm() + 0.03 * noise(rng), t);
     }
     for (const auto& b : layout.aoa_boards) {
-      const Eigen::Vector2d ae = rf::predictBearing(truth, b.position, b.orientation.toRotationMatrix());
+      const Eigen::Vector2d ae =
+          rf::predictBearing(truth, b.position, b.orientation.toRotationMatrix());
       locator.addBearing(b.id, ae(0) + 0.08 * noise(rng), ae(1) + 0.08 * noise(rng), -60.0, t);
     }
     const auto start = std::chrono::steady_clock::now();

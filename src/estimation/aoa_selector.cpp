@@ -11,9 +11,12 @@
 namespace radio_follow {
 
 AoaSelectionMode parseAoaSelectionMode(const std::string& text, const std::string& parameter) {
-  if (text == "rssi") return AoaSelectionMode::kRssi;
-  if (text == "external") return AoaSelectionMode::kExternal;
-  if (text == "all_in_fov") return AoaSelectionMode::kAllInFov;
+  if (text == "rssi")
+    return AoaSelectionMode::kRssi;
+  if (text == "external")
+    return AoaSelectionMode::kExternal;
+  if (text == "all_in_fov")
+    return AoaSelectionMode::kAllInFov;
   throw ParamError(parameter, paramValueString(text), "one of rssi, external, all_in_fov");
 }
 
@@ -59,10 +62,12 @@ double AoaSelector::score(std::size_t board) const {
   }
   const auto& w = rssi_[board];
   double mean = 0.0;
-  for (double v : w) mean += v;
+  for (double v : w)
+    mean += v;
   mean /= static_cast<double>(w.size());
   double var = 0.0;
-  for (double v : w) var += (v - mean) * (v - mean);
+  for (double v : w)
+    var += (v - mean) * (v - mean);
   var /= static_cast<double>(w.size());
   return mean - 2.0 * std::sqrt(var);
 }
@@ -79,14 +84,14 @@ std::size_t AoaSelector::bestByScore(const std::vector<AoaCandidate>& fresh,
 }
 
 std::size_t AoaSelector::majorityVote(const std::vector<AoaCandidate>& fresh,
-                                      const std::vector<std::size_t>& eligible,
-                                      std::size_t best) {
+                                      const std::vector<std::size_t>& eligible, std::size_t best) {
   votes_.push_back(fresh[best].board);
   while (votes_.size() > config_.vote_window) {
     votes_.pop_front();
   }
   std::map<std::size_t, int> counts;
-  for (std::size_t board : votes_) ++counts[board];
+  for (std::size_t board : votes_)
+    ++counts[board];
   std::size_t chosen = best;
   int chosen_votes = counts[fresh[best].board];
   for (std::size_t i : eligible) {
@@ -120,7 +125,8 @@ std::vector<std::size_t> AoaSelector::select(const std::vector<AoaCandidate>& fr
     case AoaSelectionMode::kExternal: {
       std::size_t best = eligible.front();
       for (std::size_t i : eligible) {
-        if (fresh[i].rssi > fresh[best].rssi) best = i;
+        if (fresh[i].rssi > fresh[best].rssi)
+          best = i;
       }
       return {best};
     }

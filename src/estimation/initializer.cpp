@@ -114,7 +114,8 @@ std::vector<Eigen::Vector3d> multiStartCandidates(const ObservationSet& observat
   }
   for (int k = 0; k < config.circle_points; ++k) {
     const double angle = 2.0 * kPi * k / config.circle_points;
-    Eigen::Vector3d p = centre + horizontal * Eigen::Vector3d(std::cos(angle), std::sin(angle), 0.0);
+    Eigen::Vector3d p =
+        centre + horizontal * Eigen::Vector3d(std::cos(angle), std::sin(angle), 0.0);
     p.z() = config.planar ? config.height : centre.z();
     candidates.push_back(p);
   }

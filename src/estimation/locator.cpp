@@ -66,8 +66,8 @@ void LocatorConfig::validate() const {
           "a positive variance in m^2");
   require(gate_probability == 0.0 || (gate_probability > 0.5 && gate_probability < 1.0),
           "gate_probability", gate_probability, "0 (no gating) or a probability in (0.5, 1)");
-  require(max_consecutive_rejections >= 1, "max_consecutive_rejections",
-          max_consecutive_rejections, "at least 1");
+  require(max_consecutive_rejections >= 1, "max_consecutive_rejections", max_consecutive_rejections,
+          "at least 1");
   require(positive(max_position_sigma), "max_position_sigma", max_position_sigma,
           "a positive sigma in metres");
   require(positive(default_range), "default_range", default_range, "a positive range in metres");
@@ -99,8 +99,8 @@ bool Locator::addRange(const std::string& module_id, double raw_range, double t)
   return slot.valid;
 }
 
-bool Locator::addBearing(const std::string& board_id, double azimuth, double elevation,
-                         double rssi, double t) {
+bool Locator::addBearing(const std::string& board_id, double azimuth, double elevation, double rssi,
+                         double t) {
   const AoaBoard* board = layout_.findAoaBoard(board_id);
   if (board == nullptr || !std::isfinite(azimuth) || !std::isfinite(elevation) ||
       !std::isfinite(t)) {
@@ -130,7 +130,8 @@ bool Locator::addTdoa(const std::string& anchor_a, const std::string& anchor_b, 
   const std::size_t ib = static_cast<std::size_t>(b - layout_.tdoa_anchors.data());
   TdoaSlot* slot = nullptr;
   for (auto& s : tdoas_) {
-    if (s.a == ia && s.b == ib) slot = &s;
+    if (s.a == ia && s.b == ib)
+      slot = &s;
   }
   if (slot == nullptr) {
     tdoas_.emplace_back();
@@ -139,7 +140,8 @@ bool Locator::addTdoa(const std::string& anchor_a, const std::string& anchor_b, 
     slot->b = ib;
   }
   slot->difference = difference;
-  slot->sigma = variance > 0.0 && std::isfinite(variance) ? std::sqrt(variance) : config_.tdoa_sigma;
+  slot->sigma =
+      variance > 0.0 && std::isfinite(variance) ? std::sqrt(variance) : config_.tdoa_sigma;
   slot->t = t;
   slot->valid = true;
   return true;
@@ -174,7 +176,8 @@ LocatorEstimate Locator::update(double now) {
   double newest = -std::numeric_limits<double>::infinity();
 
   for (std::size_t i = 0; i < ranges_.size(); ++i) {
-    if (!fresh(ranges_[i], now)) continue;
+    if (!fresh(ranges_[i], now))
+      continue;
     RangeObservation z;
     z.module = layout_.twr_modules[i].position;
     z.range = ranges_[i].range;
@@ -185,7 +188,8 @@ LocatorEstimate Locator::update(double now) {
     newest = std::max(newest, ranges_[i].t);
   }
   for (auto& slot : tdoas_) {
-    if (!fresh(slot, now)) continue;
+    if (!fresh(slot, now))
+      continue;
     TdoaObservation z;
     z.anchor_a = layout_.tdoa_anchors[slot.a].position;
     z.anchor_b = layout_.tdoa_anchors[slot.b].position;
@@ -198,7 +202,8 @@ LocatorEstimate Locator::update(double now) {
   // Bearings: which boards may speak depends on where the target is believed to be.
   std::vector<AoaCandidate> candidates;
   for (std::size_t i = 0; i < bearings_.size(); ++i) {
-    if (!fresh(bearings_[i], now)) continue;
+    if (!fresh(bearings_[i], now))
+      continue;
     const AoaBoard& board = layout_.aoa_boards[i];
     AoaCandidate c;
     c.board = i;
@@ -277,10 +282,10 @@ LocatorEstimate Locator::update(double now) {
 
   double worst_sigma = std::numeric_limits<double>::infinity();
   if (result.covariance_valid) {
-    worst_sigma = std::sqrt(
-        std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(result.covariance)
-                          .eigenvalues()
-                          .maxCoeff()));
+    worst_sigma =
+        std::sqrt(std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(result.covariance)
+                                    .eigenvalues()
+                                    .maxCoeff()));
   }
   const bool ambiguous = !helpers && obs.ranges.size() < full_ranges;
   out.status = worst_sigma <= config_.max_position_sigma && !ambiguous ? TargetStatus::kOk

@@ -34,10 +34,14 @@ std::unique_ptr<ceres::LossFunction> makeLoss(const LossConfig& loss) {
 }  // namespace
 
 LossType parseLossType(const std::string& text, const std::string& parameter) {
-  if (text == "none") return LossType::kNone;
-  if (text == "huber") return LossType::kHuber;
-  if (text == "soft_l1") return LossType::kSoftL1;
-  if (text == "cauchy") return LossType::kCauchy;
+  if (text == "none")
+    return LossType::kNone;
+  if (text == "huber")
+    return LossType::kHuber;
+  if (text == "soft_l1")
+    return LossType::kSoftL1;
+  if (text == "cauchy")
+    return LossType::kCauchy;
   throw ParamError(parameter, paramValueString(text), "one of none, huber, soft_l1, cauchy");
 }
 

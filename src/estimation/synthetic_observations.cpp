@@ -23,9 +23,8 @@ ObservationSet idealObservations(const Layout& layout, const Eigen::Vector3d& p,
   std::vector<std::pair<double, const AoaBoard*>> visible;
   for (const auto& board : layout.aoa_boards) {
     const Eigen::Vector3d v = p - board.position;
-    const double off_axis =
-        std::acos(std::clamp(board.orientation.toRotationMatrix().col(0).dot(v.normalized()),
-                             -1.0, 1.0));
+    const double off_axis = std::acos(
+        std::clamp(board.orientation.toRotationMatrix().col(0).dot(v.normalized()), -1.0, 1.0));
     if (off_axis <= board.field_of_view) {
       visible.emplace_back(off_axis, &board);
     }
@@ -50,8 +49,10 @@ ObservationSet idealObservations(const Layout& layout, const Eigen::Vector3d& p,
 
 void addGaussianNoise(ObservationSet& observations, std::mt19937_64& rng) {
   std::normal_distribution<double> normal(0.0, 1.0);
-  for (auto& z : observations.ranges) z.range += z.sigma * normal(rng);
-  for (auto& z : observations.tdoas) z.difference += z.sigma * normal(rng);
+  for (auto& z : observations.ranges)
+    z.range += z.sigma * normal(rng);
+  for (auto& z : observations.tdoas)
+    z.difference += z.sigma * normal(rng);
   for (auto& z : observations.bearings) {
     z.azimuth = wrapAngleFast(z.azimuth + z.sigma_azimuth * normal(rng));
     z.elevation += z.sigma_elevation * normal(rng);

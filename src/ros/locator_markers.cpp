@@ -62,9 +62,9 @@ visualization_msgs::MarkerArray locatorMarkers(const Layout& layout, const Locat
       m.scale.x = 0.02;
       for (int i = 0; i <= kCirclePoints; ++i) {
         const double a = 2.0 * kPi * i / kCirclePoints;
-        m.points.push_back(point(Eigen::Vector3d(module.position.x() + radius * std::cos(a),
-                                                 module.position.y() + radius * std::sin(a),
-                                                 config.height)));
+        m.points.push_back(
+            point(Eigen::Vector3d(module.position.x() + radius * std::cos(a),
+                                  module.position.y() + radius * std::sin(a), config.height)));
       }
       color(m, 0.1f, 0.5f, 1.0f, 0.8f);
       array.markers.push_back(m);
@@ -77,9 +77,9 @@ visualization_msgs::MarkerArray locatorMarkers(const Layout& layout, const Locat
     }
   }
 
-  const double arrow_length =
-      estimate.status == TargetStatus::kLost ? config.default_range
-                                             : std::max(0.5, estimate.position.head<2>().norm());
+  const double arrow_length = estimate.status == TargetStatus::kLost
+                                  ? config.default_range
+                                  : std::max(0.5, estimate.position.head<2>().norm());
   for (std::size_t k = 0; k < estimate.bearings_fresh.size(); ++k) {
     const std::size_t index = estimate.bearings_fresh[k];
     const AoaBoard& board = layout.aoa_boards[index];
@@ -89,8 +89,8 @@ visualization_msgs::MarkerArray locatorMarkers(const Layout& layout, const Locat
     z.azimuth = estimate.bearing_angles[k](0);
     z.elevation = estimate.bearing_angles[k](1);
     z.use_elevation = config.use_elevation;
-    auto m = marker(layout, "bearings", static_cast<int>(k), visualization_msgs::Marker::ARROW,
-                    stamp);
+    auto m =
+        marker(layout, "bearings", static_cast<int>(k), visualization_msgs::Marker::ARROW, stamp);
     m.points.push_back(point(board.position));
     m.points.push_back(point(board.position + arrow_length * bearingDirection(z)));
     m.scale.x = 0.03;

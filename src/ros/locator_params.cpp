@@ -64,8 +64,8 @@ void LocatorNode::Params::load(const ros::NodeHandle& nh) {
   nh.param("motion_model", model, model);
   require(model == "constant_position" || model == "constant_velocity", "~motion_model", model,
           "constant_position or constant_velocity");
-  c.motion_model =
-      model == "constant_velocity" ? MotionModel::kConstantVelocity : MotionModel::kConstantPosition;
+  c.motion_model = model == "constant_velocity" ? MotionModel::kConstantVelocity
+                                                : MotionModel::kConstantPosition;
   nh.param("process_noise", c.process_noise, c.process_noise);
   std::string r_source = c.filter_uses_solver_covariance ? "solver" : "fixed";
   nh.param("measurement_covariance", r_source, r_source);

@@ -40,12 +40,13 @@ struct Options {
   bool outliers = true;
 };
 
-constexpr double kHeight = 1.0;        // target plane (2D mode), m
-constexpr double kRangeSigma = 0.03;   // m
-constexpr double kWellPosed = 0.1;     // sqrt(tr CRLB) / distance below this: well posed
+constexpr double kHeight = 1.0;       // target plane (2D mode), m
+constexpr double kRangeSigma = 0.03;  // m
+constexpr double kWellPosed = 0.1;    // sqrt(tr CRLB) / distance below this: well posed
 
 double percentile(std::vector<double> v, double q) {
-  if (v.empty()) return std::nan("");
+  if (v.empty())
+    return std::nan("");
   std::sort(v.begin(), v.end());
   const std::size_t i = std::min(v.size() - 1, static_cast<std::size_t>(q * (v.size() - 1) + 0.5));
   return v[i];
@@ -105,8 +106,8 @@ void accuracyTable(const Options& opt, const std::vector<Case>& cases) {
     std::vector<double> radius_crlb(11, 0.0);
     const auto points = grid();
     for (const auto& truth : points) {
-      const rf::ObservationSet ideal = rf::idealObservations(layout, truth, noiseFor(c),
-                                                             c.max_bearings);
+      const rf::ObservationSet ideal =
+          rf::idealObservations(layout, truth, noiseFor(c), c.max_bearings);
       const auto crlb = rf::positionCrlb(rf::fisherInformation(ideal, truth), true);
       double se = 0.0;
       int n = 0;
@@ -115,9 +116,9 @@ void accuracyTable(const Options& opt, const std::vector<Case>& cases) {
         rf::addGaussianNoise(obs, rng);
         const auto start = std::chrono::steady_clock::now();
         const rf::SolveResult r = coldSolve(solver, obs, init);
-        micros.push_back(std::chrono::duration<double, std::micro>(
-                             std::chrono::steady_clock::now() - start)
-                             .count());
+        micros.push_back(
+            std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start)
+                .count());
         if (!r.success) {
           ++failures;
           continue;
@@ -125,7 +126,8 @@ void accuracyTable(const Options& opt, const std::vector<Case>& cases) {
         se += (r.position - truth).squaredNorm();
         ++n;
       }
-      if (!crlb || n == 0) continue;
+      if (!crlb || n == 0)
+        continue;
       const double mse = se / n;
       const double bound = crlb->trace();
       const double ratio = std::sqrt(mse / bound);
@@ -144,35 +146,42 @@ void accuracyTable(const Options& opt, const std::vector<Case>& cases) {
     for (int r = 1; r <= 10; ++r) {
       by_radius[ci].push_back(std::sqrt(radius_mse[r] / radius_crlb[r]));
     }
-    std::printf("| %s | %s | %d | %d/%zu | %.3f | %.3f | %.3f | %.4f, %.4f | %s | %d | %.1f / %.1f |\n",
-                c.layout.c_str(),
-                c.azimuth_deg > 0 ? (std::to_string(static_cast<int>(c.azimuth_deg)) + " deg").c_str()
-                                  : "-",
-                c.max_bearings, well, points.size(), percentile(ratios, 0.5),
-                percentile(ratios, 0.9), percentile(ratios, 1.0),
-                std::sqrt(mse_pool / std::max(1, well)), std::sqrt(crlb_pool / std::max(1, well)),
-                ill.empty() ? "-" : std::to_string(percentile(ill, 0.5)).substr(0, 5).c_str(),
-                failures, percentile(micros, 0.5), percentile(micros, 0.99));
+    std::printf(
+        "| %s | %s | %d | %d/%zu | %.3f | %.3f | %.3f | %.4f, %.4f | %s | %d | %.1f / %.1f |\n",
+        c.layout.c_str(),
+        c.azimuth_deg > 0 ? (std::to_string(static_cast<int>(c.azimuth_deg)) + " deg").c_str()
+                          : "-",
+        c.max_bearings, well, points.size(), percentile(ratios, 0.5), percentile(ratios, 0.9),
+        percentile(ratios, 1.0), std::sqrt(mse_pool / std::max(1, well)),
+        std::sqrt(crlb_pool / std::max(1, well)),
+        ill.empty() ? "-" : std::to_string(percentile(ill, 0.5)).substr(0, 5).c_str(), failures,
+        percentile(micros, 0.5), percentile(micros, 0.99));
   }
-  std::printf("\nRMSE / sqrt(trace CRLB) by distance (pooled over the 12 directions):\n\n"
-              "| layout | az sigma | bearings |");
-  for (int r = 1; r <= 10; ++r) std::printf(" %d m |", r);
+  std::printf(
+      "\nRMSE / sqrt(trace CRLB) by distance (pooled over the 12 directions):\n\n"
+      "| layout | az sigma | bearings |");
+  for (int r = 1; r <= 10; ++r)
+    std::printf(" %d m |", r);
   std::printf("\n|---|---|---|");
-  for (int r = 1; r <= 10; ++r) std::printf("---|");
+  for (int r = 1; r <= 10; ++r)
+    std::printf("---|");
   std::printf("\n");
   for (std::size_t ci = 0; ci < cases.size(); ++ci) {
     std::printf("| %s | %.0f | %d |", cases[ci].layout.c_str(), cases[ci].azimuth_deg,
                 cases[ci].max_bearings);
-    for (double v : by_radius[ci]) std::printf(" %.2f |", v);
+    for (double v : by_radius[ci])
+      std::printf(" %.2f |", v);
     std::printf("\n");
   }
 }
 
 // One range reads +2 m (blocked direct path) in 10 % of epochs.
 void outlierTable(const Options& opt, const std::vector<Case>& cases) {
-  std::printf("\nNLOS outlier test: one range +2 m in 10 %% of epochs; RMSE (m) over the grid, "
-              "tracking (warm start from the last epoch), bearing loss = range loss:\n\n| layout | az sigma | bearings | loss | clean | with "
-              "outliers | ratio |\n|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "\nNLOS outlier test: one range +2 m in 10 %% of epochs; RMSE (m) over the grid, "
+      "tracking (warm start from the last epoch), bearing loss = range loss:\n\n| layout | az "
+      "sigma | bearings | loss | clean | with "
+      "outliers | ratio |\n|---|---|---|---|---|---|---|\n");
   const std::vector<rf::LossConfig> losses{{rf::LossType::kNone, 1.0},
                                            {rf::LossType::kHuber, 2.0},
                                            {rf::LossType::kSoftL1, 1.0},
@@ -201,10 +210,12 @@ void outlierTable(const Options& opt, const std::vector<Case>& cases) {
             rf::addGaussianNoise(obs, rng);
             const double u = unit(rng);
             const auto which = static_cast<std::size_t>(unit(rng) * obs.ranges.size());
-            if (pass == 1 && u < 0.1 && warm) obs.ranges[which].range += 2.0;
+            if (pass == 1 && u < 0.1 && warm)
+              obs.ranges[which].range += 2.0;
             rf::InitializerConfig init;
             init.height = kHeight;
-            const rf::SolveResult r = warm ? solver.solve(obs, *warm) : coldSolve(solver, obs, init);
+            const rf::SolveResult r =
+                warm ? solver.solve(obs, *warm) : coldSolve(solver, obs, init);
             if (r.success) {
               warm = r.position;
               se[pass] += (r.position - truth).squaredNorm();
@@ -216,8 +227,8 @@ void outlierTable(const Options& opt, const std::vector<Case>& cases) {
       const double clean = std::sqrt(se[0] / n[0]);
       const double dirty = std::sqrt(se[1] / n[1]);
       std::printf("| %s | %.0f | %d | %s %.0f | %.3f | %.3f | %.2f |\n", c.layout.c_str(),
-                  c.azimuth_deg, c.max_bearings, rf::toString(loss.type).c_str(), loss.scale,
-                  clean, dirty, dirty / clean);
+                  c.azimuth_deg, c.max_bearings, rf::toString(loss.type).c_str(), loss.scale, clean,
+                  dirty, dirty / clean);
     }
   }
 }
@@ -246,8 +257,10 @@ int main(int argc, char** argv) {
     } else if (key == "--outliers") {
       opt.outliers = std::string(argv[i + 1]) != "0";
     } else {
-      std::fprintf(stderr, "usage: %s [--trials N] [--seed S] [--layouts DIR] [--range-loss "
-                   "none|huber|soft_l1|cauchy] [--range-loss-scale S] [--outliers 0|1]\n", argv[0]);
+      std::fprintf(stderr,
+                   "usage: %s [--trials N] [--seed S] [--layouts DIR] [--range-loss "
+                   "none|huber|soft_l1|cauchy] [--range-loss-scale S] [--outliers 0|1]\n",
+                   argv[0]);
       return 2;
     }
   }
@@ -256,11 +269,12 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    std::printf("Target on the plane z = %.1f m (2D mode), range sigma %.2f m, elevation sigma = "
-                "azimuth sigma, %d trials per grid point (1-10 m x 12 directions), range "
-                "loss %s %.1f, bearing loss huber 2, cold start (trilateration or multi-start).\n\n",
-                kHeight, kRangeSigma, opt.trials, rf::toString(opt.range_loss.type).c_str(),
-                opt.range_loss.scale);
+    std::printf(
+        "Target on the plane z = %.1f m (2D mode), range sigma %.2f m, elevation sigma = "
+        "azimuth sigma, %d trials per grid point (1-10 m x 12 directions), range "
+        "loss %s %.1f, bearing loss huber 2, cold start (trilateration or multi-start).\n\n",
+        kHeight, kRangeSigma, opt.trials, rf::toString(opt.range_loss.type).c_str(),
+        opt.range_loss.scale);
     accuracyTable(opt, {{"spot_twr", 0, 0},
                         {"tracked", 0, 0},
                         {"cube", 2, 1},
@@ -269,7 +283,8 @@ int main(int argc, char** argv) {
                         {"spot", 2, 1},
                         {"spot", 5, 1},
                         {"spot", 5, 2}});
-    if (opt.outliers) outlierTable(opt, {{"tracked", 0, 0}, {"spot", 2, 1}, {"spot_twr", 0, 0}});
+    if (opt.outliers)
+      outlierTable(opt, {{"tracked", 0, 0}, {"spot", 2, 1}, {"spot_twr", 0, 0}});
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 1;

@@ -67,7 +67,7 @@ void playDrivers() {
     b.header.frame_id = "aoa_back";
     b.azimuth = 0.6;  // would pull the estimate to the robot's rear left
     b.elevation = 0.1;
-    b.rssi = -52.0;   // and it is the louder one
+    b.rssi = -52.0;  // and it is the louder one
     back.publish(b);
     rate.sleep();
   }
@@ -98,8 +98,8 @@ TEST(Locator, EstimatesTheTargetAndIgnoresTheBoardBehind) {
   EXPECT_NEAR(msg->position.z, kTruth.z(), 1e-9);
   EXPECT_NEAR(msg->range, kTruth.head<2>().norm(), 0.02);
   EXPECT_NEAR(msg->bearing, std::atan2(kTruth.y(), kTruth.x()), 0.01);
-  EXPECT_EQ(msg->sources, radio_follow::TargetEstimate::SOURCE_TWR |
-                              radio_follow::TargetEstimate::SOURCE_AOA);
+  EXPECT_EQ(msg->sources,
+            radio_follow::TargetEstimate::SOURCE_TWR | radio_follow::TargetEstimate::SOURCE_AOA);
   EXPECT_GT(msg->position_covariance[0], 0.0);
 }
 
@@ -123,16 +123,18 @@ TEST(Locator, PublishesPoseAndTf) {
 
 TEST(Locator, DrawsRangesBearingsAndTheEstimate) {
   ros::NodeHandle nh;
-  const auto markers =
-      ros::topic::waitForMessage<visualization_msgs::MarkerArray>("markers", nh, ros::Duration(5.0));
+  const auto markers = ros::topic::waitForMessage<visualization_msgs::MarkerArray>(
+      "markers", nh, ros::Duration(5.0));
   ASSERT_TRUE(markers);
   int circles = 0;
   int used_arrows = 0;
   int ignored_arrows = 0;
   int estimates = 0;
   for (const auto& m : markers->markers) {
-    if (m.ns == "ranges") circles += m.type == visualization_msgs::Marker::LINE_STRIP;
-    if (m.ns == "bearings") (m.color.g > 0.8f ? used_arrows : ignored_arrows)++;
+    if (m.ns == "ranges")
+      circles += m.type == visualization_msgs::Marker::LINE_STRIP;
+    if (m.ns == "bearings")
+      (m.color.g > 0.8f ? used_arrows : ignored_arrows)++;
     if (m.ns == "estimate") {
       ++estimates;
       EXPECT_NEAR(m.pose.position.x, kTruth.x(), 0.05);

@@ -125,10 +125,10 @@ struct BearingFunctor {
       }
     }
     residual[0] = wrapAngle(atan2(v[1], v[0]) - T(z_.azimuth)) / T(z_.sigma_azimuth);
-    residual[1] = z_.use_elevation ? wrapAngle(atan2(v[2], sqrt(v[0] * v[0] + v[1] * v[1])) -
-                                               T(z_.elevation)) /
-                                         T(z_.sigma_elevation)
-                                   : T(0.0);
+    residual[1] = z_.use_elevation
+                      ? wrapAngle(atan2(v[2], sqrt(v[0] * v[0] + v[1] * v[1])) - T(z_.elevation)) /
+                            T(z_.sigma_elevation)
+                      : T(0.0);
     return true;
   }
   BearingObservation z_;

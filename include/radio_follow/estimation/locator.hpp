@@ -25,23 +25,23 @@ constexpr std::uint8_t kSourceAoa = 4;
 
 /// The locator's tuning (the sensor positions come from the Layout).
 struct LocatorConfig {
-  bool planar = true;        ///< 2D mode: target on the plane z = height
-  double height = 1.0;       ///< m
-  double range_sigma = 0.03;                   ///< m
-  double tdoa_sigma = 0.1;                     ///< m, when a difference has no variance
-  double azimuth_sigma = deg2rad(5.0);         ///< rad
-  double elevation_sigma = deg2rad(10.0);      ///< rad
+  bool planar = true;                      ///< 2D mode: target on the plane z = height
+  double height = 1.0;                     ///< m
+  double range_sigma = 0.03;               ///< m
+  double tdoa_sigma = 0.1;                 ///< m, when a difference has no variance
+  double azimuth_sigma = deg2rad(5.0);     ///< rad
+  double elevation_sigma = deg2rad(10.0);  ///< rad
   bool use_elevation = true;
   LossConfig range_loss{LossType::kCauchy, 2.0};
   LossConfig tdoa_loss{LossType::kCauchy, 2.0};
   LossConfig bearing_loss{LossType::kHuber, 2.0};
-  double max_age = 0.5;                        ///< s; older measurements are dropped
+  double max_age = 0.5;  ///< s; older measurements are dropped
   AoaSelectorConfig aoa;
   MotionModel motion_model = MotionModel::kConstantPosition;
-  double process_noise = 1.0;                  ///< see KalmanConfig
+  double process_noise = 1.0;  ///< see KalmanConfig
   /// true: R = the solver's covariance; false: R = measurement_noise * I (thesis: 50).
   bool filter_uses_solver_covariance = false;
-  double measurement_noise = 50.0;             ///< m^2
+  double measurement_noise = 50.0;  ///< m^2
   double gate_probability = 0.999;
   int max_consecutive_rejections = 5;
   bool ceres_covariance = false;

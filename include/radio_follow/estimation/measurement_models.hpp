@@ -30,8 +30,8 @@ struct BearingObservation {
   Eigen::Vector3d board = Eigen::Vector3d::Zero();  ///< board position, fixed frame, m
   /// Rotation board -> fixed frame (columns are the board axes in the fixed frame).
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
-  double azimuth = 0.0;       ///< rad, CCW about board z, 0 = boresight
-  double elevation = 0.0;     ///< rad, towards board +z
+  double azimuth = 0.0;    ///< rad, CCW about board z, 0 = boresight
+  double elevation = 0.0;  ///< rad, towards board +z
   double sigma_azimuth = 0.035;
   double sigma_elevation = 0.087;
   bool use_elevation = true;  ///< false: the elevation residual is always zero

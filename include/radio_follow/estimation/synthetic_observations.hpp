@@ -11,9 +11,9 @@ namespace radio_follow {
 
 /// Noise levels of synthetic measurements (Monte Carlo, benchmarks, tests).
 struct SyntheticNoise {
-  double range_sigma = 0.03;          ///< m
-  double azimuth_sigma = 0.035;       ///< rad
-  double elevation_sigma = 0.035;     ///< rad
+  double range_sigma = 0.03;       ///< m
+  double azimuth_sigma = 0.035;    ///< rad
+  double elevation_sigma = 0.035;  ///< rad
   bool use_elevation = true;
 };
 

@@ -24,14 +24,14 @@ namespace radio_follow {
 class LocatorNode {
  public:
   struct Params {
-    std::string layout_file;                    ///< required
+    std::string layout_file;  ///< required
     std::vector<std::string> uwb_topics{"uwb/ranges"};
     std::vector<std::string> aoa_topics;
     std::vector<std::string> tdoa_topics;
-    double rate = 20.0;                         ///< solves per second, Hz
-    std::string target_frame = "target";        ///< child frame of the published TF
+    double rate = 20.0;                   ///< solves per second, Hz
+    std::string target_frame = "target";  ///< child frame of the published TF
     bool publish_tf = true;
-    LocatorConfig locator;                      ///< the core's tuning
+    LocatorConfig locator;  ///< the core's tuning
 
     /// Reads every parameter from the private node handle (names in doc/nodes/locator.md).
     void load(const ros::NodeHandle& private_nh);

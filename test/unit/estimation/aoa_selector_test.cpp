@@ -42,8 +42,10 @@ TEST(AoaSelector, RssiModeUsesMeanMinusTwoStdAndMajority) {
   AoaSelector selector(4, config);
   auto boards = cube();
   // Board 0: steady -60 dBm; board 1: higher mean but noisy -> lower score.
-  for (double v : {-60.0, -60.0, -60.0, -60.0}) selector.recordRssi(0, v);
-  for (double v : {-45.0, -65.0, -45.0, -65.0}) selector.recordRssi(1, v);
+  for (double v : {-60.0, -60.0, -60.0, -60.0})
+    selector.recordRssi(0, v);
+  for (double v : {-45.0, -65.0, -45.0, -65.0})
+    selector.recordRssi(1, v);
   EXPECT_NEAR(selector.score(0), -60.0, 1e-12);
   EXPECT_NEAR(selector.score(1), -75.0, 1e-12);
   std::vector<AoaCandidate> fresh{boards[0], boards[1]};
@@ -51,7 +53,8 @@ TEST(AoaSelector, RssiModeUsesMeanMinusTwoStdAndMajority) {
     EXPECT_EQ(selector.select(fresh, std::nullopt), std::vector<std::size_t>{0});
   }
   // Board 1 becomes best once; the majority of the last three selections keeps board 0.
-  for (double v : {-50.0, -50.0, -50.0, -50.0}) selector.recordRssi(1, v);
+  for (double v : {-50.0, -50.0, -50.0, -50.0})
+    selector.recordRssi(1, v);
   EXPECT_EQ(selector.select(fresh, std::nullopt), std::vector<std::size_t>{0});
   EXPECT_EQ(selector.select(fresh, std::nullopt), std::vector<std::size_t>{1});
 }

@@ -38,7 +38,7 @@ TEST(Trilateration, ThreeDimensionsNeedsFourNonCoplanarModules) {
   std::vector<RangeObservation> ranges;
   const Eigen::Vector3d truth(2.0, -3.0, 1.5);
   for (const Eigen::Vector3d& m : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0.5, 0, 0),
-                                  Eigen::Vector3d(0, 0.5, 0), Eigen::Vector3d(0, 0, 0.5)}) {
+                                   Eigen::Vector3d(0, 0.5, 0), Eigen::Vector3d(0, 0, 0.5)}) {
     RangeObservation z;
     z.module = m;
     z.range = (truth - m).norm();

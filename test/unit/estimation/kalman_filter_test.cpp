@@ -81,8 +81,7 @@ TEST(KalmanFilter, GatesOutliersThenResetsAfterRepeatedRejections) {
 TEST(KalmanFilter, RejectsInvalidMeasurementsAndCountsThem) {
   KalmanFilter filter(KalmanConfig{});
   Eigen::MatrixXd r = Eigen::MatrixXd::Identity(2, 2);
-  EXPECT_EQ(filter.correct(Eigen::Vector2d(std::nan(""), 0.0), r, 0.0),
-            CorrectionResult::kInvalid);
+  EXPECT_EQ(filter.correct(Eigen::Vector2d(std::nan(""), 0.0), r, 0.0), CorrectionResult::kInvalid);
   r(0, 0) = -1.0;
   EXPECT_EQ(filter.correct(Eigen::Vector2d(0.0, 0.0), r, 0.0), CorrectionResult::kInvalid);
   EXPECT_EQ(filter.invalidCount(), 2u);

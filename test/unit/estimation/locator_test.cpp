@@ -18,8 +18,8 @@ void feedRanges(Locator& locator, const Eigen::Vector3d& truth, double t) {
   }
 }
 
-void feedBearing(Locator& locator, const AoaBoard& board, const Eigen::Vector3d& from,
-                 double rssi, double t) {
+void feedBearing(Locator& locator, const AoaBoard& board, const Eigen::Vector3d& from, double rssi,
+                 double t) {
   const Eigen::Vector2d ae =
       predictBearing(from, board.position, board.orientation.toRotationMatrix());
   ASSERT_TRUE(locator.addBearing(board.id, ae(0), ae(1), rssi, t));
@@ -142,10 +142,10 @@ TEST(Locator, TwoRangesNeedAWarmStart) {
   feedRanges(locator, truth, 0.0);
   ASSERT_EQ(locator.update(0.0).status, TargetStatus::kOk);
   // Two modules stop: two ranges keep tracking, flagged DEGRADED (mirror ambiguity).
-  ASSERT_TRUE(locator.addRange("1A01", (truth - locator.layout().twr_modules[0].position).norm(),
-                               0.4));
-  ASSERT_TRUE(locator.addRange("1A02", (truth - locator.layout().twr_modules[1].position).norm(),
-                               0.4));
+  ASSERT_TRUE(
+      locator.addRange("1A01", (truth - locator.layout().twr_modules[0].position).norm(), 0.4));
+  ASSERT_TRUE(
+      locator.addRange("1A02", (truth - locator.layout().twr_modules[1].position).norm(), 0.4));
   const LocatorEstimate e = locator.update(0.55);
   EXPECT_EQ(e.status, TargetStatus::kDegraded);
   EXPECT_LT((e.position - truth).norm(), 1e-3);

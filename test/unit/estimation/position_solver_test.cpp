@@ -91,8 +91,8 @@ TEST(PositionSolver, BearingOnlyKeepsTheDirection) {
   ASSERT_TRUE(r.success);
   const double bearing = std::atan2(r.position.y() - obs.bearings[0].board.y(),
                                     r.position.x() - obs.bearings[0].board.x());
-  const double truth_bearing = std::atan2(truth.y() - obs.bearings[0].board.y(),
-                                          truth.x() - obs.bearings[0].board.x());
+  const double truth_bearing =
+      std::atan2(truth.y() - obs.bearings[0].board.y(), truth.x() - obs.bearings[0].board.x());
   EXPECT_NEAR(bearing, truth_bearing, 1e-3);
 }
 
