@@ -1,0 +1,117 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Latency of one fused locator solve per sensor layout (warm start, as in steady tracking)
+// and of a whole Locator::update (buffer, board selection, solve, filter).
+// Each benchmark also times every solve and reports its median and 99th percentile
+// (counters p50_us, p99_us): the mean alone hides the tail.
+//
+//   .ws/devel/lib/radio_follow/bench_locator_solve
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "radio_follow/common/angles.hpp"
+#include "radio_follow/estimation/locator.hpp"
+#include "radio_follow/estimation/position_solver.hpp"
+#include "radio_follow/estimation/synthetic_observations.hpp"
+
+namespace rf = radio_follow;
+
+namespace {
+
+struct Epoch {
+  rf::ObservationSet obs;
+  Eigen::Vector3d truth;
+  Eigen::Vector3d warm;
+};
+
+std::vector<Epoch> epochs(const std::string& layout_name, int max_bearings) {
+  const rf::Layout layout =
+      rf::loadLayoutFile(std::string(RF_CONFIG_DIR) + "/layouts/" + layout_name + ".yaml");
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> dist(1.0, 10.0);
+  std::uniform_real_distribution<double> angle(-rf::kPi, rf::kPi);
+  std::normal_distribution<double> step(0.0, 0.05);  // target motion between epochs
+  rf::SyntheticNoise noise;
+  noise.azimuth_sigma = noise.elevation_sigma = rf::deg2rad(5.0);
+  std::vector<Epoch> out;
+  for (int i = 0; i < 256; ++i) {
+    const double r = dist(rng);
+    const double a = angle(rng);
+    Epoch e;
+    e.truth = Eigen::Vector3d(r * std::cos(a), r * std::sin(a), 1.0);
+    e.obs = rf::idealObservations(layout, e.truth, noise, max_bearings);
+    rf::addGaussianNoise(e.obs, rng);
+    e.warm = e.truth + Eigen::Vector3d(step(rng), step(rng), 0.0);
+    out.push_back(e);
+  }
+  return out;
+}
+
+void reportPercentiles(benchmark::State& state, std::vector<double>& micros) {
+  std::sort(micros.begin(), micros.end());
+  state.counters["p50_us"] = micros[micros.size() / 2];
+  state.counters["p99_us"] = micros[static_cast<std::size_t>(0.99 * (micros.size() - 1))];
+}
+
+void solve(benchmark::State& state, const std::string& layout, int max_bearings) {
+  const std::vector<Epoch> data = epochs(layout, max_bearings);
+  const rf::PositionSolver solver{rf::SolverConfig{}};
+  std::vector<double> micros;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Epoch& e = data[i++ % data.size()];
+    const auto start = std::chrono::steady_clock::now();
+    rf::SolveResult r = solver.solve(e.obs, e.warm);
+    micros.push_back(
+        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start)
+            .count());
+    benchmark::DoNotOptimize(r);
+  }
+  reportPercentiles(state, micros);
+}
+
+// The node's whole per-epoch work for the Spot layout: fresh ranges and bearings from all
+// four boards (the one behind the robot included), selection, warm solve, filter.
+void locatorUpdate(benchmark::State& state) {
+  const rf::Layout layout = rf::loadLayoutFile(std::string(RF_CONFIG_DIR) + "/layouts/spot.yaml");
+  rf::LocatorConfig config;
+  rf::Locator locator(layout, config);
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  double t = 0.0;
+  std::vector<double> micros;
+  for (auto _ : state) {
+    t += 0.05;
+    const Eigen::Vector3d truth(4.0 * std::cos(0.1 * t), 4.0 * std::sin(0.1 * t), 1.0);
+    for (const auto& m : layout.twr_modules) {
+      locator.addRange(m.id, (truth - m.position).norm() + 0.03 * noise(rng), t);
+    }
+    for (const auto& b : layout.aoa_boards) {
+      const Eigen::Vector2d ae =
+          rf::predictBearing(truth, b.position, b.orientation.toRotationMatrix());
+      locator.addBearing(b.id, ae(0) + 0.08 * noise(rng), ae(1) + 0.08 * noise(rng), -60.0, t);
+    }
+    const auto start = std::chrono::steady_clock::now();
+    rf::LocatorEstimate e = locator.update(t);
+    micros.push_back(
+        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start)
+            .count());
+    benchmark::DoNotOptimize(e);
+  }
+  reportPercentiles(state, micros);
+}
+
+}  // namespace
+
+BENCHMARK_CAPTURE(solve, spot_twr, std::string("spot_twr"), 0)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(solve, tracked, std::string("tracked"), 0)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(solve, cube_1_bearing, std::string("cube"), 1)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(solve, spot_1_bearing, std::string("spot"), 1)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(solve, spot_all_in_fov, std::string("spot"), 4)->Unit(benchmark::kMicrosecond);
+BENCHMARK(locatorUpdate)->Unit(benchmark::kMicrosecond);
+
+BENCHMARK_MAIN();

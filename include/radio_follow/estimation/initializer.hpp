@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <vector>
+
+#include "radio_follow/estimation/measurement_models.hpp"
+
+namespace radio_follow {
+
+/// Where the target may be when nothing is known yet.
+struct InitializerConfig {
+  /// 2D mode: the target lies on the plane z = height.
+  bool planar = true;
+  double height = 1.0;
+  /// Points on the circle of one range in the multi-start (the thesis used a ring too).
+  int circle_points = 8;
+  /// Distance assumed along a bearing, or around the robot, when no range exists, m.
+  double default_range = 3.0;
+};
+
+/// Closed-form linear least-squares trilateration (seed 002 eqs 2-8): subtracting the first
+/// squared-range equation from the others leaves a linear system in the position. In 2D
+/// mode the known height moves into the right-hand side. Needs three modules not on one
+/// line (2D) or four not on one plane (3D); returns nullopt for fewer or degenerate ones.
+std::optional<Eigen::Vector3d> trilaterate(const std::vector<RangeObservation>& ranges,
+                                           const InitializerConfig& config);
+
+/// Starting points for a multi-start solve when trilateration is impossible: the circle of
+/// the first range around its module, plus the point at that range along every bearing
+/// (the bearing usually wins, the circle covers a wrong bearing). Without ranges, points
+/// at default_range along the bearings and on a circle around the origin (TDoA only).
+std::vector<Eigen::Vector3d> multiStartCandidates(const ObservationSet& observations,
+                                                  const InitializerConfig& config);
+
+/// Unit direction of a bearing in the fixed frame.
+Eigen::Vector3d bearingDirection(const BearingObservation& bearing);
+
+}  // namespace radio_follow

@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <Eigen/Core>
+#include <cstddef>
+
+namespace radio_follow {
+
+enum class MotionModel {
+  /// The thesis's model: x_k = x_{k-1} + w, Q = process_noise * I per epoch (m^2).
+  kConstantPosition,
+  /// Position and velocity with white acceleration noise of spectral density
+  /// process_noise (m^2/s^3), discretised over the actual time step.
+  kConstantVelocity,
+};
+
+struct KalmanConfig {
+  MotionModel model = MotionModel::kConstantPosition;
+  /// 2 (2D mode: x, y) or 3 (x, y, z) position dimensions.
+  int dims = 2;
+  double process_noise = 1.0;
+  /// Initial velocity variance of the constant-velocity model, (m/s)^2.
+  double initial_velocity_variance = 1.0;
+  /// Probability mass of the chi-square gate (dimension = dims); <= 0 disables gating.
+  double gate_probability = 0.999;
+  /// After this many consecutive gated measurements the filter re-initialises from the
+  /// next one: the target has moved away from the prediction for good.
+  int max_consecutive_rejections = 5;
+};
+
+/// Outcome of one correction.
+enum class CorrectionResult { kInitialized, kAccepted, kGated, kInvalid, kReset };
+
+/// Linear Kalman filter on the solver's position output (position measurement, H = [I 0]).
+class KalmanFilter {
+ public:
+  explicit KalmanFilter(const KalmanConfig& config);
+
+  /// Moves the state to time t (seconds); no-op before the first measurement and when t
+  /// is not later than the state's time (the constant-position model adds its Q once per
+  /// epoch, as the thesis did).
+  void predict(double t);
+  /// Predicts to t, then fuses a position measurement z (dims) with covariance r
+  /// (dims x dims). NaN/Inf or a non-positive-definite r is rejected and counted, never repaired.
+  CorrectionResult correct(const Eigen::VectorXd& z, const Eigen::MatrixXd& r, double t);
+  void reset();
+
+  bool initialized() const { return initialized_; }
+  /// Position part of the state and its covariance.
+  Eigen::VectorXd position() const { return x_.head(config_.dims); }
+  Eigen::MatrixXd positionCovariance() const {
+    return p_.topLeftCorner(config_.dims, config_.dims);
+  }
+  /// Zero for the constant-position model.
+  Eigen::VectorXd velocity() const;
+  const Eigen::VectorXd& state() const { return x_; }
+  const Eigen::MatrixXd& covariance() const { return p_; }
+
+  std::size_t gatedCount() const { return gated_; }
+  std::size_t invalidCount() const { return invalid_; }
+  std::size_t resetCount() const { return resets_; }
+  /// Mahalanobis gate threshold (squared distance) in use.
+  double gateThreshold() const { return gate_; }
+
+ private:
+  void initialize(const Eigen::VectorXd& z, const Eigen::MatrixXd& r, double t);
+
+  KalmanConfig config_;
+  int n_;
+  double gate_;
+  bool initialized_ = false;
+  double t_ = 0.0;
+  Eigen::VectorXd x_;
+  Eigen::MatrixXd p_;
+  int consecutive_gated_ = 0;
+  std::size_t gated_ = 0;
+  std::size_t invalid_ = 0;
+  std::size_t resets_ = 0;
+};
+
+/// Quantile of the chi-square distribution with 1, 2 or 3 degrees of freedom (closed-form
+/// CDFs, bisection); throws std::invalid_argument for other dof or p outside (0, 1).
+double chiSquareQuantile(double probability, int dof);
+
+}  // namespace radio_follow

@@ -1,0 +1,149 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "radio_follow/config/layout.hpp"
+#include "radio_follow/estimation/aoa_selector.hpp"
+#include "radio_follow/estimation/initializer.hpp"
+#include "radio_follow/estimation/kalman_filter.hpp"
+#include "radio_follow/estimation/position_solver.hpp"
+
+namespace radio_follow {
+
+/// Same values as TargetEstimate.STATUS_*.
+enum class TargetStatus : std::uint8_t { kOk = 0, kHeadingOnly = 1, kDegraded = 2, kLost = 3 };
+/// Same bits as TargetEstimate.SOURCE_*.
+constexpr std::uint8_t kSourceTwr = 1;
+constexpr std::uint8_t kSourceTdoa = 2;
+constexpr std::uint8_t kSourceAoa = 4;
+
+/// The locator's tuning (the sensor positions come from the Layout).
+struct LocatorConfig {
+  bool planar = true;                      ///< 2D mode: target on the plane z = height
+  double height = 1.0;                     ///< m
+  double range_sigma = 0.03;               ///< m
+  double tdoa_sigma = 0.1;                 ///< m, when a difference has no variance
+  double azimuth_sigma = deg2rad(5.0);     ///< rad
+  double elevation_sigma = deg2rad(10.0);  ///< rad
+  bool use_elevation = true;
+  LossConfig range_loss{LossType::kCauchy, 2.0};
+  LossConfig tdoa_loss{LossType::kCauchy, 2.0};
+  LossConfig bearing_loss{LossType::kHuber, 2.0};
+  double max_age = 0.5;  ///< s; older measurements are dropped
+  AoaSelectorConfig aoa;
+  MotionModel motion_model = MotionModel::kConstantPosition;
+  double process_noise = 1.0;  ///< see KalmanConfig
+  /// true: R = the solver's covariance; false: R = measurement_noise * I (thesis: 50).
+  bool filter_uses_solver_covariance = false;
+  double measurement_noise = 50.0;  ///< m^2
+  double gate_probability = 0.999;
+  int max_consecutive_rejections = 5;
+  bool ceres_covariance = false;
+  /// Largest position standard deviation (worst axis) still reported as OK, m.
+  double max_position_sigma = 0.5;
+  /// Distance assumed along a bearing when no range exists, m.
+  double default_range = 3.0;
+
+  /// Throws ParamError naming the first invalid field (names match the ROS parameters).
+  void validate() const;
+};
+
+struct LocatorEstimate {
+  TargetStatus status = TargetStatus::kLost;
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  std::uint8_t sources = 0;
+  double solver_cost = 0.0;  ///< NaN when no solve ran
+  double stamp = 0.0;        ///< time of the newest measurement used, s
+  /// What the solve used (layout indices), for markers and diagnostics.
+  std::vector<std::size_t> ranges_used;
+  std::vector<double> ranges_m;  ///< calibrated range of each entry of ranges_used, m
+  std::vector<std::size_t> bearings_fresh;
+  /// (azimuth, elevation) in the board frame of each entry of bearings_fresh, rad.
+  std::vector<Eigen::Vector2d> bearing_angles;
+  std::vector<std::size_t> bearings_used;
+};
+
+struct LocatorStats {
+  std::size_t updates = 0;
+  std::size_t solves = 0;
+  std::size_t solver_failures = 0;
+  std::size_t stale_dropped = 0;
+  std::size_t invalid_measurements = 0;
+  std::size_t bearings_rejected_fov = 0;
+  std::size_t lost = 0;
+  double last_solve_seconds = 0.0;
+};
+
+/// The target locator: keeps the newest measurement of every sensor (dropped after
+/// max_age), selects bearings, solves the position with Ceres, filters it and decides the
+/// status. Time is double seconds; no ROS.
+class Locator {
+ public:
+  Locator(const Layout& layout, const LocatorConfig& config);
+
+  /// Raw (uncalibrated) range of TWR module `module_id`; false if the module is unknown
+  /// or the range is not finite and positive.
+  bool addRange(const std::string& module_id, double raw_range, double t);
+  /// Bearing of board `board_id` (its id or frame_id) in the board frame.
+  bool addBearing(const std::string& board_id, double azimuth, double elevation, double rssi,
+                  double t);
+  /// Distance difference |p - a| - |p - b| of anchors a and b; variance <= 0 uses tdoa_sigma.
+  bool addTdoa(const std::string& anchor_a, const std::string& anchor_b, double difference,
+               double variance, double t);
+
+  /// Solves and filters with what is fresh at `now`.
+  LocatorEstimate update(double now);
+
+  const LocatorStats& stats() const { return stats_; }
+  const KalmanFilter& filter() const { return filter_; }
+  const Layout& layout() const { return layout_; }
+  const LocatorConfig& config() const { return config_; }
+
+ private:
+  struct Stamped {
+    double t = -1.0;
+    bool valid = false;
+  };
+  struct RangeSlot : Stamped {
+    double range = 0.0;
+  };
+  struct BearingSlot : Stamped {
+    double azimuth = 0.0;
+    double elevation = 0.0;
+    double rssi = 0.0;
+  };
+  struct TdoaSlot : Stamped {
+    std::size_t a = 0;
+    std::size_t b = 0;
+    double difference = 0.0;
+    double sigma = 0.0;
+  };
+
+  bool fresh(Stamped& slot, double now);
+  LocatorEstimate lose(LocatorEstimate estimate);
+
+  Layout layout_;
+  LocatorConfig config_;
+  InitializerConfig init_config_;
+  PositionSolver solver_;
+  AoaSelector selector_;
+  KalmanFilter filter_;
+  std::vector<RangeSlot> ranges_;
+  std::vector<BearingSlot> bearings_;
+  std::vector<TdoaSlot> tdoas_;
+  /// Last solver solution, and whether it had a range (a heading-only one does not
+  /// tell where along the bearing the target is, so it cannot warm-start a ranged solve).
+  std::optional<Eigen::Vector3d> warm_;
+  bool warm_ranged_ = false;
+  LocatorStats stats_;
+};
+
+}  // namespace radio_follow

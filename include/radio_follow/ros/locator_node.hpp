@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <ros/ros.h>
+#include <tf2_ros/transform_broadcaster.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "radio_follow/AoaBearing.h"
+#include "radio_follow/TargetEstimate.h"
+#include "radio_follow/TdoaMeasurements.h"
+#include "radio_follow/UwbRanges.h"
+#include "radio_follow/estimation/locator.hpp"
+
+namespace radio_follow {
+
+/// ROS wiring of the Locator: subscribes to the drivers' measurements, runs the solver at
+/// a fixed rate and publishes the target estimate, its pose, TF, markers and diagnostics.
+/// Sensor positions come from the layout file (not from TF). See doc/nodes/locator.md.
+class LocatorNode {
+ public:
+  struct Params {
+    std::string layout_file;  ///< required
+    std::vector<std::string> uwb_topics{"uwb/ranges"};
+    std::vector<std::string> aoa_topics;
+    std::vector<std::string> tdoa_topics;
+    double rate = 20.0;                   ///< solves per second, Hz
+    std::string target_frame = "target";  ///< child frame of the published TF
+    bool publish_tf = true;
+    LocatorConfig locator;  ///< the core's tuning
+
+    /// Reads every parameter from the private node handle (names in doc/nodes/locator.md).
+    void load(const ros::NodeHandle& private_nh);
+    /// Throws ParamError naming the first invalid parameter.
+    void validate() const;
+  };
+
+  LocatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh);
+
+ private:
+  void onRanges(const UwbRanges::ConstPtr& msg);
+  void onBearing(const AoaBearing::ConstPtr& msg);
+  void onTdoa(const TdoaMeasurements::ConstPtr& msg);
+  void onTimer(const ros::TimerEvent& event);
+  void publish(const LocatorEstimate& estimate, const ros::Time& now);
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
+
+  Params params_;
+  Layout layout_;
+  std::unique_ptr<Locator> locator_;
+  std::vector<ros::Subscriber> subscribers_;
+  ros::Publisher target_pub_;
+  ros::Publisher pose_pub_;
+  ros::Publisher markers_pub_;
+  tf2_ros::TransformBroadcaster tf_;
+  diagnostic_updater::Updater diagnostics_;
+  ros::Timer timer_;
+  TargetStatus last_status_ = TargetStatus::kLost;
+  std::size_t ignored_messages_ = 0;
+  double solve_seconds_sum_ = 0.0;
+  double solve_seconds_max_ = 0.0;
+  std::size_t solves_seen_ = 0;
+};
+
+/// The locator's rviz markers (pure function, unit-testable without a master): a circle
+/// (2D) or sphere (3D) per range around its module, an arrow per fresh bearing from its
+/// board (selected ones green, ignored ones grey), the estimate and its 2-sigma ellipsoid.
+visualization_msgs::MarkerArray locatorMarkers(const Layout& layout, const LocatorConfig& config,
+                                               const LocatorEstimate& estimate,
+                                               const ros::Time& stamp);
+
+/// Converts the core's estimate to the message (frame = the layout's fixed frame).
+TargetEstimate toMessage(const LocatorEstimate& estimate, const std::string& frame,
+                         const ros::Time& stamp);
+
+}  // namespace radio_follow

@@ -1,0 +1,139 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/estimation/aoa_selector.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include "radio_follow/common/param_error.hpp"
+
+namespace radio_follow {
+
+AoaSelectionMode parseAoaSelectionMode(const std::string& text, const std::string& parameter) {
+  if (text == "rssi")
+    return AoaSelectionMode::kRssi;
+  if (text == "external")
+    return AoaSelectionMode::kExternal;
+  if (text == "all_in_fov")
+    return AoaSelectionMode::kAllInFov;
+  throw ParamError(parameter, paramValueString(text), "one of rssi, external, all_in_fov");
+}
+
+std::string toString(AoaSelectionMode mode) {
+  switch (mode) {
+    case AoaSelectionMode::kRssi:
+      return "rssi";
+    case AoaSelectionMode::kExternal:
+      return "external";
+    case AoaSelectionMode::kAllInFov:
+      break;
+  }
+  return "all_in_fov";
+}
+
+bool inFieldOfView(const AoaCandidate& board, const Eigen::Vector3d& point) {
+  const Eigen::Vector3d v = point - board.position;
+  const double n = v.norm();
+  if (n < 1e-9) {
+    return false;
+  }
+  const Eigen::Vector3d boresight = board.rotation.col(0);
+  return boresight.dot(v) / n >= std::cos(board.field_of_view);
+}
+
+AoaSelector::AoaSelector(std::size_t board_count, const AoaSelectorConfig& config)
+    : config_(config), rssi_(board_count) {}
+
+void AoaSelector::recordRssi(std::size_t board, double rssi) {
+  if (board >= rssi_.size() || !std::isfinite(rssi)) {
+    return;
+  }
+  auto& window = rssi_[board];
+  window.push_back(rssi);
+  while (window.size() > config_.rssi_window) {
+    window.pop_front();
+  }
+}
+
+double AoaSelector::score(std::size_t board) const {
+  if (board >= rssi_.size() || rssi_[board].empty()) {
+    return -std::numeric_limits<double>::infinity();
+  }
+  const auto& w = rssi_[board];
+  double mean = 0.0;
+  for (double v : w)
+    mean += v;
+  mean /= static_cast<double>(w.size());
+  double var = 0.0;
+  for (double v : w)
+    var += (v - mean) * (v - mean);
+  var /= static_cast<double>(w.size());
+  return mean - 2.0 * std::sqrt(var);
+}
+
+std::size_t AoaSelector::bestByScore(const std::vector<AoaCandidate>& fresh,
+                                     const std::vector<std::size_t>& eligible) const {
+  std::size_t best = eligible.front();
+  for (std::size_t i : eligible) {
+    if (score(fresh[i].board) > score(fresh[best].board)) {
+      best = i;
+    }
+  }
+  return best;
+}
+
+std::size_t AoaSelector::majorityVote(const std::vector<AoaCandidate>& fresh,
+                                      const std::vector<std::size_t>& eligible, std::size_t best) {
+  votes_.push_back(fresh[best].board);
+  while (votes_.size() > config_.vote_window) {
+    votes_.pop_front();
+  }
+  std::map<std::size_t, int> counts;
+  for (std::size_t board : votes_)
+    ++counts[board];
+  std::size_t chosen = best;
+  int chosen_votes = counts[fresh[best].board];
+  for (std::size_t i : eligible) {
+    const int v = counts[fresh[i].board];
+    if (v > chosen_votes) {
+      chosen = i;
+      chosen_votes = v;
+    }
+  }
+  return chosen;
+}
+
+std::vector<std::size_t> AoaSelector::select(const std::vector<AoaCandidate>& fresh,
+                                             const std::optional<Eigen::Vector3d>& estimate) {
+  std::vector<std::size_t> eligible;
+  for (std::size_t i = 0; i < fresh.size(); ++i) {
+    if (!estimate || inFieldOfView(fresh[i], *estimate)) {
+      eligible.push_back(i);
+    }
+  }
+  if (eligible.empty()) {
+    return {};
+  }
+  if (!estimate) {
+    // Nothing to test the fields of view against: one board, the one the signal favours.
+    return {majorityVote(fresh, eligible, bestByScore(fresh, eligible))};
+  }
+  switch (config_.mode) {
+    case AoaSelectionMode::kRssi:
+      return {majorityVote(fresh, eligible, bestByScore(fresh, eligible))};
+    case AoaSelectionMode::kExternal: {
+      std::size_t best = eligible.front();
+      for (std::size_t i : eligible) {
+        if (fresh[i].rssi > fresh[best].rssi)
+          best = i;
+      }
+      return {best};
+    }
+    case AoaSelectionMode::kAllInFov:
+      break;
+  }
+  return eligible;
+}
+
+}  // namespace radio_follow

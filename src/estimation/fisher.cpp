@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/estimation/fisher.hpp"
+
+#include <Eigen/Eigenvalues>
+
+namespace radio_follow {
+
+Eigen::Matrix3d fisherInformation(const ObservationSet& observations, const Eigen::Vector3d& p) {
+  Eigen::Matrix3d info = Eigen::Matrix3d::Zero();
+  Eigen::RowVector3d j;
+  for (const auto& z : observations.ranges) {
+    rangeResidual(z, p, &j);
+    info += j.transpose() * j;
+  }
+  for (const auto& z : observations.tdoas) {
+    tdoaResidual(z, p, &j);
+    info += j.transpose() * j;
+  }
+  Eigen::Matrix<double, 2, 3> jb;
+  for (const auto& z : observations.bearings) {
+    bearingResidual(z, p, &jb);
+    info += jb.transpose() * jb;
+  }
+  return info;
+}
+
+std::optional<Eigen::Matrix3d> positionCrlb(const Eigen::Matrix3d& information, bool planar,
+                                            double min_rcond) {
+  Eigen::Matrix3d crlb = Eigen::Matrix3d::Zero();
+  if (planar) {
+    const Eigen::Matrix2d block = information.topLeftCorner<2, 2>();
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(block);
+    const Eigen::Vector2d ev = eig.eigenvalues();
+    if (!(ev(1) > 0.0) || ev(0) < min_rcond * ev(1)) {
+      return std::nullopt;
+    }
+    crlb.topLeftCorner<2, 2>() =
+        eig.eigenvectors() * ev.cwiseInverse().asDiagonal() * eig.eigenvectors().transpose();
+    return crlb;
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(information);
+  const Eigen::Vector3d ev = eig.eigenvalues();
+  if (!(ev(2) > 0.0) || ev(0) < min_rcond * ev(2)) {
+    return std::nullopt;
+  }
+  crlb = eig.eigenvectors() * ev.cwiseInverse().asDiagonal() * eig.eigenvectors().transpose();
+  return crlb;
+}
+
+}  // namespace radio_follow

@@ -1,0 +1,316 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/estimation/locator.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "radio_follow/common/param_error.hpp"
+
+namespace radio_follow {
+namespace {
+
+void validateLoss(const LossConfig& loss, const std::string& name) {
+  require(loss.type == LossType::kNone || (std::isfinite(loss.scale) && loss.scale > 0.0),
+          name + "_scale", loss.scale, "a positive loss scale (in sigmas)");
+}
+
+SolverConfig solverConfig(const LocatorConfig& c) {
+  SolverConfig s;
+  s.planar = c.planar;
+  s.height = c.height;
+  s.range_loss = c.range_loss;
+  s.tdoa_loss = c.tdoa_loss;
+  s.bearing_loss = c.bearing_loss;
+  s.ceres_covariance = c.ceres_covariance;
+  s.prior_range = c.default_range;
+  return s;
+}
+
+KalmanConfig kalmanConfig(const LocatorConfig& c) {
+  KalmanConfig k;
+  k.model = c.motion_model;
+  k.dims = c.planar ? 2 : 3;
+  k.process_noise = c.process_noise;
+  k.gate_probability = c.gate_probability;
+  k.max_consecutive_rejections = c.max_consecutive_rejections;
+  return k;
+}
+
+const LocatorConfig& validated(const LocatorConfig& config) {
+  config.validate();
+  return config;
+}
+
+}  // namespace
+
+void LocatorConfig::validate() const {
+  auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
+  require(std::isfinite(height) && std::abs(height) < 100.0, "target_height", height,
+          "a finite height in metres");
+  require(positive(range_sigma), "range_sigma", range_sigma, "a positive sigma in metres");
+  require(positive(tdoa_sigma), "tdoa_sigma", tdoa_sigma, "a positive sigma in metres");
+  require(positive(azimuth_sigma), "azimuth_sigma_deg", rad2deg(azimuth_sigma),
+          "a positive sigma in degrees");
+  require(positive(elevation_sigma), "elevation_sigma_deg", rad2deg(elevation_sigma),
+          "a positive sigma in degrees");
+  validateLoss(range_loss, "range_loss");
+  validateLoss(tdoa_loss, "tdoa_loss");
+  validateLoss(bearing_loss, "bearing_loss");
+  require(positive(max_age), "max_age", max_age, "a positive age in seconds");
+  require(aoa.rssi_window >= 1, "aoa_rssi_window", aoa.rssi_window, "at least 1");
+  require(aoa.vote_window >= 1, "aoa_vote_window", aoa.vote_window, "at least 1");
+  require(positive(process_noise), "process_noise", process_noise, "a positive noise");
+  require(positive(measurement_noise), "measurement_noise", measurement_noise,
+          "a positive variance in m^2");
+  require(gate_probability == 0.0 || (gate_probability > 0.5 && gate_probability < 1.0),
+          "gate_probability", gate_probability, "0 (no gating) or a probability in (0.5, 1)");
+  require(max_consecutive_rejections >= 1, "max_consecutive_rejections", max_consecutive_rejections,
+          "at least 1");
+  require(positive(max_position_sigma), "max_position_sigma", max_position_sigma,
+          "a positive sigma in metres");
+  require(positive(default_range), "default_range", default_range, "a positive range in metres");
+}
+
+Locator::Locator(const Layout& layout, const LocatorConfig& config)
+    : layout_(layout),
+      config_(validated(config)),
+      solver_(solverConfig(config_)),
+      selector_(layout.aoa_boards.size(), config_.aoa),
+      filter_(kalmanConfig(config_)),
+      ranges_(layout.twr_modules.size()),
+      bearings_(layout.aoa_boards.size()) {
+  init_config_.planar = config.planar;
+  init_config_.height = config.height;
+  init_config_.default_range = config.default_range;
+}
+
+bool Locator::addRange(const std::string& module_id, double raw_range, double t) {
+  const TwrModule* module = layout_.findTwrModule(module_id);
+  if (module == nullptr || !std::isfinite(raw_range) || raw_range <= 0.0 || !std::isfinite(t)) {
+    ++stats_.invalid_measurements;
+    return false;
+  }
+  RangeSlot& slot = ranges_[static_cast<std::size_t>(module - layout_.twr_modules.data())];
+  slot.range = module->correctRange(raw_range);
+  slot.t = t;
+  slot.valid = slot.range > 0.0;
+  return slot.valid;
+}
+
+bool Locator::addBearing(const std::string& board_id, double azimuth, double elevation, double rssi,
+                         double t) {
+  const AoaBoard* board = layout_.findAoaBoard(board_id);
+  if (board == nullptr || !std::isfinite(azimuth) || !std::isfinite(elevation) ||
+      !std::isfinite(t)) {
+    ++stats_.invalid_measurements;
+    return false;
+  }
+  const std::size_t index = static_cast<std::size_t>(board - layout_.aoa_boards.data());
+  BearingSlot& slot = bearings_[index];
+  slot.azimuth = azimuth;
+  slot.elevation = elevation;
+  slot.rssi = rssi;
+  slot.t = t;
+  slot.valid = true;
+  selector_.recordRssi(index, rssi);
+  return true;
+}
+
+bool Locator::addTdoa(const std::string& anchor_a, const std::string& anchor_b, double difference,
+                      double variance, double t) {
+  const TdoaAnchor* a = layout_.findTdoaAnchor(anchor_a);
+  const TdoaAnchor* b = layout_.findTdoaAnchor(anchor_b);
+  if (a == nullptr || b == nullptr || a == b || !std::isfinite(difference) || !std::isfinite(t)) {
+    ++stats_.invalid_measurements;
+    return false;
+  }
+  const std::size_t ia = static_cast<std::size_t>(a - layout_.tdoa_anchors.data());
+  const std::size_t ib = static_cast<std::size_t>(b - layout_.tdoa_anchors.data());
+  TdoaSlot* slot = nullptr;
+  for (auto& s : tdoas_) {
+    if (s.a == ia && s.b == ib)
+      slot = &s;
+  }
+  if (slot == nullptr) {
+    tdoas_.emplace_back();
+    slot = &tdoas_.back();
+    slot->a = ia;
+    slot->b = ib;
+  }
+  slot->difference = difference;
+  slot->sigma =
+      variance > 0.0 && std::isfinite(variance) ? std::sqrt(variance) : config_.tdoa_sigma;
+  slot->t = t;
+  slot->valid = true;
+  return true;
+}
+
+bool Locator::fresh(Stamped& slot, double now) {
+  if (!slot.valid) {
+    return false;
+  }
+  if (now - slot.t > config_.max_age) {
+    slot.valid = false;
+    ++stats_.stale_dropped;
+    return false;
+  }
+  return true;
+}
+
+LocatorEstimate Locator::lose(LocatorEstimate estimate) {
+  estimate.status = TargetStatus::kLost;
+  ++stats_.lost;
+  warm_.reset();
+  filter_.reset();
+  selector_.reset();
+  return estimate;
+}
+
+LocatorEstimate Locator::update(double now) {
+  ++stats_.updates;
+  LocatorEstimate out;
+  out.solver_cost = std::numeric_limits<double>::quiet_NaN();
+  ObservationSet obs;
+  double newest = -std::numeric_limits<double>::infinity();
+
+  for (std::size_t i = 0; i < ranges_.size(); ++i) {
+    if (!fresh(ranges_[i], now))
+      continue;
+    RangeObservation z;
+    z.module = layout_.twr_modules[i].position;
+    z.range = ranges_[i].range;
+    z.sigma = config_.range_sigma;
+    obs.ranges.push_back(z);
+    out.ranges_used.push_back(i);
+    out.ranges_m.push_back(z.range);
+    newest = std::max(newest, ranges_[i].t);
+  }
+  for (auto& slot : tdoas_) {
+    if (!fresh(slot, now))
+      continue;
+    TdoaObservation z;
+    z.anchor_a = layout_.tdoa_anchors[slot.a].position;
+    z.anchor_b = layout_.tdoa_anchors[slot.b].position;
+    z.difference = slot.difference;
+    z.sigma = slot.sigma;
+    obs.tdoas.push_back(z);
+    newest = std::max(newest, slot.t);
+  }
+
+  // Bearings: which boards may speak depends on where the target is believed to be.
+  std::vector<AoaCandidate> candidates;
+  for (std::size_t i = 0; i < bearings_.size(); ++i) {
+    if (!fresh(bearings_[i], now))
+      continue;
+    const AoaBoard& board = layout_.aoa_boards[i];
+    AoaCandidate c;
+    c.board = i;
+    c.position = board.position;
+    c.rotation = board.orientation.toRotationMatrix();
+    c.field_of_view = board.field_of_view;
+    c.rssi = bearings_[i].rssi;
+    candidates.push_back(c);
+    out.bearings_fresh.push_back(i);
+    out.bearing_angles.emplace_back(bearings_[i].azimuth, bearings_[i].elevation);
+  }
+  std::optional<Eigen::Vector3d> believed;
+  if (warm_ && warm_ranged_) {
+    believed = warm_;
+  } else {
+    believed = trilaterate(obs.ranges, init_config_);
+  }
+  const std::vector<std::size_t> chosen = selector_.select(candidates, believed);
+  stats_.bearings_rejected_fov += candidates.size() - chosen.size();
+  for (std::size_t k : chosen) {
+    const std::size_t i = candidates[k].board;
+    BearingObservation z;
+    z.board = candidates[k].position;
+    z.rotation = candidates[k].rotation;
+    z.azimuth = bearings_[i].azimuth;
+    z.elevation = bearings_[i].elevation;
+    z.sigma_azimuth = config_.azimuth_sigma;
+    z.sigma_elevation = config_.elevation_sigma;
+    z.use_elevation = config_.use_elevation;
+    obs.bearings.push_back(z);
+    out.bearings_used.push_back(i);
+    newest = std::max(newest, bearings_[i].t);
+  }
+  out.sources = (obs.ranges.empty() ? 0 : kSourceTwr) | (obs.tdoas.empty() ? 0 : kSourceTdoa) |
+                (obs.bearings.empty() ? 0 : kSourceAoa);
+  out.stamp = std::isfinite(newest) ? newest : now;
+
+  // Is the position determined at all by what is fresh?
+  const bool ranged = !obs.ranges.empty();
+  const bool helpers = !obs.bearings.empty() || !obs.tdoas.empty();
+  const std::size_t full_ranges = config_.planar ? 3 : 4;
+  const bool warm_usable = warm_.has_value() && warm_ranged_ == ranged;
+  if (obs.empty() || (ranged && !helpers && obs.ranges.size() < full_ranges - 1) ||
+      (ranged && !helpers && obs.ranges.size() < full_ranges && !warm_usable)) {
+    return lose(out);
+  }
+
+  const auto start = std::chrono::steady_clock::now();
+  SolveResult result;
+  if (warm_usable) {
+    result = solver_.solve(obs, *warm_);
+  } else if (const auto guess = trilaterate(obs.ranges, init_config_)) {
+    result = solver_.solveCold(obs, *guess);
+  } else {
+    result = solver_.solveMultiStart(obs, multiStartCandidates(obs, init_config_));
+  }
+  stats_.last_solve_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ++stats_.solves;
+  if (!result.success) {
+    ++stats_.solver_failures;
+    return lose(out);
+  }
+  out.solver_cost = result.cost;
+  warm_ = result.position;
+  warm_ranged_ = ranged;
+
+  if (!ranged) {
+    // Direction only: the distance is the prior's, so the filter (which would treat it as
+    // a position) is left alone; it resumes when ranges return.
+    out.status = TargetStatus::kHeadingOnly;
+    out.position = result.position;
+    out.covariance = result.covariance;
+    return out;
+  }
+
+  double worst_sigma = std::numeric_limits<double>::infinity();
+  if (result.covariance_valid) {
+    worst_sigma =
+        std::sqrt(std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(result.covariance)
+                                    .eigenvalues()
+                                    .maxCoeff()));
+  }
+  const bool ambiguous = !helpers && obs.ranges.size() < full_ranges;
+  out.status = worst_sigma <= config_.max_position_sigma && !ambiguous ? TargetStatus::kOk
+                                                                       : TargetStatus::kDegraded;
+
+  const int d = config_.planar ? 2 : 3;
+  Eigen::MatrixXd r = config_.measurement_noise * Eigen::MatrixXd::Identity(d, d);
+  if (config_.filter_uses_solver_covariance && result.covariance_valid) {
+    r = result.covariance.topLeftCorner(d, d);
+  }
+  filter_.predict(now);
+  filter_.correct(result.position.head(d), r, now);
+  if (!filter_.initialized()) {
+    // The very first measurement was invalid for the filter (covariance not usable).
+    out.position = result.position;
+    out.covariance = result.covariance;
+    return out;
+  }
+  out.position.head(d) = filter_.position();
+  out.velocity.head(d) = filter_.velocity();
+  out.covariance.topLeftCorner(d, d) = filter_.positionCovariance();
+  if (config_.planar) {
+    out.position.z() = config_.height;
+  }
+  return out;
+}
+
+}  // namespace radio_follow

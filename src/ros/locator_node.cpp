@@ -1,0 +1,206 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/ros/locator_node.hpp"
+
+#include <geometry_msgs/PoseWithCovarianceStamped.h>
+#include <geometry_msgs/TransformStamped.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace radio_follow {
+namespace {
+
+const char* statusName(TargetStatus status) {
+  switch (status) {
+    case TargetStatus::kOk:
+      return "OK";
+    case TargetStatus::kHeadingOnly:
+      return "HEADING_ONLY";
+    case TargetStatus::kDegraded:
+      return "DEGRADED";
+    case TargetStatus::kLost:
+      break;
+  }
+  return "LOST";
+}
+
+}  // namespace
+
+TargetEstimate toMessage(const LocatorEstimate& estimate, const std::string& frame,
+                         const ros::Time& stamp) {
+  TargetEstimate msg;
+  msg.header.frame_id = frame;
+  msg.header.stamp = stamp;
+  msg.position.x = estimate.position.x();
+  msg.position.y = estimate.position.y();
+  msg.position.z = estimate.position.z();
+  msg.velocity.x = estimate.velocity.x();
+  msg.velocity.y = estimate.velocity.y();
+  msg.velocity.z = estimate.velocity.z();
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) {
+      msg.position_covariance[static_cast<std::size_t>(3 * r + c)] = estimate.covariance(r, c);
+    }
+  }
+  msg.range = estimate.position.head<2>().norm();
+  msg.bearing = std::atan2(estimate.position.y(), estimate.position.x());
+  msg.sources = estimate.sources;
+  msg.status = static_cast<std::uint8_t>(estimate.status);
+  msg.solver_cost = estimate.solver_cost;
+  return msg;
+}
+
+LocatorNode::LocatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
+    : diagnostics_(nh, private_nh) {
+  params_.load(private_nh);
+  params_.validate();
+  layout_ = loadLayoutFile(params_.layout_file);  // validated: target anchor set with TWR
+  locator_ = std::make_unique<Locator>(layout_, params_.locator);
+
+  target_pub_ = nh.advertise<TargetEstimate>("target", 10);
+  pose_pub_ = nh.advertise<geometry_msgs::PoseWithCovarianceStamped>("target_pose", 10);
+  markers_pub_ = nh.advertise<visualization_msgs::MarkerArray>("markers", 1);
+  for (const auto& topic : params_.uwb_topics) {
+    subscribers_.push_back(nh.subscribe(topic, 50, &LocatorNode::onRanges, this));
+  }
+  for (const auto& topic : params_.aoa_topics) {
+    subscribers_.push_back(nh.subscribe(topic, 50, &LocatorNode::onBearing, this));
+  }
+  for (const auto& topic : params_.tdoa_topics) {
+    subscribers_.push_back(nh.subscribe(topic, 50, &LocatorNode::onTdoa, this));
+  }
+  diagnostics_.setHardwareID("locator");
+  diagnostics_.add("locator", this, &LocatorNode::diagnose);
+  timer_ = nh.createTimer(ros::Duration(1.0 / params_.rate), &LocatorNode::onTimer, this);
+  ROS_INFO("locator: %s mode, %zu TWR modules, %zu AoA boards, %zu TDoA anchors, %.1f Hz",
+           params_.locator.planar ? "2D" : "3D", layout_.twr_modules.size(),
+           layout_.aoa_boards.size(), layout_.tdoa_anchors.size(), params_.rate);
+}
+
+void LocatorNode::onRanges(const UwbRanges::ConstPtr& msg) {
+  // The module is named by its ID; drivers started without one still set their frame.
+  const std::string& module = msg->tag_id.empty() ? msg->header.frame_id : msg->tag_id;
+  for (const auto& range : msg->ranges) {
+    if (range.anchor_id != layout_.target_anchor_id) {
+      continue;  // another anchor of the UWB network, not the target
+    }
+    if (!locator_->addRange(module, range.range, msg->header.stamp.toSec())) {
+      ++ignored_messages_;
+      ROS_WARN_THROTTLE(5.0, "locator: ignoring range from unknown module '%s' or invalid value",
+                        module.c_str());
+    }
+  }
+}
+
+void LocatorNode::onBearing(const AoaBearing::ConstPtr& msg) {
+  if (!layout_.target_tag_id.empty() && msg->tag_id != layout_.target_tag_id) {
+    return;
+  }
+  if (!locator_->addBearing(msg->header.frame_id, msg->azimuth, msg->elevation, msg->rssi,
+                            msg->header.stamp.toSec())) {
+    ++ignored_messages_;
+    ROS_WARN_THROTTLE(5.0, "locator: ignoring bearing from unknown board frame '%s'",
+                      msg->header.frame_id.c_str());
+  }
+}
+
+void LocatorNode::onTdoa(const TdoaMeasurements::ConstPtr& msg) {
+  for (const auto& d : msg->differences) {
+    if (!locator_->addTdoa(d.anchor_a, d.anchor_b, d.distance_difference, d.variance,
+                           msg->header.stamp.toSec())) {
+      ++ignored_messages_;
+      ROS_WARN_THROTTLE(5.0, "locator: ignoring TDoA difference %s-%s (unknown anchor?)",
+                        d.anchor_a.c_str(), d.anchor_b.c_str());
+    }
+  }
+}
+
+void LocatorNode::onTimer(const ros::TimerEvent& /*event*/) {
+  const ros::Time now = ros::Time::now();
+  const std::size_t solves_before = locator_->stats().solves;
+  const LocatorEstimate estimate = locator_->update(now.toSec());
+  if (locator_->stats().solves != solves_before) {
+    const double s = locator_->stats().last_solve_seconds;
+    solve_seconds_sum_ += s;
+    solve_seconds_max_ = std::max(solve_seconds_max_, s);
+    ++solves_seen_;
+  }
+  if (estimate.status != last_status_) {
+    ROS_INFO("locator: target %s -> %s", statusName(last_status_), statusName(estimate.status));
+    last_status_ = estimate.status;
+  }
+  publish(estimate, now);
+  diagnostics_.update();
+}
+
+void LocatorNode::publish(const LocatorEstimate& estimate, const ros::Time& now) {
+  // The estimate is stamped with its newest measurement; LOST with the current time.
+  const ros::Time stamp =
+      estimate.status == TargetStatus::kLost ? now : ros::Time(std::max(0.0, estimate.stamp));
+  // Always published, LOST included: a controller must hear that the target is gone.
+  target_pub_.publish(toMessage(estimate, layout_.fixed_frame, stamp));
+
+  const bool has_position =
+      estimate.status == TargetStatus::kOk || estimate.status == TargetStatus::kDegraded;
+  if (has_position) {
+    geometry_msgs::PoseWithCovarianceStamped pose;
+    pose.header.frame_id = layout_.fixed_frame;
+    pose.header.stamp = stamp;
+    pose.pose.pose.position.x = estimate.position.x();
+    pose.pose.pose.position.y = estimate.position.y();
+    pose.pose.pose.position.z = estimate.position.z();
+    pose.pose.pose.orientation.w = 1.0;
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) {
+        pose.pose.covariance[static_cast<std::size_t>(6 * r + c)] = estimate.covariance(r, c);
+      }
+    }
+    // Orientation is not estimated: infinite-like variance says so to consumers.
+    for (int i = 3; i < 6; ++i) {
+      pose.pose.covariance[static_cast<std::size_t>(6 * i + i)] = 1e6;
+    }
+    pose_pub_.publish(pose);
+    if (params_.publish_tf) {
+      geometry_msgs::TransformStamped t;
+      t.header = pose.header;
+      t.child_frame_id = params_.target_frame;
+      t.transform.translation.x = estimate.position.x();
+      t.transform.translation.y = estimate.position.y();
+      t.transform.translation.z = estimate.position.z();
+      t.transform.rotation.w = 1.0;
+      tf_.sendTransform(t);
+    }
+  }
+  if (markers_pub_.getNumSubscribers() > 0) {  // drawing is the node's largest cost
+    markers_pub_.publish(locatorMarkers(layout_, params_.locator, estimate, now));
+  }
+}
+
+void LocatorNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
+  const LocatorStats& s = locator_->stats();
+  const KalmanFilter& f = locator_->filter();
+  if (last_status_ == TargetStatus::kOk) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "tracking");
+  } else if (last_status_ == TargetStatus::kLost) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "target lost");
+  } else {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, statusName(last_status_));
+  }
+  status.add("status", statusName(last_status_));
+  status.add("updates", s.updates);
+  status.add("solves", s.solves);
+  status.add("solver failures", s.solver_failures);
+  status.add("stale measurements dropped", s.stale_dropped);
+  status.add("invalid measurements", s.invalid_measurements);
+  status.add("bearings not selected", s.bearings_rejected_fov);
+  status.add("filter gated", f.gatedCount());
+  status.add("filter invalid", f.invalidCount());
+  status.add("filter resets", f.resetCount());
+  status.add("lost epochs", s.lost);
+  status.add("ignored messages", ignored_messages_);
+  status.add("solve time mean (us)",
+             solves_seen_ > 0 ? 1e6 * solve_seconds_sum_ / static_cast<double>(solves_seen_) : 0.0);
+  status.add("solve time max (us)", 1e6 * solve_seconds_max_);
+}
+
+}  // namespace radio_follow

@@ -1,0 +1,166 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Feeds driver-style messages to a running locator (Spot layout) and checks the published
+// estimate, pose, TF and markers, and that the target is reported lost when they stop.
+#include <geometry_msgs/PoseWithCovarianceStamped.h>
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+#include <tf2_ros/transform_listener.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include <Eigen/Geometry>
+#include <atomic>
+#include <cmath>
+#include <thread>
+
+#include "radio_follow/AoaBearing.h"
+#include "radio_follow/TargetEstimate.h"
+#include "radio_follow/UwbRanges.h"
+
+namespace {
+
+// The person stands 4 m ahead, 1 m to the left, tag at the configured 1.0 m height.
+const Eigen::Vector3d kTruth(4.0, 1.0, 1.0);
+std::atomic<bool> g_publishing{true};
+
+struct Module {
+  const char* id;
+  Eigen::Vector3d position;
+};
+
+// Plays three UWB modules and two AoA boards at 20 Hz: "front" sees the tag, "back" hears
+// a reflection and reports a plausible bearing inside its own field of view.
+void playDrivers() {
+  ros::NodeHandle nh;
+  ros::Publisher uwb = nh.advertise<radio_follow::UwbRanges>("uwb/ranges", 10);
+  ros::Publisher front = nh.advertise<radio_follow::AoaBearing>("aoa/front/bearing", 10);
+  ros::Publisher back = nh.advertise<radio_follow::AoaBearing>("aoa/back/bearing", 10);
+  const Module modules[] = {{"5722", {0.175, 0.075, 0.115}},
+                            {"5A84", {-0.07, -0.04, 0.093}},
+                            {"C4B5", {-0.30, 0.08, 0.098}}};
+  const Eigen::Vector3d front_board(0.065, 0.0, 0.25);
+  ros::Rate rate(20.0);
+  while (ros::ok() && g_publishing) {
+    const ros::Time now = ros::Time::now();
+    for (const auto& m : modules) {
+      radio_follow::UwbRanges msg;
+      msg.header.stamp = now;
+      msg.header.frame_id = std::string("uwb_") + m.id;
+      msg.tag_id = m.id;
+      radio_follow::UwbRange target;
+      target.anchor_id = "DA12";
+      target.range = (kTruth - m.position).norm();
+      radio_follow::UwbRange other;  // another anchor of the network: must be ignored
+      other.anchor_id = "0B0B";
+      other.range = 0.7;
+      msg.ranges = {other, target};
+      uwb.publish(msg);
+    }
+    radio_follow::AoaBearing f;
+    f.header.stamp = now;
+    f.header.frame_id = "aoa_front";
+    const Eigen::Vector3d v = kTruth - front_board;
+    f.azimuth = std::atan2(v.y(), v.x());
+    f.elevation = std::atan2(v.z(), v.head<2>().norm());
+    f.rssi = -58.0;
+    front.publish(f);
+    radio_follow::AoaBearing b = f;
+    b.header.frame_id = "aoa_back";
+    b.azimuth = 0.6;  // would pull the estimate to the robot's rear left
+    b.elevation = 0.1;
+    b.rssi = -52.0;  // and it is the louder one
+    back.publish(b);
+    rate.sleep();
+  }
+}
+
+radio_follow::TargetEstimateConstPtr waitForStatus(std::uint8_t status, double timeout) {
+  ros::NodeHandle nh;
+  const ros::Time deadline = ros::Time::now() + ros::Duration(timeout);
+  while (ros::ok() && ros::Time::now() < deadline) {
+    auto msg =
+        ros::topic::waitForMessage<radio_follow::TargetEstimate>("target", nh, ros::Duration(1.0));
+    if (msg && msg->status == status) {
+      return msg;
+    }
+  }
+  return nullptr;
+}
+
+TEST(Locator, EstimatesTheTargetAndIgnoresTheBoardBehind) {
+  // A few epochs for the filter to settle (noise-free data: it converges to the truth).
+  ASSERT_TRUE(waitForStatus(radio_follow::TargetEstimate::STATUS_OK, 30.0));
+  ros::Duration(1.0).sleep();
+  const auto msg = waitForStatus(radio_follow::TargetEstimate::STATUS_OK, 5.0);
+  ASSERT_TRUE(msg);
+  EXPECT_EQ(msg->header.frame_id, "base_link");
+  EXPECT_NEAR(msg->position.x, kTruth.x(), 0.02);
+  EXPECT_NEAR(msg->position.y, kTruth.y(), 0.02);
+  EXPECT_NEAR(msg->position.z, kTruth.z(), 1e-9);
+  EXPECT_NEAR(msg->range, kTruth.head<2>().norm(), 0.02);
+  EXPECT_NEAR(msg->bearing, std::atan2(kTruth.y(), kTruth.x()), 0.01);
+  EXPECT_EQ(msg->sources,
+            radio_follow::TargetEstimate::SOURCE_TWR | radio_follow::TargetEstimate::SOURCE_AOA);
+  EXPECT_GT(msg->position_covariance[0], 0.0);
+}
+
+TEST(Locator, PublishesPoseAndTf) {
+  ros::NodeHandle nh;
+  const auto pose = ros::topic::waitForMessage<geometry_msgs::PoseWithCovarianceStamped>(
+      "target_pose", nh, ros::Duration(5.0));
+  ASSERT_TRUE(pose);
+  EXPECT_EQ(pose->header.frame_id, "base_link");
+  EXPECT_NEAR(pose->pose.pose.position.x, kTruth.x(), 0.02);
+
+  tf2_ros::Buffer buffer;
+  tf2_ros::TransformListener listener(buffer);
+  std::string error;
+  ASSERT_TRUE(buffer.canTransform("base_link", "target", ros::Time(0), ros::Duration(5.0), &error))
+      << error;
+  const auto t = buffer.lookupTransform("base_link", "target", ros::Time(0));
+  EXPECT_NEAR(t.transform.translation.x, kTruth.x(), 0.02);
+  EXPECT_NEAR(t.transform.translation.y, kTruth.y(), 0.02);
+}
+
+TEST(Locator, DrawsRangesBearingsAndTheEstimate) {
+  ros::NodeHandle nh;
+  const auto markers = ros::topic::waitForMessage<visualization_msgs::MarkerArray>(
+      "markers", nh, ros::Duration(5.0));
+  ASSERT_TRUE(markers);
+  int circles = 0;
+  int used_arrows = 0;
+  int ignored_arrows = 0;
+  int estimates = 0;
+  for (const auto& m : markers->markers) {
+    if (m.ns == "ranges")
+      circles += m.type == visualization_msgs::Marker::LINE_STRIP;
+    if (m.ns == "bearings")
+      (m.color.g > 0.8f ? used_arrows : ignored_arrows)++;
+    if (m.ns == "estimate") {
+      ++estimates;
+      EXPECT_NEAR(m.pose.position.x, kTruth.x(), 0.05);
+    }
+  }
+  EXPECT_EQ(circles, 3);
+  EXPECT_EQ(used_arrows, 1);     // front
+  EXPECT_EQ(ignored_arrows, 1);  // back: the target is outside its field of view
+  EXPECT_EQ(estimates, 1);
+}
+
+TEST(Locator, ReportsLostWhenTheDriversStop) {
+  g_publishing = false;
+  EXPECT_TRUE(waitForStatus(radio_follow::TargetEstimate::STATUS_LOST, 10.0));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "locator_rostest");
+  ros::AsyncSpinner spinner(1);
+  spinner.start();
+  std::thread drivers(playDrivers);
+  const int result = RUN_ALL_TESTS();
+  g_publishing = false;
+  drivers.join();
+  return result;
+}

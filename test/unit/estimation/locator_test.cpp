@@ -1,0 +1,172 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/estimation/locator.hpp"
+
+#include <gtest/gtest.h>
+
+#include "radio_follow/common/param_error.hpp"
+
+namespace radio_follow {
+namespace {
+
+Layout layoutFile(const std::string& name) {
+  return loadLayoutFile(std::string(RF_CONFIG_DIR) + "/layouts/" + name);
+}
+
+void feedRanges(Locator& locator, const Eigen::Vector3d& truth, double t) {
+  for (const auto& m : locator.layout().twr_modules) {
+    ASSERT_TRUE(locator.addRange(m.id, (truth - m.position).norm(), t));
+  }
+}
+
+void feedBearing(Locator& locator, const AoaBoard& board, const Eigen::Vector3d& from, double rssi,
+                 double t) {
+  const Eigen::Vector2d ae =
+      predictBearing(from, board.position, board.orientation.toRotationMatrix());
+  ASSERT_TRUE(locator.addBearing(board.id, ae(0), ae(1), rssi, t));
+}
+
+double headingError(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  return std::abs(wrapAngle(std::atan2(a.y(), a.x()) - std::atan2(b.y(), b.x())));
+}
+
+TEST(Locator, NothingFreshIsLost) {
+  Locator locator(layoutFile("spot.yaml"), LocatorConfig{});
+  EXPECT_EQ(locator.update(1.0).status, TargetStatus::kLost);
+}
+
+TEST(Locator, ThreeRangesGiveAPositionThatGoesStale) {
+  LocatorConfig config;
+  Locator locator(layoutFile("spot_twr.yaml"), config);
+  const Eigen::Vector3d truth(-2.0, 3.0, config.height);
+  feedRanges(locator, truth, 10.0);
+  const LocatorEstimate e = locator.update(10.05);
+  ASSERT_EQ(e.status, TargetStatus::kOk);
+  EXPECT_LT((e.position - truth).norm(), 1e-4);
+  EXPECT_EQ(e.sources, kSourceTwr);
+  EXPECT_DOUBLE_EQ(e.stamp, 10.0);
+  // Nothing new: after max_age every range is dropped and the target is lost.
+  EXPECT_EQ(locator.update(10.0 + config.max_age + 0.01).status, TargetStatus::kLost);
+  EXPECT_EQ(locator.stats().stale_dropped, 3u);
+}
+
+TEST(Locator, OneRangeAloneIsLost) {
+  Locator locator(layoutFile("spot_twr.yaml"), LocatorConfig{});
+  ASSERT_TRUE(locator.addRange("5722", 3.0, 0.0));
+  EXPECT_EQ(locator.update(0.0).status, TargetStatus::kLost);
+  EXPECT_FALSE(locator.addRange("FFFF", 3.0, 0.0));
+  EXPECT_FALSE(locator.addRange("5722", -1.0, 0.0));
+}
+
+TEST(Locator, CubeWithOneRangeIgnoresTheBoardBehind) {
+  LocatorConfig config;
+  const Layout layout = layoutFile("cube.yaml");
+  Locator locator(layout, config);
+  const Eigen::Vector3d truth(4.0, 0.8, config.height);
+  // "front" faces the target; "back" hears a reflection and reports a plausible bearing
+  // towards a point 4 m behind-left of the robot.
+  const Eigen::Vector3d ghost(-3.0, 3.0, config.height);
+  for (int k = 0; k < 6; ++k) {
+    const double t = 0.05 * k;
+    feedRanges(locator, truth, t);
+    feedBearing(locator, layout.aoa_boards[0], truth, -55.0, t);
+    feedBearing(locator, layout.aoa_boards[2], ghost, -62.0, t);
+    const LocatorEstimate e = locator.update(t);
+    ASSERT_EQ(e.status, TargetStatus::kOk) << "epoch " << k;
+    EXPECT_LT((e.position - truth).norm(), 0.02) << "epoch " << k;
+    EXPECT_EQ(e.bearings_used, std::vector<std::size_t>{0});
+    EXPECT_EQ(e.sources, kSourceTwr | kSourceAoa);
+  }
+}
+
+TEST(Locator, BearingOnlyIsHeadingOnly) {
+  const Layout layout = layoutFile("cube.yaml");
+  Locator locator(layout, LocatorConfig{});
+  const Eigen::Vector3d truth(1.0, 5.0, 1.0);
+  feedBearing(locator, layout.aoa_boards[1], truth, -60.0, 0.0);
+  const LocatorEstimate e = locator.update(0.01);
+  ASSERT_EQ(e.status, TargetStatus::kHeadingOnly);
+  EXPECT_LT(headingError(e.position, truth), 0.02);
+  EXPECT_EQ(e.sources, kSourceAoa);
+}
+
+TEST(Locator, TdoaOnlyIsHeadingOnly) {
+  const Layout layout = parseLayout(R"(
+tdoa_anchors:
+  - {id: a, position: [0.3, 0.3, 0.5]}
+  - {id: b, position: [-0.3, 0.3, 0.5]}
+  - {id: c, position: [-0.3, -0.3, 0.5]}
+  - {id: d, position: [0.3, -0.3, 0.5]}
+)",
+                                    "test");
+  LocatorConfig config;
+  Locator locator(layout, config);
+  const Eigen::Vector3d truth(-4.0, -2.0, config.height);
+  auto diff = [&](int a, int b) {
+    return (truth - layout.tdoa_anchors[a].position).norm() -
+           (truth - layout.tdoa_anchors[b].position).norm();
+  };
+  ASSERT_TRUE(locator.addTdoa("b", "a", diff(1, 0), 0.0004, 0.0));
+  ASSERT_TRUE(locator.addTdoa("c", "a", diff(2, 0), 0.0004, 0.0));
+  ASSERT_TRUE(locator.addTdoa("d", "a", diff(3, 0), 0.0004, 0.0));
+  const LocatorEstimate e = locator.update(0.0);
+  ASSERT_EQ(e.status, TargetStatus::kHeadingOnly);
+  EXPECT_LT(headingError(e.position, truth), 0.05);
+  EXPECT_EQ(e.sources, kSourceTdoa);
+  EXPECT_FALSE(locator.addTdoa("a", "a", 0.0, 0.0, 0.0));
+}
+
+TEST(Locator, AppliesTheCalibrationPolynomial) {
+  const Layout layout = parseLayout(R"(
+target: {uwb_anchor_id: "DA12"}
+twr_modules:
+  - {id: "1", position: [0.3, 0.25, 0.4], calibration: [-0.1, 1.0]}
+  - {id: "2", position: [0.3, -0.25, 0.4], calibration: [-0.1, 1.0]}
+  - {id: "3", position: [-0.3, -0.25, 0.4], calibration: [-0.1, 1.0]}
+)",
+                                    "test");
+  LocatorConfig config;
+  Locator locator(layout, config);
+  const Eigen::Vector3d truth(3.0, 1.0, config.height);
+  for (const auto& m : layout.twr_modules) {
+    locator.addRange(m.id, (truth - m.position).norm() + 0.1, 0.0);  // raw reads 10 cm long
+  }
+  const LocatorEstimate e = locator.update(0.0);
+  ASSERT_EQ(e.status, TargetStatus::kOk);
+  EXPECT_LT((e.position - truth).norm(), 1e-4);
+}
+
+TEST(Locator, TwoRangesNeedAWarmStart) {
+  LocatorConfig config;
+  Locator locator(layoutFile("tracked.yaml"), config);
+  const Eigen::Vector3d truth(3.0, -1.0, config.height);
+  feedRanges(locator, truth, 0.0);
+  ASSERT_EQ(locator.update(0.0).status, TargetStatus::kOk);
+  // Two modules stop: two ranges keep tracking, flagged DEGRADED (mirror ambiguity).
+  ASSERT_TRUE(
+      locator.addRange("1A01", (truth - locator.layout().twr_modules[0].position).norm(), 0.4));
+  ASSERT_TRUE(
+      locator.addRange("1A02", (truth - locator.layout().twr_modules[1].position).norm(), 0.4));
+  const LocatorEstimate e = locator.update(0.55);
+  EXPECT_EQ(e.status, TargetStatus::kDegraded);
+  EXPECT_LT((e.position - truth).norm(), 1e-3);
+}
+
+TEST(LocatorConfig, ValidationNamesTheParameter) {
+  LocatorConfig config;
+  config.range_sigma = 0.0;
+  try {
+    config.validate();
+    FAIL() << "expected ParamError";
+  } catch (const ParamError& e) {
+    EXPECT_EQ(e.name(), "range_sigma");
+  }
+  config = LocatorConfig{};
+  config.gate_probability = 1.0;
+  EXPECT_THROW(config.validate(), ParamError);
+  config = LocatorConfig{};
+  config.range_loss = {LossType::kHuber, -1.0};
+  EXPECT_THROW(Locator(layoutFile("spot.yaml"), config), ParamError);
+}
+
+}  // namespace
+}  // namespace radio_follow
