@@ -100,6 +100,20 @@ double TwrModule::correctRange(double raw_range) const {
   return result;
 }
 
+SensorTopics conventionalTopics(const Layout& layout) {
+  SensorTopics topics;
+  for (const auto& m : layout.twr_modules) {
+    topics.uwb.push_back("uwb/" + m.id + "/ranges");
+  }
+  for (const auto& b : layout.aoa_boards) {
+    topics.aoa.push_back("aoa/" + b.id + "/bearing");
+  }
+  if (!layout.tdoa_anchors.empty()) {
+    topics.tdoa.push_back("tdoa/measurements");
+  }
+  return topics;
+}
+
 std::string toString(AoaBoardKind kind) {
   return kind == AoaBoardKind::kAntB10 ? "ant_b10" : "xplr_aoa_1";
 }

@@ -56,6 +56,12 @@ LocatorNode::LocatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
   params_.validate();
   layout_ = loadLayoutFile(params_.layout_file);  // validated: target anchor set with TWR
   locator_ = std::make_unique<Locator>(layout_, params_.locator);
+  if (params_.uwb_topics.empty() && params_.aoa_topics.empty() && params_.tdoa_topics.empty()) {
+    const SensorTopics topics = conventionalTopics(layout_);
+    params_.uwb_topics = topics.uwb;
+    params_.aoa_topics = topics.aoa;
+    params_.tdoa_topics = topics.tdoa;
+  }
 
   target_pub_ = nh.advertise<TargetEstimate>("target", 10);
   pose_pub_ = nh.advertise<geometry_msgs::PoseWithCovarianceStamped>("target_pose", 10);

@@ -83,8 +83,7 @@ void LocatorNode::Params::load(const ros::NodeHandle& nh) {
 
 void LocatorNode::Params::validate() const {
   require(!layout_file.empty(), "~layout_file", layout_file, "the path of a layout YAML file");
-  require(uwb_topics.size() + aoa_topics.size() + tdoa_topics.size() > 0, "~uwb_topics",
-          std::string("[]"), "at least one topic in uwb_topics, aoa_topics or tdoa_topics");
+  // All topic lists empty is fine: the node then uses the layout's conventional topics.
   require(std::isfinite(rate) && rate > 0.0 && rate <= 200.0, "~rate", rate,
           "a solve rate in (0, 200] Hz");
   require(!target_frame.empty(), "~target_frame", target_frame, "a frame name");

@@ -77,4 +77,15 @@ Layout loadLayoutFile(const std::string& path);
 
 std::string toString(AoaBoardKind kind);
 
+/// The package's topic convention for a layout's sensors, relative to the robot's
+/// namespace: `uwb/<module id>/ranges`, `aoa/<board id>/bearing` and, with TDoA anchors,
+/// `tdoa/measurements`. The driver launch files and the simulator follow it, so nodes can
+/// default their inputs to it.
+struct SensorTopics {
+  std::vector<std::string> uwb;
+  std::vector<std::string> aoa;
+  std::vector<std::string> tdoa;
+};
+SensorTopics conventionalTopics(const Layout& layout);
+
 }  // namespace radio_follow

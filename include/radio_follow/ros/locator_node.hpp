@@ -25,7 +25,8 @@ class LocatorNode {
  public:
   struct Params {
     std::string layout_file;  ///< required
-    std::vector<std::string> uwb_topics{"uwb/ranges"};
+    /// Inputs; all three empty (the default) = the layout's conventional topics.
+    std::vector<std::string> uwb_topics;
     std::vector<std::string> aoa_topics;
     std::vector<std::string> tdoa_topics;
     double rate = 20.0;                   ///< solves per second, Hz

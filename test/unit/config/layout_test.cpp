@@ -91,6 +91,13 @@ TEST(Layout, RejectsBadFieldsNamingThem) {
   expectRejected("just text", "layout");
 }
 
+TEST(Layout, ConventionalTopicsFollowTheSensorIds) {
+  const SensorTopics topics = conventionalTopics(parseLayout(kMinimal, "test"));
+  EXPECT_EQ(topics.uwb, (std::vector<std::string>{"uwb/5722/ranges", "uwb/5A84/ranges"}));
+  EXPECT_EQ(topics.aoa, std::vector<std::string>{"aoa/left/bearing"});
+  EXPECT_EQ(topics.tdoa, std::vector<std::string>{"tdoa/measurements"});
+}
+
 TEST(Layout, MissingFileIsAParamError) {
   EXPECT_THROW(loadLayoutFile("/nonexistent/layout.yaml"), ParamError);
 }
