@@ -22,8 +22,8 @@ bool parseBracketNumbers(std::string_view inner, double& x, double& y, double& z
                          std::uint8_t* quality) {
   FieldCursor cursor(inner, ',');
   std::string_view f;
-  if (!cursor.next(f) || !parseFiniteDouble(f, x) || !cursor.next(f) ||
-      !parseFiniteDouble(f, y) || !cursor.next(f) || !parseFiniteDouble(f, z)) {
+  if (!cursor.next(f) || !parseFiniteDouble(f, x) || !cursor.next(f) || !parseFiniteDouble(f, y) ||
+      !cursor.next(f) || !parseFiniteDouble(f, z)) {
     return false;
   }
   if (quality != nullptr && (!cursor.next(f) || !parseQuality(f, *quality))) {
@@ -41,8 +41,8 @@ bool parseLesAnchor(std::string_view token, DwmAnchorRange& anchor) {
     return false;
   }
   assignUpperHex(token.substr(0, 4), anchor.id);
-  return parseBracketNumbers(token.substr(open + 1, close - open - 1), anchor.x, anchor.y,
-                             anchor.z, nullptr) &&
+  return parseBracketNumbers(token.substr(open + 1, close - open - 1), anchor.x, anchor.y, anchor.z,
+                             nullptr) &&
          parseFiniteDouble(token.substr(close + 2), anchor.range) && anchor.range >= 0.0;
 }
 
@@ -64,8 +64,8 @@ DwmLineStatus decodeLes(std::string_view line, DwmMeasurement& out) {
       seen_le_us = true;
     } else if (startsWith(token, "est[")) {
       if (token.back() != ']' ||
-          !parseBracketNumbers(token.substr(4, token.size() - 5), out.position.x,
-                               out.position.y, out.position.z, &out.position.quality)) {
+          !parseBracketNumbers(token.substr(4, token.size() - 5), out.position.x, out.position.y,
+                               out.position.z, &out.position.quality)) {
         return DwmLineStatus::kMalformed;
       }
       out.has_position = true;
@@ -88,9 +88,8 @@ DwmLineStatus decodeLes(std::string_view line, DwmMeasurement& out) {
 bool parsePosFields(FieldCursor& cursor, DwmPosition& position) {
   std::string_view f;
   return cursor.next(f) && parseFiniteDouble(f, position.x) && cursor.next(f) &&
-         parseFiniteDouble(f, position.y) && cursor.next(f) &&
-         parseFiniteDouble(f, position.z) && cursor.next(f) &&
-         parseQuality(f, position.quality) && cursor.done();
+         parseFiniteDouble(f, position.y) && cursor.next(f) && parseFiniteDouble(f, position.z) &&
+         cursor.next(f) && parseQuality(f, position.quality) && cursor.done();
 }
 
 // "AN<k>" with k == expected index.
@@ -118,16 +117,15 @@ DwmLineStatus decodeLec(std::string_view line, DwmMeasurement& out) {
     if (!isAnchorLabel(f, out.ranges.size())) {
       // A label out of sequence: another line's fields ran into this one, or the
       // count itself was cut.
-      return out.ranges.size() >= count ? DwmLineStatus::kCountMismatch
-                                        : DwmLineStatus::kMalformed;
+      return out.ranges.size() >= count ? DwmLineStatus::kCountMismatch : DwmLineStatus::kMalformed;
     }
     out.ranges.emplace_back();
     DwmAnchorRange& a = out.ranges.back();
     std::string_view id;
-    if (!cursor.next(id) || !isHexId(id, 4) || !cursor.next(f) ||
-        !parseFiniteDouble(f, a.x) || !cursor.next(f) || !parseFiniteDouble(f, a.y) ||
-        !cursor.next(f) || !parseFiniteDouble(f, a.z) || !cursor.next(f) ||
-        !parseFiniteDouble(f, a.range) || a.range < 0.0) {
+    if (!cursor.next(id) || !isHexId(id, 4) || !cursor.next(f) || !parseFiniteDouble(f, a.x) ||
+        !cursor.next(f) || !parseFiniteDouble(f, a.y) || !cursor.next(f) ||
+        !parseFiniteDouble(f, a.z) || !cursor.next(f) || !parseFiniteDouble(f, a.range) ||
+        a.range < 0.0) {
       return DwmLineStatus::kMalformed;
     }
     assignUpperHex(id, a.id);
@@ -135,15 +133,18 @@ DwmLineStatus decodeLec(std::string_view line, DwmMeasurement& out) {
   if (out.ranges.size() != count) {
     return DwmLineStatus::kCountMismatch;
   }
-  return DwmLineStatus::kMeasurement;
+  // "DIST,0": consistent, but no anchor in range and no position: nothing to publish.
+  // (Found by the fuzzer: it is not a measurement, and not an error either.)
+  return out.ranges.empty() && !out.has_position ? DwmLineStatus::kIgnored
+                                                 : DwmLineStatus::kMeasurement;
 }
 
 // Whether a line that is none of the known outputs still looks like a piece of one
 // (a fragment after a dropout) rather than text such as the banner or `Help : ?`.
 bool looksLikeData(std::string_view line) {
   const char c = line.front();
-  return (c >= '0' && c <= '9') || c == '-' || c == '.' || c == ',' || c == '[' ||
-         c == ']' || c == '=' || startsWith(line, "AN") || startsWith(line, "DIST") ||
+  return (c >= '0' && c <= '9') || c == '-' || c == '.' || c == ',' || c == '[' || c == ']' ||
+         c == '=' || startsWith(line, "AN") || startsWith(line, "DIST") ||
          startsWith(line, "POS") || startsWith(line, "le_us") || startsWith(line, "est") ||
          line.find("]=") != std::string_view::npos ||
          (line.size() > 4 && line[4] == '[' && isHexId(line.substr(0, 4), 4));

@@ -31,7 +31,9 @@ std::string Dwm1001Shell::onConnected(double now) {
   return enter(State::kWaitPrompt, now, "\r\r");
 }
 
-void Dwm1001Shell::onDisconnected() { state_ = State::kDisconnected; }
+void Dwm1001Shell::onDisconnected() {
+  state_ = State::kDisconnected;
+}
 
 std::string Dwm1001Shell::onPrompt(double now) {
   switch (state_) {

@@ -1,11 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/drivers/serial_transport.hpp"
 
+#include <algorithm>
 #include <boost/asio/post.hpp>
 #include <boost/asio/read.hpp>
 #include <boost/asio/write.hpp>
-
-#include <algorithm>
 #include <utility>
 
 namespace radio_follow::drivers {
@@ -19,7 +18,9 @@ SerialTransport::SerialTransport(Options options, Callbacks callbacks)
       retry_timer_(io_),
       backoff_(options_.initial_backoff) {}
 
-SerialTransport::~SerialTransport() { stop(std::chrono::milliseconds(0)); }
+SerialTransport::~SerialTransport() {
+  stop(std::chrono::milliseconds(0));
+}
 
 void SerialTransport::start() {
   if (thread_.joinable()) {

@@ -83,9 +83,9 @@ UudfLineStatus decodeUudfLine(std::string_view line, UudfEvent& out) {
   assignUpperHex(f, out.tag_id);
   if (!takePlain(rest, f) || !parseFiniteDouble(f, out.rssi) || !takePlain(rest, f) ||
       !parseAngle(f, out.azimuth) || !takePlain(rest, f) || !parseAngle(f, out.elevation) ||
-      !takePlain(rest, f) || !(f.empty() || parseFiniteDouble(f, rssi2)) ||
-      !takePlain(rest, f) || !parseInteger(f, channel) || channel > 39 ||
-      !takeQuoted(rest, out.anchor_id) || !takeQuoted(rest, out.user_string)) {
+      !takePlain(rest, f) || !(f.empty() || parseFiniteDouble(f, rssi2)) || !takePlain(rest, f) ||
+      !parseInteger(f, channel) || channel > 39 || !takeQuoted(rest, out.anchor_id) ||
+      !takeQuoted(rest, out.user_string)) {
     return UudfLineStatus::kMalformed;
   }
   // Older firmware sends a reserved 0 where newer sends the second polarisation's RSSI;

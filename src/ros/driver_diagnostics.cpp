@@ -38,7 +38,8 @@ void DriverDiagnostics::tick(const ros::TimerEvent&) {
 
 void DriverDiagnostics::produce(diagnostic_updater::DiagnosticStatusWrapper& status) {
   const drivers::DriverStatsSnapshot s = stats_.snapshot();
-  const double silence = s.last_data_time > 0.0 ? ros::Time::now().toSec() - s.last_data_time : -1.0;
+  const double silence =
+      s.last_data_time > 0.0 ? ros::Time::now().toSec() - s.last_data_time : -1.0;
   if (!s.connected) {
     status.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "device not connected");
   } else if (silence > silence_timeout_) {

@@ -3,9 +3,9 @@
 
 #include <cmath>
 
-#include "radio_follow/common/param_error.hpp"
 #include "radio_follow/UwbRanges.h"
 #include "radio_follow/UwbTagLocation.h"
+#include "radio_follow/common/param_error.hpp"
 
 namespace radio_follow {
 
@@ -61,8 +61,8 @@ Dwm1001DriverNode::Dwm1001DriverNode(ros::NodeHandle& nh, ros::NodeHandle& priva
   drivers::SerialTransport::Options options;
   options.port = params_.port;
   options.baud = static_cast<unsigned>(params_.baud);
-  options.max_backoff = std::chrono::milliseconds(
-      static_cast<long>(std::lround(params_.reconnect_backoff * 1000.0)));
+  options.max_backoff =
+      std::chrono::milliseconds(static_cast<long>(std::lround(params_.reconnect_backoff * 1000.0)));
   drivers::SerialTransport::Callbacks callbacks;
   callbacks.on_bytes = [this](const char* data, std::size_t size) { onBytes(data, size); };
   callbacks.on_connected = [this] { onConnected(); };

@@ -34,8 +34,8 @@ void UbloxAoaDriverNode::Params::validate() const {
     require(drivers::isHexId(id, 12), "tag_ids", id, "12 hexadecimal digits per tag");
   }
   for (const std::string& command : init_commands) {
-    require(!command.empty() && command.find_first_of("\r\n") == std::string::npos,
-            "init_commands", command, "one AT command per entry, without line ends");
+    require(!command.empty() && command.find_first_of("\r\n") == std::string::npos, "init_commands",
+            command, "one AT command per entry, without line ends");
   }
   require(reconnect_backoff > 0.0 && reconnect_backoff <= 10.0, "reconnect_backoff",
           reconnect_backoff, "seconds in (0, 10]");
@@ -49,14 +49,13 @@ UbloxAoaDriverNode::UbloxAoaDriverNode(ros::NodeHandle& nh, ros::NodeHandle& pri
   framer_ = drivers::LineFramer(static_cast<std::size_t>(params_.max_line_length));
   bearing_pub_ = nh.advertise<AoaBearing>("bearing", 50);
   diagnostics_ = std::make_unique<DriverDiagnostics>(nh, private_nh, "ublox aoa " + params_.port,
-                                                     params_.port, stats_,
-                                                     params_.silence_timeout);
+                                                     params_.port, stats_, params_.silence_timeout);
 
   drivers::SerialTransport::Options options;
   options.port = params_.port;
   options.baud = static_cast<unsigned>(params_.baud);
-  options.max_backoff = std::chrono::milliseconds(
-      static_cast<long>(std::lround(params_.reconnect_backoff * 1000.0)));
+  options.max_backoff =
+      std::chrono::milliseconds(static_cast<long>(std::lround(params_.reconnect_backoff * 1000.0)));
   drivers::SerialTransport::Callbacks callbacks;
   callbacks.on_bytes = [this](const char* data, std::size_t size) { onBytes(data, size); };
   callbacks.on_connected = [this] { onConnected(); };
@@ -69,7 +68,9 @@ UbloxAoaDriverNode::UbloxAoaDriverNode(ros::NodeHandle& nh, ros::NodeHandle& pri
   transport_->start();
 }
 
-UbloxAoaDriverNode::~UbloxAoaDriverNode() { transport_->stop(); }
+UbloxAoaDriverNode::~UbloxAoaDriverNode() {
+  transport_->stop();
+}
 
 void UbloxAoaDriverNode::onConnected() {
   stats_.connected = true;
@@ -97,8 +98,7 @@ void UbloxAoaDriverNode::onBytes(const char* data, std::size_t size) {
 
 bool UbloxAoaDriverNode::accepted(const std::string& tag_id) const {
   return params_.tag_ids.empty() ||
-         std::find(params_.tag_ids.begin(), params_.tag_ids.end(), tag_id) !=
-             params_.tag_ids.end();
+         std::find(params_.tag_ids.begin(), params_.tag_ids.end(), tag_id) != params_.tag_ids.end();
 }
 
 void UbloxAoaDriverNode::onLine(std::string_view line, double stamp) {

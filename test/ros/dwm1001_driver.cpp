@@ -2,6 +2,8 @@
 // The real dwm1001_driver node against a fake DWM1001 on a pseudo-terminal: shell
 // dialogue, decoding, rejection of cut lines, and recovery after unplug/replug at the
 // same symlink path without restarting the node.
+#include "radio_follow/ros/dwm1001_driver.hpp"
+
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 
@@ -11,6 +13,7 @@
 #include "../support/fake_dwm1001.hpp"
 #include "radio_follow/UwbRanges.h"
 #include "radio_follow/UwbTagLocation.h"
+#include "radio_follow/common/param_error.hpp"
 
 namespace radio_follow {
 namespace {
@@ -35,6 +38,33 @@ bool spinUntil(Predicate predicate, double timeout = 20.0) {
     ros::WallDuration(0.01).sleep();
   }
   return false;
+}
+
+TEST(Dwm1001DriverParams, Validation) {
+  Dwm1001DriverNode::Params p;
+  EXPECT_THROW(p.validate(), ParamError);  // no port
+  p.port = "/dev/dwm1001_5722";
+  EXPECT_NO_THROW(p.validate());
+  auto invalid = [&p](auto change, const std::string& name) {
+    Dwm1001DriverNode::Params q = p;
+    change(q);
+    try {
+      q.validate();
+      ADD_FAILURE() << name << " accepted";
+    } catch (const ParamError& e) {
+      EXPECT_EQ(e.name(), name);
+    }
+  };
+  invalid([](auto& q) { q.output_mode = "lep"; }, "output_mode");
+  invalid([](auto& q) { q.baud = 0; }, "baud");
+  invalid([](auto& q) { q.configure = false; }, "frame_id");  // no frame, no tag_id
+  invalid([](auto& q) { q.reconnect_backoff = 0.0; }, "reconnect_backoff");
+  invalid([](auto& q) { q.silence_timeout = -1.0; }, "silence_timeout");
+  invalid([](auto& q) { q.shell_timeout = 0.0; }, "shell_timeout");
+  invalid([](auto& q) { q.max_line_length = 10; }, "max_line_length");
+  p.configure = false;
+  p.tag_id = "5722";
+  EXPECT_NO_THROW(p.validate());
 }
 
 TEST(Dwm1001Driver, ConfiguresDecodesAndRecoversFromReplug) {

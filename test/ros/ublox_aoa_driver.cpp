@@ -2,6 +2,8 @@
 // The real ublox_aoa_driver node against a fake u-connectLocate board on a
 // pseudo-terminal: init commands, tag filtering, azimuth sign, rejection of cut lines,
 // and recovery after unplug/replug at the same symlink path.
+#include "radio_follow/ros/ublox_aoa_driver.hpp"
+
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 
@@ -12,6 +14,7 @@
 
 #include "../support/pty_device.hpp"
 #include "radio_follow/AoaBearing.h"
+#include "radio_follow/common/param_error.hpp"
 
 namespace radio_follow {
 namespace {
@@ -39,9 +42,11 @@ test::PtyDevice::Behaviour boardBehaviour() {
     ++*count;
     switch (*count % 5) {
       case 0:
-        return std::string("+UUDF:CCF9578E0D8A,-42,20,-10,-43,37,\"CCF9578E0D89\",\",\",15869,23\r\n");
+        return std::string(
+            "+UUDF:CCF9578E0D8A,-42,20,-10,-43,37,\"CCF9578E0D89\",\",\",15869,23\r\n");
       case 1:
-        return std::string("+UUDF:0123456789AB,-60,-30,5,-61,38,\"CCF9578E0D89\",\"\",15870,24\r\n");
+        return std::string(
+            "+UUDF:0123456789AB,-60,-30,5,-61,38,\"CCF9578E0D89\",\"\",15870,24\r\n");
       case 2:
         return std::string("+UUDFP:CCF9578E0D8A,\"0201060303AAFE\"\r\n");
       case 3:
@@ -54,6 +59,33 @@ test::PtyDevice::Behaviour boardBehaviour() {
   return b;
 }
 
+TEST(UbloxAoaDriverParams, Validation) {
+  UbloxAoaDriverNode::Params p;
+  EXPECT_THROW(p.validate(), ParamError);  // no port, no frame
+  p.port = "/dev/aoa_front";
+  p.frame_id = "aoa_front";
+  p.tag_ids = {"CCF9578E0D8A"};
+  p.init_commands = {"AT+UDFENABLE=1"};
+  EXPECT_NO_THROW(p.validate());
+  auto invalid = [&p](auto change, const std::string& name) {
+    UbloxAoaDriverNode::Params q = p;
+    change(q);
+    try {
+      q.validate();
+      ADD_FAILURE() << name << " accepted";
+    } catch (const ParamError& e) {
+      EXPECT_EQ(e.name(), name);
+    }
+  };
+  invalid([](auto& q) { q.frame_id.clear(); }, "frame_id");
+  invalid([](auto& q) { q.tag_ids = {"CCF9578E0D8"}; }, "tag_ids");
+  invalid([](auto& q) { q.tag_ids = {"CCF9578E0D8G"}; }, "tag_ids");
+  invalid([](auto& q) { q.init_commands = {"AT\r"}; }, "init_commands");
+  invalid([](auto& q) { q.init_commands = {""}; }, "init_commands");
+  invalid([](auto& q) { q.reconnect_backoff = 11.0; }, "reconnect_backoff");
+  invalid([](auto& q) { q.baud = -1; }, "baud");
+}
+
 TEST(UbloxAoaDriver, FiltersConvertsAndRecoversFromReplug) {
   ros::NodeHandle nh;
   ros::NodeHandle private_nh("~");
@@ -64,13 +96,13 @@ TEST(UbloxAoaDriver, FiltersConvertsAndRecoversFromReplug) {
   std::set<std::string> tags;
   AoaBearing last;
   int count = 0;
-  ros::Subscriber sub = nh.subscribe<AoaBearing>("aoa_front/bearing", 100,
-                                                 [&](const AoaBearing::ConstPtr& msg) {
-                                                   std::lock_guard<std::mutex> lock(mutex);
-                                                   tags.insert(msg->tag_id);
-                                                   last = *msg;
-                                                   ++count;
-                                                 });
+  ros::Subscriber sub =
+      nh.subscribe<AoaBearing>("aoa_front/bearing", 100, [&](const AoaBearing::ConstPtr& msg) {
+        std::lock_guard<std::mutex> lock(mutex);
+        tags.insert(msg->tag_id);
+        last = *msg;
+        ++count;
+      });
 
   test::PtyDevice device(port, boardBehaviour());
   ASSERT_TRUE(spinUntil([&] { return count >= 10; }));

@@ -8,14 +8,14 @@ namespace radio_follow::drivers {
 
 /// A plain copy of DriverStats at one instant.
 struct DriverStatsSnapshot {
-  std::uint64_t bytes = 0;           ///< bytes received
-  std::uint64_t messages = 0;        ///< measurements decoded and published
-  std::uint64_t ignored = 0;         ///< lines that carry no measurement (echoes, banners)
-  std::uint64_t rejected = 0;        ///< lines that looked like data but did not decode
-  std::uint64_t overflows = 0;       ///< over-long lines discarded by the framer
-  std::uint64_t filtered = 0;        ///< valid measurements dropped by configuration
-  std::uint64_t reconnects = 0;      ///< successful re-opens after a lost device
-  double last_data_time = 0.0;       ///< receive time of the last byte, s; 0 = never
+  std::uint64_t bytes = 0;       ///< bytes received
+  std::uint64_t messages = 0;    ///< measurements decoded and published
+  std::uint64_t ignored = 0;     ///< lines that carry no measurement (echoes, banners)
+  std::uint64_t rejected = 0;    ///< lines that looked like data but did not decode
+  std::uint64_t overflows = 0;   ///< over-long lines discarded by the framer
+  std::uint64_t filtered = 0;    ///< valid measurements dropped by configuration
+  std::uint64_t reconnects = 0;  ///< successful re-opens after a lost device
+  double last_data_time = 0.0;   ///< receive time of the last byte, s; 0 = never
   bool connected = false;
 };
 

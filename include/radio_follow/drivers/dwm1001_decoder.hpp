@@ -10,11 +10,11 @@ namespace radio_follow::drivers {
 
 /// One anchor's entry in a DWM1001 tag output line.
 struct DwmAnchorRange {
-  std::string id;          ///< 4 hex digits, upper case, e.g. "0CA8"
-  double x = 0.0;          ///< anchor position from the anchor's own configuration, m
+  std::string id;  ///< 4 hex digits, upper case, e.g. "0CA8"
+  double x = 0.0;  ///< anchor position from the anchor's own configuration, m
   double y = 0.0;
   double z = 0.0;
-  double range = 0.0;      ///< measured tag-anchor distance, m (uncorrected)
+  double range = 0.0;  ///< measured tag-anchor distance, m (uncorrected)
 };
 
 /// The position the module computed itself (`est[...]` / `POS,...`).
@@ -42,7 +42,7 @@ struct DwmMeasurement {
 /// What a line turned out to be.
 enum class DwmLineStatus {
   kMeasurement,    ///< `out` holds ranges and/or a position
-  kIgnored,        ///< blank, prompt/command echo, banner, `[INF]` log line
+  kIgnored,        ///< blank, prompt/command echo, banner, `[INF]` log line, `DIST,0`
   kMalformed,      ///< looks like data but a field does not parse (cut or merged line)
   kCountMismatch,  ///< lec: DIST count differs from the anchors listed
 };

@@ -17,9 +17,9 @@ class LineFramer {
  public:
   /// Counters since construction (or reset()).
   struct Counters {
-    std::uint64_t bytes = 0;        ///< bytes fed
-    std::uint64_t lines = 0;        ///< non-empty lines delivered
-    std::uint64_t overflows = 0;    ///< over-long lines discarded
+    std::uint64_t bytes = 0;      ///< bytes fed
+    std::uint64_t lines = 0;      ///< non-empty lines delivered
+    std::uint64_t overflows = 0;  ///< over-long lines discarded
   };
 
   explicit LineFramer(std::size_t max_line_length = 1024) : max_line_length_(max_line_length) {}

@@ -10,13 +10,13 @@ namespace radio_follow::drivers {
 /// One u-connectLocate angle-of-arrival event, in the device's own conventions except
 /// that angles are converted to radians.
 struct UudfEvent {
-  std::string tag_id;       ///< 12 hex digits, upper case
-  std::string anchor_id;    ///< quoted anchor field, may be empty
-  std::string user_string;  ///< quoted user-defined field, may be empty or hold commas
-  double rssi = 0.0;        ///< first polarisation, dBm
-  double azimuth = 0.0;     ///< rad, the device's sign convention (clockwise positive)
-  double elevation = 0.0;   ///< rad
-  double rssi_second = 0.0; ///< second polarisation, dBm; NaN when the field is reserved
+  std::string tag_id;        ///< 12 hex digits, upper case
+  std::string anchor_id;     ///< quoted anchor field, may be empty
+  std::string user_string;   ///< quoted user-defined field, may be empty or hold commas
+  double rssi = 0.0;         ///< first polarisation, dBm
+  double azimuth = 0.0;      ///< rad, the device's sign convention (clockwise positive)
+  double elevation = 0.0;    ///< rad
+  double rssi_second = 0.0;  ///< second polarisation, dBm; NaN when the field is reserved
   std::uint8_t channel = 0;
   std::uint32_t timestamp_ms = 0;
   std::int64_t event_counter = -1;  ///< -1 when the firmware does not send it
@@ -24,9 +24,9 @@ struct UudfEvent {
 
 /// What a line turned out to be.
 enum class UudfLineStatus {
-  kEvent,       ///< `out` holds a decoded event
-  kIgnored,     ///< blank, `OK`, AT echo, `+UUDFP:` advertising data, other URCs
-  kMalformed,   ///< starts like `+UUDF:` but does not decode (cut, merged, bad field)
+  kEvent,      ///< `out` holds a decoded event
+  kIgnored,    ///< blank, `OK`, AT echo, `+UUDFP:` advertising data, other URCs
+  kMalformed,  ///< starts like `+UUDF:` but does not decode (cut, merged, bad field)
 };
 
 /// Short name of a status, for logs and diagnostics.

@@ -23,17 +23,17 @@ namespace radio_follow {
 class Dwm1001DriverNode {
  public:
   struct Params {
-    std::string port;                  ///< device path (udev symlink), required
+    std::string port;  ///< device path (udev symlink), required
     int baud = 115200;
-    bool configure = true;             ///< run the shell dialogue; false = only listen
-    std::string output_mode = "lec";   ///< "lec" or "les"
-    std::string tag_id;                ///< used when configure is false ("" = unknown)
-    std::string frame_id;              ///< "" = "uwb_<tag id>"
+    bool configure = true;            ///< run the shell dialogue; false = only listen
+    std::string output_mode = "lec";  ///< "lec" or "les"
+    std::string tag_id;               ///< used when configure is false ("" = unknown)
+    std::string frame_id;             ///< "" = "uwb_<tag id>"
     std::string network_frame_id = "uwb_network";
-    double reconnect_backoff = 1.0;    ///< s, longest wait between open attempts
-    double silence_timeout = 2.0;      ///< s
-    double shell_timeout = 2.0;        ///< s per dialogue step before it restarts
-    int max_line_length = 1024;        ///< bytes
+    double reconnect_backoff = 1.0;  ///< s, longest wait between open attempts
+    double silence_timeout = 2.0;    ///< s
+    double shell_timeout = 2.0;      ///< s per dialogue step before it restarts
+    int max_line_length = 1024;      ///< bytes
 
     void load(const ros::NodeHandle& private_nh);
     void validate() const;

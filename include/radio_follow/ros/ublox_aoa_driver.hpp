@@ -21,7 +21,7 @@ namespace radio_follow {
 class UbloxAoaDriverNode {
  public:
   struct Params {
-    std::string port;                        ///< device path (udev symlink), required
+    std::string port;  ///< device path (udev symlink), required
     int baud = 115200;
     std::string frame_id;                    ///< the board's frame, required
     std::vector<std::string> tag_ids;        ///< accepted tags (12 hex digits); empty = all

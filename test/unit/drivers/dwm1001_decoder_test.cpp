@@ -68,10 +68,12 @@ TEST(Dwm1001Decoder, WithoutPositionPartAndFewAnchors) {
   ASSERT_EQ(m.ranges.size(), 2u);
   EXPECT_EQ(m.ranges[1].id, "0CA8");  // normalised to upper case
   EXPECT_FALSE(m.has_position);
-  ASSERT_EQ(decodeDwmLine("DIST,1,AN0,DA12,0.00,0.00,0.00,0.45", m),
-            DwmLineStatus::kMeasurement);
+  ASSERT_EQ(decodeDwmLine("DIST,1,AN0,DA12,0.00,0.00,0.00,0.45", m), DwmLineStatus::kMeasurement);
   ASSERT_EQ(m.ranges.size(), 1u);
   EXPECT_FALSE(m.has_position);
+  ASSERT_EQ(decodeDwmLine("DIST,0,POS,1.00,2.00,3.00,50", m), DwmLineStatus::kMeasurement);
+  EXPECT_TRUE(m.ranges.empty());
+  EXPECT_EQ(m.position.quality, 50);
 }
 
 TEST(Dwm1001Decoder, NegativeAndMultiDigitCoordinatesAndManyAnchors) {
@@ -93,12 +95,11 @@ TEST(Dwm1001Decoder, NegativeAndMultiDigitCoordinatesAndManyAnchors) {
 
 TEST(Dwm1001Decoder, IgnoresShellChatter) {
   DwmMeasurement m;
-  for (const char* line : {"", "   ", "dwm> ", "dwm> les", "dwm> si", "les", "lec",
-                           "DWM1001 TWR Real Time Location System",
-                           "Copyright :  2016-2019 LEAPS and Decawave",
-                           "Help      :  ? or help",
-                           "[000007.930 INF] sys: fw2 fw_ver=x01030001 cfg_ver=x00010700",
-                           "[000008.340 INF] cfg: sync=0 fwup=0 ble=1 leds=1 label=DW5722"}) {
+  for (const char* line :
+       {"", "   ", "dwm> ", "dwm> les", "dwm> si", "les", "lec",
+        "DWM1001 TWR Real Time Location System", "Copyright :  2016-2019 LEAPS and Decawave",
+        "Help      :  ? or help", "[000007.930 INF] sys: fw2 fw_ver=x01030001 cfg_ver=x00010700",
+        "[000008.340 INF] cfg: sync=0 fwup=0 ble=1 leds=1 label=DW5722", "DIST,0"}) {
     EXPECT_EQ(decodeDwmLine(line, m), DwmLineStatus::kIgnored) << line;
   }
 }
@@ -106,35 +107,34 @@ TEST(Dwm1001Decoder, IgnoresShellChatter) {
 TEST(Dwm1001Decoder, RejectsTruncatedMergedAndInconsistentLines) {
   DwmMeasurement m;
   const std::vector<std::string> bad = {
-      kLes.substr(0, 30),                                    // cut inside an anchor
-      kLes.substr(0, kLes.size() - 1),                       // est without ']'
-      kLes.substr(20),                                       // start lost
-      kLes.substr(0, 60) + kLes,                             // two lines run together
-      kLes + kLes,                                           // est followed by more
-      kLec.substr(0, kLec.size() - 4),                       // POS quality missing
-      kLec.substr(0, 40),                                    // cut inside anchor 1
-      kLec + "," + kLec,                                     // merged lec lines
-      "DIST,3,AN0,1151,5.00,8.00,2.25,6.48",                 // count says 3, one listed
+      kLes.substr(0, 30),                     // cut inside an anchor
+      kLes.substr(0, kLes.size() - 1),        // est without ']'
+      kLes.substr(20),                        // start lost
+      kLes.substr(0, 60) + kLes,              // two lines run together
+      kLes + kLes,                            // est followed by more
+      kLec.substr(0, kLec.size() - 4),        // POS quality missing
+      kLec.substr(0, 40),                     // cut inside anchor 1
+      kLec + "," + kLec,                      // merged lec lines
+      "DIST,3,AN0,1151,5.00,8.00,2.25,6.48",  // count says 3, one listed
       "DIST,1,AN0,1151,5.00,8.00,2.25,6.48,AN1,0CA8,0.00,8.00,2.25,6.51",  // count 1, two
       "DIST,2,AN0,1151,5.00,8.00,2.25,6.48,AN2,0CA8,0.00,8.00,2.25,6.51",  // AN index gap
-      "DIST,1,AN0,1151,5.00,8.00,2.25,6.48,",               // trailing empty field
-      "POS,2.57,1.98,1.68",                                  // lep without quality
-      "POS,2.57,1.98,1.68,101",                              // quality out of range
-      "POS,nan,1.98,1.68,100",                               // not finite
-      "1151[5.00,8.00,2.25]=-6.48",                          // negative range
-      "1151[5.00,8.00]=6.48",                                // two coordinates
-      "115[5.00,8.00,2.25]=6.48",                            // 3-digit ID
-      "le_us=2576 1151[5.00,8.00,2.25]=6.48",                // anchors after le_us
-      "1151[5.00,8.00,2.25]=6.48 le_us=25x6",                // bad integer
-      "8.00,2.25,6.48,AN1,0CA8",                             // lec fragment
+      "DIST,1,AN0,1151,5.00,8.00,2.25,6.48,",                              // trailing empty field
+      "POS,2.57,1.98,1.68",                                                // lep without quality
+      "POS,2.57,1.98,1.68,101",                                            // quality out of range
+      "POS,nan,1.98,1.68,100",                                             // not finite
+      "1151[5.00,8.00,2.25]=-6.48",                                        // negative range
+      "1151[5.00,8.00]=6.48",                                              // two coordinates
+      "115[5.00,8.00,2.25]=6.48",                                          // 3-digit ID
+      "le_us=2576 1151[5.00,8.00,2.25]=6.48",                              // anchors after le_us
+      "1151[5.00,8.00,2.25]=6.48 le_us=25x6",                              // bad integer
+      "8.00,2.25,6.48,AN1,0CA8",                                           // lec fragment
   };
   for (const std::string& line : bad) {
     const DwmLineStatus status = decodeDwmLine(line, m);
     EXPECT_TRUE(status == DwmLineStatus::kMalformed || status == DwmLineStatus::kCountMismatch)
         << line << " -> " << toString(status);
   }
-  EXPECT_EQ(decodeDwmLine("DIST,3,AN0,1151,5.00,8.00,2.25,6.48", m),
-            DwmLineStatus::kCountMismatch);
+  EXPECT_EQ(decodeDwmLine("DIST,3,AN0,1151,5.00,8.00,2.25,6.48", m), DwmLineStatus::kCountMismatch);
 }
 
 // Every real line, split into two chunks at every byte boundary, must come out of the

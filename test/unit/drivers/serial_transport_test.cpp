@@ -73,7 +73,8 @@ TEST(SerialTransport, ReadsWritesAndSurvivesUnplugReplug) {
   EXPECT_EQ(transport.state(), SerialTransport::State::kOpen);
 
   transport.write("ping\r");
-  ASSERT_TRUE(events.waitFor([&] { return events.bytes.find("echo:ping\r") != std::string::npos; }));
+  ASSERT_TRUE(
+      events.waitFor([&] { return events.bytes.find("echo:ping\r") != std::string::npos; }));
   device.send("hello\n");
   ASSERT_TRUE(events.waitFor([&] { return events.bytes.find("hello\n") != std::string::npos; }));
 
@@ -95,7 +96,8 @@ TEST(SerialTransport, ReadsWritesAndSurvivesUnplugReplug) {
   device.send("again\n");
   ASSERT_TRUE(events.waitFor([&] { return events.bytes.find("again\n") != std::string::npos; }));
   transport.write("pong\r");
-  ASSERT_TRUE(events.waitFor([&] { return events.bytes.find("echo:pong\r") != std::string::npos; }));
+  ASSERT_TRUE(
+      events.waitFor([&] { return events.bytes.find("echo:pong\r") != std::string::npos; }));
   EXPECT_EQ(device.received().find("lost"), std::string::npos);
 
   transport.stop();

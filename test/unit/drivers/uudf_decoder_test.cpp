@@ -70,11 +70,11 @@ TEST(UudfDecoder, IgnoresNonEvents) {
 TEST(UudfDecoder, RejectsBrokenEvents) {
   UudfEvent e;
   const std::vector<std::string> bad = {
-      kThesis.substr(0, 30),                       // cut
-      kThesis.substr(0, kThesis.size() - 9),       // cut after the user string
-      kThesis + kThesis,                           // merged
-      kThesis + ",7",                              // 11 fields
-      "+UUDF:CCF9578E0D8A,-42,20,0,-43,37,\"CCF9578E0D89\",\"\"",      // no timestamp
+      kThesis.substr(0, 30),                                            // cut
+      kThesis.substr(0, kThesis.size() - 9),                            // cut after the user string
+      kThesis + kThesis,                                                // merged
+      kThesis + ",7",                                                   // 11 fields
+      "+UUDF:CCF9578E0D8A,-42,20,0,-43,37,\"CCF9578E0D89\",\"\"",       // no timestamp
       "+UUDF:CCF9578E0D8,-42,20,0,-43,37,\"CCF9578E0D89\",\"\",15869",  // 11-digit tag
       "+UUDF:CCF9578E0D8A,-42,x,0,-43,37,\"CCF9578E0D89\",\"\",15869",  // bad azimuth
       "+UUDF:CCF9578E0D8A,-42,200,0,-43,37,\"A\",\"\",15869",           // azimuth > 180
