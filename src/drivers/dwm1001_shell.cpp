@@ -80,6 +80,14 @@ std::string Dwm1001Shell::onTick(double now) {
   return enter(State::kWaitPrompt, now, "\r\r");
 }
 
+std::string Dwm1001Shell::onSilence(double now) {
+  if (state_ != State::kStreaming) {
+    return {};  // the other states have their own step timeout
+  }
+  ++restarts_;
+  return enter(State::kWaitPrompt, now, "\r\r");
+}
+
 std::string Dwm1001Shell::stopText() const {
   return state_ == State::kStreaming ? stream_command_ + "\rquit\r" : std::string("quit\r");
 }

@@ -203,7 +203,13 @@ void Dwm1001DriverNode::onShellTimer(const ros::TimerEvent&) {
   std::string text;
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    text = shell_.onTick(ros::Time::now().toSec());
+    const double now = ros::Time::now().toSec();
+    text = shell_.onTick(now);
+    // A module that reset mid-stream is back in its binary API and says nothing:
+    // run the dialogue again rather than only warning.
+    if (text.empty() && stats_.connected && now - stats_.last_data_time > params_.silence_timeout) {
+      text = shell_.onSilence(now);
+    }
   }
   if (!text.empty()) {
     transport_->write(text);

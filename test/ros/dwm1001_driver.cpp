@@ -129,6 +129,19 @@ TEST(Dwm1001Driver, ConfiguresDecodesAndRecoversFromReplug) {
               (ros::WallTime::now() - replugged).toSec());
   // The dialogue ran again on the new PTY (received() accumulates over both).
   EXPECT_EQ(device.received(), dialogue + "\r\rsi\rlec\r");
+
+  // The module resets while connected (brown-out): silent, back in its binary API.
+  // After silence_timeout the driver runs the dialogue again on the open port.
+  device.locked([&] { module.powerCycle(); });
+  ros::WallDuration(0.2).sleep();
+  ros::spinOnce();
+  {
+    std::lock_guard<std::mutex> lock(rx.mutex);
+    before = rx.ranges;
+  }
+  ASSERT_TRUE(spinUntil([&] { return rx.ranges >= before + 3; }))
+      << "no data after module reset; device saw: " << device.received();
+  EXPECT_EQ(device.received(), dialogue + dialogue + dialogue);
 }
 
 }  // namespace

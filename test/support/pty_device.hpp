@@ -86,6 +86,13 @@ class PtyDevice {
     return received_;
   }
 
+  /// Runs `fn` while the behaviour callbacks are held off (to change the fake's state).
+  template <typename Fn>
+  void locked(Fn&& fn) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    fn();
+  }
+
   /// Emits `bytes` now (outside the periodic schedule).
   void send(const std::string& bytes) {
     std::lock_guard<std::mutex> lock(mutex_);

@@ -33,6 +33,9 @@ class Dwm1001Shell {
   std::string onPending(std::string_view pending, double now);
   /// Periodic check; returns text to send when a step timed out.
   std::string onTick(double now);
+  /// The streaming module has been silent too long (e.g. it reset and fell back to its
+  /// binary API): returns the wake-up text and restarts the dialogue; nothing otherwise.
+  std::string onSilence(double now);
   /// Text that stops the stream and leaves the shell (sent on shutdown). The stream
   /// commands toggle, so sending the same one again stops it.
   std::string stopText() const;

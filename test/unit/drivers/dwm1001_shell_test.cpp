@@ -51,6 +51,19 @@ TEST(Dwm1001Shell, SilentModuleRestartsDialogue) {
   EXPECT_EQ(shell.state(), State::kWaitPrompt);
 }
 
+TEST(Dwm1001Shell, SilentStreamRestartsDialogue) {
+  Dwm1001Shell shell("lec", 2.0);
+  EXPECT_EQ(shell.onSilence(0.0), "");  // not streaming yet: the step timeout applies
+  shell.onConnected(0.0);
+  shell.onLine("dwm> ", 0.1);
+  shell.onLine("[000008.340 INF] cfg: label=DW5722", 0.2);
+  ASSERT_EQ(shell.onLine("dwm> ", 0.3), "lec\r");
+  EXPECT_EQ(shell.onSilence(5.0), "\r\r");
+  EXPECT_EQ(shell.state(), State::kWaitPrompt);
+  EXPECT_EQ(shell.restarts(), 1u);
+  EXPECT_EQ(shell.onSilence(5.5), "");  // already restarting
+}
+
 TEST(Dwm1001Shell, DisconnectStopsDialogueAndReconnectStartsOver) {
   Dwm1001Shell shell("lec", 2.0);
   shell.onConnected(0.0);
