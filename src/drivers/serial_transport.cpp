@@ -5,6 +5,7 @@
 #include <boost/asio/post.hpp>
 #include <boost/asio/read.hpp>
 #include <boost/asio/write.hpp>
+#include <memory>
 #include <utility>
 
 namespace radio_follow::drivers {
@@ -35,19 +36,21 @@ void SerialTransport::stop(std::chrono::milliseconds drain) {
   if (!thread_.joinable()) {
     return;
   }
-  // Give queued writes (e.g. the command that stops a stream) a chance to leave.
+  // Give queued writes (e.g. the command that stops a stream) a chance to leave. The
+  // flags are shared: a check still queued when the deadline passes must not write to
+  // this frame's stack.
   const auto deadline = std::chrono::steady_clock::now() + drain;
   while (std::chrono::steady_clock::now() < deadline) {
-    std::atomic<bool> empty{false};
-    std::atomic<bool> answered{false};
-    asio::post(io_, [&] {
-      empty = write_queue_.empty();
-      answered = true;
+    auto empty = std::make_shared<std::atomic<bool>>(false);
+    auto answered = std::make_shared<std::atomic<bool>>(false);
+    asio::post(io_, [this, empty, answered] {
+      *empty = write_queue_.empty();
+      *answered = true;
     });
-    while (!answered && std::chrono::steady_clock::now() < deadline) {
+    while (!*answered && std::chrono::steady_clock::now() < deadline) {
       std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
-    if (!answered || empty) {
+    if (!*answered || *empty) {
       break;
     }
   }
