@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <ros/ros.h>
+
+#include <functional>
+#include <string>
+
+#include "radio_follow/drivers/driver_stats.hpp"
+
+namespace radio_follow {
+
+/// Diagnostics and silence watchdog shared by the device drivers. Once a second it
+/// publishes one status (message rate, lines rejected/ignored, overflows, reconnects,
+/// seconds since data) and warns, throttled, when a connected device has been silent
+/// for longer than `silence_timeout`. `stats.last_data_time` must be in ROS time
+/// seconds (the drivers set it on every chunk and on connect).
+class DriverDiagnostics {
+ public:
+  /// Adds node-specific key/values (e.g. the module's ID) to the status.
+  using Extra = std::function<void(diagnostic_updater::DiagnosticStatusWrapper&)>;
+
+  DriverDiagnostics(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const std::string& name,
+                    const std::string& hardware_id, const drivers::DriverStats& stats,
+                    double silence_timeout, Extra extra = {});
+
+ private:
+  void tick(const ros::TimerEvent& event);
+  void produce(diagnostic_updater::DiagnosticStatusWrapper& status);
+
+  const drivers::DriverStats& stats_;
+  double silence_timeout_;
+  Extra extra_;
+  diagnostic_updater::Updater updater_;
+  ros::Timer timer_;
+  drivers::DriverStatsSnapshot previous_;
+  double previous_time_ = 0.0;
+  double rate_ = 0.0;
+};
+
+}  // namespace radio_follow

@@ -1,0 +1,106 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/drivers/uudf_decoder.hpp"
+
+#include <limits>
+
+#include "radio_follow/common/angles.hpp"
+#include "radio_follow/drivers/text_fields.hpp"
+
+namespace radio_follow::drivers {
+namespace {
+
+constexpr std::string_view kEventPrefix = "+UUDF:";
+
+// Reads `"text"` followed by ',' from the front of `rest` into `out`.
+bool takeQuoted(std::string_view& rest, std::string& out) {
+  if (rest.empty() || rest.front() != '"') {
+    return false;
+  }
+  const std::size_t close = rest.find('"', 1);
+  if (close == std::string_view::npos || close + 1 >= rest.size() || rest[close + 1] != ',') {
+    return false;
+  }
+  out.assign(rest.data() + 1, close - 1);
+  rest.remove_prefix(close + 2);
+  return true;
+}
+
+bool takePlain(std::string_view& rest, std::string_view& field) {
+  const std::size_t comma = rest.find(',');
+  if (comma == std::string_view::npos) {
+    return false;
+  }
+  field = rest.substr(0, comma);
+  rest.remove_prefix(comma + 1);
+  return true;
+}
+
+bool parseAngle(std::string_view field, double& out) {
+  double degrees = 0.0;
+  if (!parseFiniteDouble(field, degrees) || degrees < -180.0 || degrees > 180.0) {
+    return false;
+  }
+  out = deg2rad(degrees);
+  return true;
+}
+
+}  // namespace
+
+const char* toString(UudfLineStatus status) {
+  switch (status) {
+    case UudfLineStatus::kEvent:
+      return "event";
+    case UudfLineStatus::kIgnored:
+      return "ignored";
+    case UudfLineStatus::kMalformed:
+      return "malformed";
+  }
+  return "unknown";
+}
+
+UudfLineStatus decodeUudfLine(std::string_view line, UudfEvent& out) {
+  while (!line.empty() && line.back() == ' ') {
+    line.remove_suffix(1);
+  }
+  if (!startsWith(line, "+UUDF")) {
+    // OK, AT echoes, +STARTUP and other responses carry no measurement. A cut line
+    // that lost its start cannot be told from noise either, so it lands here too.
+    return UudfLineStatus::kIgnored;
+  }
+  if (startsWith(line, "+UUDFP:")) {
+    return UudfLineStatus::kIgnored;  // periodic advertising payload, not an angle
+  }
+  if (!startsWith(line, kEventPrefix)) {
+    return UudfLineStatus::kMalformed;
+  }
+  std::string_view rest = line.substr(kEventPrefix.size());
+  std::string_view f;
+  double rssi2 = 0.0;  // stays 0 (= reserved) when the field is empty
+  unsigned channel = 0;
+  if (!takePlain(rest, f) || !isHexId(f, 12)) {
+    return UudfLineStatus::kMalformed;
+  }
+  assignUpperHex(f, out.tag_id);
+  if (!takePlain(rest, f) || !parseFiniteDouble(f, out.rssi) || !takePlain(rest, f) ||
+      !parseAngle(f, out.azimuth) || !takePlain(rest, f) || !parseAngle(f, out.elevation) ||
+      !takePlain(rest, f) || !(f.empty() || parseFiniteDouble(f, rssi2)) || !takePlain(rest, f) ||
+      !parseInteger(f, channel) || channel > 39 || !takeQuoted(rest, out.anchor_id) ||
+      !takeQuoted(rest, out.user_string)) {
+    return UudfLineStatus::kMalformed;
+  }
+  // Older firmware sends a reserved 0 where newer sends the second polarisation's RSSI;
+  // a real RSSI is always negative.
+  out.rssi_second = rssi2 < 0.0 ? rssi2 : std::numeric_limits<double>::quiet_NaN();
+  out.channel = static_cast<std::uint8_t>(channel);
+  FieldCursor tail(rest, ',');
+  if (!tail.next(f) || !parseInteger(f, out.timestamp_ms)) {
+    return UudfLineStatus::kMalformed;
+  }
+  out.event_counter = -1;
+  if (tail.next(f) && (!parseInteger(f, out.event_counter) || out.event_counter < 0)) {
+    return UudfLineStatus::kMalformed;
+  }
+  return tail.done() ? UudfLineStatus::kEvent : UudfLineStatus::kMalformed;
+}
+
+}  // namespace radio_follow::drivers
