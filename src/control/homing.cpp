@@ -108,8 +108,13 @@ std::optional<Eigen::Vector2d> ParallaxEstimator::update(const Eigen::Vector2d& 
   if ((robot - first_->first).norm() < min_baseline_) {
     return std::nullopt;
   }
+  // Nearly parallel rays: keep the first reading and wait for more parallax.
+  if (std::abs(std::sin(bearing - first_->second)) < std::sin(min_angle_)) {
+    return std::nullopt;
+  }
   goal_ = intersect(first_->first, first_->second, robot, bearing, min_angle_);
-  // Unusable pair (parallel rays): restart from this reading rather than wait forever.
+  // Rays that meet behind the first position mean one reading was wrong: start over
+  // from this one instead of keeping a bad anchor forever.
   if (!goal_) {
     first_ = std::make_pair(robot, bearing);
   }
