@@ -54,6 +54,15 @@ void ControllerCommonParams::load(const ros::NodeHandle& pnh) {
   pnh.param("avoidance/turn_rate", avoidance.turn_rate, avoidance.turn_rate);
 }
 
+void loadPidGains(const ros::NodeHandle& pnh, const std::string& ns, control::PidGains& gains) {
+  pnh.param(ns + "/kp", gains.kp, gains.kp);
+  pnh.param(ns + "/ki", gains.ki, gains.ki);
+  pnh.param(ns + "/kd", gains.kd, gains.kd);
+  pnh.param(ns + "/integral_limit", gains.integral_limit, gains.integral_limit);
+  pnh.param(ns + "/derivative_time_constant", gains.derivative_time_constant,
+            gains.derivative_time_constant);
+}
+
 void ControllerCommonParams::validate() const {
   require(!cmd_vel_topic.empty(), "~cmd_vel_topic", cmd_vel_topic, "a topic name");
   require(rate >= 1.0 && rate <= 200.0, "~rate", rate, "a rate in [1, 200] Hz");

@@ -14,6 +14,7 @@
 #include "radio_follow/UwbRanges.h"
 #include "radio_follow/control/follower_state.hpp"
 #include "radio_follow/control/obstacle_avoidance.hpp"
+#include "radio_follow/control/pid.hpp"
 #include "radio_follow/control/rate_limiter.hpp"
 #include "radio_follow/control/safety_monitor.hpp"
 
@@ -37,6 +38,11 @@ struct ControllerCommonParams {
   void load(const ros::NodeHandle& private_nh);
   void validate() const;
 };
+
+/// Reads `<ns>/kp`, `ki`, `kd`, `integral_limit`, `derivative_time_constant` into `gains`
+/// (the output limit is set by the node from its speed limits).
+void loadPidGains(const ros::NodeHandle& private_nh, const std::string& ns,
+                  control::PidGains& gains);
 
 /// The safety layer and plumbing shared by the three controllers: raw-range safety stop
 /// (published from the range callback, not only at the next tick), enable service and
