@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/ros/params.hpp"
 
 extern char** environ;
 
@@ -33,7 +34,7 @@ std::string findExecutable(const std::string& command) {
 }
 
 void AnnouncerNode::Params::load(const ros::NodeHandle& pnh) {
-  pnh.param("status_topics", status_topics, status_topics);
+  loadStringList(pnh, "status_topics", status_topics);
   pnh.param("command", command, command);
   pnh.param("voice", voice, voice);
   pnh.param("words_per_minute", words_per_minute, words_per_minute);

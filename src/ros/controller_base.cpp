@@ -10,6 +10,7 @@
 
 #include "radio_follow/FollowerStatus.h"
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/ros/params.hpp"
 
 namespace radio_follow {
 namespace {
@@ -33,7 +34,7 @@ void ControllerCommonParams::load(const ros::NodeHandle& pnh) {
   pnh.param("cmd_vel_topic", cmd_vel_topic, cmd_vel_topic);
   pnh.param("rate", rate, rate);
   pnh.param("start_enabled", start_enabled, start_enabled);
-  pnh.param("range_topics", range_topics, range_topics);
+  loadStringList(pnh, "range_topics", range_topics);
   pnh.param("target_anchor_id", target_anchor_id, target_anchor_id);
   target_anchor_id = upper(target_anchor_id);
   pnh.param("use_scan", use_scan, use_scan);
