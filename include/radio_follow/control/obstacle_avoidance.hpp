@@ -34,7 +34,7 @@ SectorRanges scanSectors(const std::vector<float>& ranges, double angle_min,
                          double angle_increment, double range_min, double range_max);
 
 /// Bends or stops `command`; it only ever lowers the forward speed.
-/// Rules (the paper's flowchart rebuilt from its text, doc/control/avoidance.md):
+/// Rules (the paper's flowchart rebuilt from its text, doc/control/homing.md, "Obstacle avoidance"):
 ///  1. centre or centre 2 below stop_threshold: no forward motion, turn in place to
 ///     the freer side;
 ///  2. centre below obstacle_threshold: forward speed scaled by how far the obstacle is
