@@ -77,7 +77,7 @@ std::optional<Eigen::Vector2d> ParallaxEstimator::intersect(const Eigen::Vector2
     return std::nullopt;
   }
   const Eigen::Vector2d dr = r2 - r1;
-  const double baseline = dr.norm();                               // eq 9
+  const double baseline = dr.norm();  // eq 9
   const double heading = std::atan2(dr.y(), dr.x());
   const double d1 = -baseline * std::sin(heading - b2) / crossing;  // eq 8
   if (!(d1 > 0.0)) {
@@ -90,8 +90,8 @@ Eigen::Vector2d ParallaxEstimator::kohonenStep(const Eigen::Vector2d& old_goal,
                                                const Eigen::Vector2d& robot, double bearing,
                                                double k) {
   const Eigen::Vector2d rel = old_goal - robot;
-  const double d_o = rel.norm();                                                // eq 13
-  const double d_e = d_o * std::sin(std::atan2(rel.y(), rel.x()) - bearing);    // eq 12
+  const double d_o = rel.norm();                                                       // eq 13
+  const double d_e = d_o * std::sin(std::atan2(rel.y(), rel.x()) - bearing);           // eq 12
   return old_goal + k * d_e * Eigen::Vector2d(std::sin(bearing), -std::cos(bearing));  // 10-11
 }
 
@@ -132,8 +132,7 @@ void HomingParams::validate() const {
   require(positive(error_threshold), "~error_threshold", error_threshold, "a ratio > 0");
   require(positive(z_threshold), "~z_threshold", z_threshold, "a z value > 0");
   require(positive(arrival_distance), "~arrival_distance", arrival_distance, "metres > 0");
-  require(positive(agreement_distance), "~agreement_distance", agreement_distance,
-          "metres > 0");
+  require(positive(agreement_distance), "~agreement_distance", agreement_distance, "metres > 0");
   require(positive(max_linear), "~max_linear", max_linear, "a speed > 0 in m/s");
   require(positive(linear_gain), "~linear_gain", linear_gain, "a gain > 0 in 1/s");
   require(positive(angular_gain), "~angular_gain", angular_gain, "a gain > 0 in 1/s");

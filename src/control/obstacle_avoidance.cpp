@@ -23,8 +23,8 @@ void AvoidanceParams::validate() const {
           "a yaw rate > 0 in rad/s");
 }
 
-SectorRanges scanSectors(const std::vector<float>& ranges, double angle_min,
-                         double angle_increment, double range_min, double range_max) {
+SectorRanges scanSectors(const std::vector<float>& ranges, double angle_min, double angle_increment,
+                         double range_min, double range_max) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   SectorRanges s{kInf, kInf, kInf, kInf};
   const double side = deg2rad(30.0);
@@ -61,8 +61,8 @@ VelocityCommand avoidObstacles(const VelocityCommand& command, const SectorRange
     out.linear = 0.0;
     out.angular = freer_side * params.turn_rate;
   } else if (command.linear > 0.0 && front < params.obstacle_threshold) {
-    const double scale = (front - params.stop_threshold) /
-                         (params.obstacle_threshold - params.stop_threshold);
+    const double scale =
+        (front - params.stop_threshold) / (params.obstacle_threshold - params.stop_threshold);
     out.linear = command.linear * std::clamp(scale, 0.0, 1.0);
     out.angular = freer_side * params.turn_rate;
   }

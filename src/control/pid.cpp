@@ -17,8 +17,8 @@ void PidGains::validate(const std::string& prefix) const {
           integral_limit, "a finite limit >= 0");
   require(std::isfinite(derivative_time_constant) && derivative_time_constant >= 0.0,
           prefix + ".derivative_time_constant", derivative_time_constant, "seconds >= 0");
-  require(std::isfinite(output_limit) && output_limit > 0.0, prefix + ".output_limit",
-          output_limit, "a finite limit > 0");
+  require(std::isfinite(output_limit) && output_limit > 0.0, prefix + ".output_limit", output_limit,
+          "a finite limit > 0");
 }
 
 double Pid::update(double error, double dt) {

@@ -15,12 +15,12 @@ void VelocityLawParams::validate() const {
           follow_distance, "a distance > 0 in metres");
   require(std::isfinite(slowdown_distance) && slowdown_distance > 0.0, "~slowdown_distance",
           slowdown_distance, "a distance > 0 in metres");
-  require(degraded_speed_factor >= 0.0 && degraded_speed_factor <= 1.0,
-          "~degraded_speed_factor", degraded_speed_factor, "a factor in [0, 1]");
+  require(degraded_speed_factor >= 0.0 && degraded_speed_factor <= 1.0, "~degraded_speed_factor",
+          degraded_speed_factor, "a factor in [0, 1]");
   require(std::isfinite(max_linear) && max_linear > 0.0, "~max_linear", max_linear,
           "a speed > 0 in m/s");
-  require(backwards_angle > kPi / 2.0 && backwards_angle < kPi, "~backwards_angle",
-          backwards_angle, "an angle in (pi/2, pi) rad");
+  require(backwards_angle > kPi / 2.0 && backwards_angle < kPi, "~backwards_angle", backwards_angle,
+          "an angle in (pi/2, pi) rad");
   require(backwards_cycles >= 1, "~backwards_cycles", backwards_cycles, "a count >= 1");
   linear.validate("~linear_pid");
   angular.validate("~angular_pid");

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/ros/announcer.hpp"
+
 #include "radio_follow/ros/node_main.hpp"
 
 int main(int argc, char** argv) {

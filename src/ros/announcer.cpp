@@ -46,8 +46,8 @@ void AnnouncerNode::Params::validate() const {
   require(!status_topics.empty(), "~status_topics", status_topics.size(),
           "at least one FollowerStatus topic");
   require(!command.empty(), "~command", command, "an executable name");
-  require(words_per_minute >= 80 && words_per_minute <= 450, "~words_per_minute",
-          words_per_minute, "80 .. 450");
+  require(words_per_minute >= 80 && words_per_minute <= 450, "~words_per_minute", words_per_minute,
+          "80 .. 450");
   require(repeat_interval >= 0.0, "~repeat_interval", repeat_interval, "seconds >= 0");
   require(max_queued >= 1, "~max_queued", max_queued, "a count >= 1");
 }
@@ -62,8 +62,8 @@ AnnouncerNode::AnnouncerNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
       queue_(params_.repeat_interval, static_cast<std::size_t>(params_.max_queued)),
       executable_(findExecutable(params_.command)) {
   if (executable_.empty()) {
-    ROS_WARN("%s: '%s' not found; status texts are only printed",
-             ros::this_node::getName().c_str(), params_.command.c_str());
+    ROS_WARN("%s: '%s' not found; status texts are only printed", ros::this_node::getName().c_str(),
+             params_.command.c_str());
   }
   for (const auto& topic : params_.status_topics) {
     subs_.push_back(nh.subscribe(topic, 10, &AnnouncerNode::onStatus, this));

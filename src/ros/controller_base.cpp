@@ -20,7 +20,9 @@ namespace {
 // flag is the single piece of it, written by the handler and read by the timer.
 std::atomic<bool> stop_requested{false};
 
-void requestStop(int /*signal*/) { stop_requested = true; }
+void requestStop(int /*signal*/) {
+  stop_requested = true;
+}
 
 std::string upper(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(),
@@ -137,12 +139,14 @@ void ControllerBase::onRanges(const std::string& topic, const UwbRanges::ConstPt
 }
 
 void ControllerBase::onScan(const sensor_msgs::LaserScan::ConstPtr& msg) {
-  sectors_ = control::scanSectors(msg->ranges, msg->angle_min, msg->angle_increment,
-                                  msg->range_min, msg->range_max);
+  sectors_ = control::scanSectors(msg->ranges, msg->angle_min, msg->angle_increment, msg->range_min,
+                                  msg->range_max);
   scan_stamp_ = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;
 }
 
-void ControllerBase::onEnableTopic(const std_msgs::Bool::ConstPtr& msg) { setEnabled(msg->data); }
+void ControllerBase::onEnableTopic(const std_msgs::Bool::ConstPtr& msg) {
+  setEnabled(msg->data);
+}
 
 bool ControllerBase::onEnableService(std_srvs::SetBool::Request& req,
                                      std_srvs::SetBool::Response& res) {
@@ -190,7 +194,7 @@ void ControllerBase::onTick(const ros::TimerEvent& event) {
   const control::SafetyDecision decision = monitor_.evaluate(now.toSec());
   if (!decision.may_move) {
     stopNow(decision.reason);
-    ++safety_stops_;
+    ++stopped_ticks_;
     diagnostics_.update();
     return;
   }
@@ -209,8 +213,7 @@ void ControllerBase::onTick(const ros::TimerEvent& event) {
                         ros::this_node::getName().c_str(), common_.scan_timeout);
     }
   }
-  const control::VelocityCommand cmd =
-      control::gateCommand(decision, limiter_.update(request, dt));
+  const control::VelocityCommand cmd = control::gateCommand(decision, limiter_.update(request, dt));
   publishCommand(cmd);
   publishStatus(out.state, out.text.empty() ? control::defaultText(out.state) : out.text);
   diagnostics_.update();
@@ -246,7 +249,7 @@ void ControllerBase::diagnose(diagnostic_updater::DiagnosticStatusWrapper& statu
                      : DiagnosticStatus::WARN,
                  status_text_);
   status.add("state", static_cast<int>(state_));
-  status.add("safety stop ticks", safety_stops_);
+  status.add("stopped ticks", stopped_ticks_);
 }
 
 }  // namespace radio_follow

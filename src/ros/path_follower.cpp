@@ -137,13 +137,13 @@ ControllerBase::Output PathFollowerNode::compute(const ros::Time& now, double dt
   if (path_.points().size() != before) {
     publishPath(now);
   }
-  const control::PursuitTarget goal = control::purePursuit(path_.points(), *robot,
-                                                           params_.lookahead);
+  const control::PursuitTarget goal =
+      control::purePursuit(path_.points(), *robot, params_.lookahead);
   const double gap = path_.lengthFrom(robot->position()) - law_params_.follow_distance;
   const double alpha = std::atan2(goal.local.y(), goal.local.x());
   double speed = std::max(0.0, speed_pid_.update(gap, dt));
-  speed = std::min(speed, control::slowdownCap(gap, law_params_.slowdown_distance,
-                                               law_params_.max_linear));
+  speed = std::min(
+      speed, control::slowdownCap(gap, law_params_.slowdown_distance, law_params_.max_linear));
   speed *= std::max(0.0, std::cos(alpha));
   if (estimate_->status == TargetEstimate::STATUS_DEGRADED) {
     speed *= law_params_.degraded_speed_factor;
@@ -151,8 +151,8 @@ ControllerBase::Output PathFollowerNode::compute(const ros::Time& now, double dt
   out.command.linear = speed;
   // Pure pursuit steers along the arc; a goal behind the robot (after it stopped and the
   // person walked around it) needs turning in place first.
-  out.command.angular = std::abs(alpha) > 0.5 * M_PI ? params_.turn_gain * alpha
-                                                      : speed * goal.curvature;
+  out.command.angular =
+      std::abs(alpha) > 0.5 * M_PI ? params_.turn_gain * alpha : speed * goal.curvature;
   if (gap <= 0.0) {
     out.state = control::FollowerState::kArrived;
     out.text = "At follow distance, waiting.";

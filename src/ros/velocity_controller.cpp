@@ -41,10 +41,8 @@ bool estimateUsable(const TargetEstimate& estimate) {
 }
 
 VelocityControllerNode::VelocityControllerNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
-    : ControllerBase(nh, private_nh, true),
-      law_(loadVelocityLawParams(private_nh, common())) {
-  estimate_sub_ =
-      nh_.subscribe("target_estimate", 5, &VelocityControllerNode::onEstimate, this);
+    : ControllerBase(nh, private_nh, true), law_(loadVelocityLawParams(private_nh, common())) {
+  estimate_sub_ = nh_.subscribe("target_estimate", 5, &VelocityControllerNode::onEstimate, this);
   start();
 }
 

@@ -53,11 +53,12 @@ int main(int argc, char** argv) {
   }
   try {
     const auto fit = radio_follow::control::fitRssiModel(samples);
-    std::printf("samples: %zu\nrssi_at_1m: %.2f dBm\npath-loss exponent n: %.3f\n"
-                "rms residual: %.2f dB\n\n# homing_controller parameters\n"
-                "rssi_at_1m: %.2f\nrssi_exponent: %.3f\n",
-                fit.samples, fit.model.rssi_at_1m, fit.model.exponent, fit.rms_residual_db,
-                fit.model.rssi_at_1m, fit.model.exponent);
+    std::printf(
+        "samples: %zu\nrssi_at_1m: %.2f dBm\npath-loss exponent n: %.3f\n"
+        "rms residual: %.2f dB\n\n# homing_controller parameters\n"
+        "rssi_at_1m: %.2f\nrssi_exponent: %.3f\n",
+        fit.samples, fit.model.rssi_at_1m, fit.model.exponent, fit.rms_residual_db,
+        fit.model.rssi_at_1m, fit.model.exponent);
   } catch (const std::invalid_argument& e) {
     std::cerr << "fit failed: " << e.what() << "\n";
     return 1;

@@ -33,8 +33,10 @@ TEST(Announcer, SpeaksOneAtATimeAndRateLimitsRepeats) {
   ASSERT_TRUE(pnh.getParam("log", log));
   std::remove(log.c_str());
 
-  ros::Publisher velocity = nh.advertise<radio_follow::FollowerStatus>("velocity_controller/status", 10);
-  ros::Publisher homing = nh.advertise<radio_follow::FollowerStatus>("homing_controller/status", 10);
+  ros::Publisher velocity =
+      nh.advertise<radio_follow::FollowerStatus>("velocity_controller/status", 10);
+  ros::Publisher homing =
+      nh.advertise<radio_follow::FollowerStatus>("homing_controller/status", 10);
   ASSERT_TRUE(radio_follow_test::waitFor(
       [&] { return velocity.getNumSubscribers() > 0 && homing.getNumSubscribers() > 0; }, 20.0));
 
@@ -56,10 +58,12 @@ TEST(Announcer, SpeaksOneAtATimeAndRateLimitsRepeats) {
   status.text = "Following.";  // spoken moments ago: rate-limited
   velocity.publish(status);
 
-  const std::vector<std::string> expected = {
-      "start Following.",             "end Following.",
-      "start Too close, stopping.",   "end Too close, stopping.",
-      "start Homing to the target.",  "end Homing to the target."};
+  const std::vector<std::string> expected = {"start Following.",
+                                             "end Following.",
+                                             "start Too close, stopping.",
+                                             "end Too close, stopping.",
+                                             "start Homing to the target.",
+                                             "end Homing to the target."};
   ASSERT_TRUE(radio_follow_test::waitFor([&] { return readLines(log).size() >= 6; }, 20.0));
   ros::WallDuration(1.0).sleep();  // nothing more may follow
   EXPECT_EQ(readLines(log), expected);

@@ -105,8 +105,8 @@ TEST(HomingController, PublishesGoalHomesAndArrives) {
     EXPECT_NEAR(goal.pose.position.y, kTargetY, 0.3);
   }
 
-  ASSERT_TRUE(waitFor([&] { return rec.lastStatus().state == FollowerStatus::STATE_ARRIVED; },
-                      40.0))
+  ASSERT_TRUE(
+      waitFor([&] { return rec.lastStatus().state == FollowerStatus::STATE_ARRIVED; }, 40.0))
       << "last status: " << rec.lastStatus().text << ", distance " << sim.distanceToTarget();
   EXPECT_LT(sim.distanceToTarget(), 0.4);
   ros::WallDuration(0.3).sleep();
@@ -116,8 +116,8 @@ TEST(HomingController, PublishesGoalHomesAndArrives) {
   std_srvs::SetBool srv;
   srv.request.data = false;
   ASSERT_TRUE(enable.call(srv));
-  ASSERT_TRUE(waitFor([&] { return rec.lastStatus().state == FollowerStatus::STATE_DISABLED; },
-                      5.0));
+  ASSERT_TRUE(
+      waitFor([&] { return rec.lastStatus().state == FollowerStatus::STATE_DISABLED; }, 5.0));
 }
 
 }  // namespace

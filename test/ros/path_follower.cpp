@@ -109,8 +109,8 @@ TEST(PathFollower, StoresPathFollowsAndFallsBack) {
 
   // Too close on a raw range: zero at once.
   feeder.range = 0.9;
-  ASSERT_TRUE(waitFor([&] { return rec.lastStatus().state == FollowerStatus::STATE_TOO_CLOSE; },
-                      5.0));
+  ASSERT_TRUE(
+      waitFor([&] { return rec.lastStatus().state == FollowerStatus::STATE_TOO_CLOSE; }, 5.0));
   ros::WallDuration(0.2).sleep();
   EXPECT_TRUE(isZero(rec.lastCmd()));
   feeder.range = 3.0;

@@ -69,7 +69,8 @@ TEST(VelocityController, SafetyLayerAroundFollowing) {
   EXPECT_EQ(rec.lastStatus().state, FollowerStatus::STATE_DISABLED);
   EXPECT_TRUE(isZero(rec.lastCmd()));
 
-  ros::ServiceClient enable = nh.serviceClient<std_srvs::SetBool>("velocity_controller/set_enabled");
+  ros::ServiceClient enable =
+      nh.serviceClient<std_srvs::SetBool>("velocity_controller/set_enabled");
   ASSERT_TRUE(enable.waitForExistence(ros::Duration(20.0)));
   std_srvs::SetBool srv;
   srv.request.data = true;
@@ -84,8 +85,8 @@ TEST(VelocityController, SafetyLayerAroundFollowing) {
 
   // A raw range below safe_distance stops the robot although the estimate says 4 m.
   feeder.range = 1.0;
-  ASSERT_TRUE(waitFor([&] { return rec.lastStatus().state == FollowerStatus::STATE_TOO_CLOSE; },
-                      5.0));
+  ASSERT_TRUE(
+      waitFor([&] { return rec.lastStatus().state == FollowerStatus::STATE_TOO_CLOSE; }, 5.0));
   EXPECT_EQ(rec.lastStatus().text, "Too close, stopping.");
   ros::WallDuration(0.1).sleep();
   const int mark = rec.cmdCount();
@@ -102,8 +103,8 @@ TEST(VelocityController, SafetyLayerAroundFollowing) {
 
   // No estimates: stale -> target lost, zero.
   feeder.send_estimates = false;
-  ASSERT_TRUE(waitFor([&] { return rec.lastStatus().state == FollowerStatus::STATE_TARGET_LOST; },
-                      5.0));
+  ASSERT_TRUE(
+      waitFor([&] { return rec.lastStatus().state == FollowerStatus::STATE_TARGET_LOST; }, 5.0));
   ros::WallDuration(0.2).sleep();
   EXPECT_TRUE(isZero(rec.lastCmd()));
 
@@ -113,8 +114,8 @@ TEST(VelocityController, SafetyLayerAroundFollowing) {
   std_msgs::Bool off;
   off.data = false;
   enable_topic.publish(off);
-  ASSERT_TRUE(waitFor([&] { return rec.lastStatus().state == FollowerStatus::STATE_DISABLED; },
-                      5.0));
+  ASSERT_TRUE(
+      waitFor([&] { return rec.lastStatus().state == FollowerStatus::STATE_DISABLED; }, 5.0));
   ros::WallDuration(0.2).sleep();
   EXPECT_TRUE(isZero(rec.lastCmd()));
 }

@@ -1,11 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <Eigen/Core>
 #include <cstddef>
 #include <deque>
 #include <optional>
-
-#include <Eigen/Core>
 
 #include "radio_follow/control/path_follower.hpp"
 #include "radio_follow/control/rate_limiter.hpp"
@@ -76,19 +75,19 @@ class ParallaxEstimator {
 
 /// Parameters of the hybrid homing estimator and its velocity law.
 struct HomingParams {
-  double tau = 5.0;                 ///< eq 3 decay, in readings
-  int window = 20;                  ///< vector goals kept
-  double k = 0.8;                   ///< Kohonen step
-  double min_baseline = 0.2;        ///< m
-  double min_parallax_angle = 0.05; ///< rad
-  double error_threshold = 0.3;     ///< eq 14
-  double z_threshold = 1.645;       ///< 90 % one-sided
-  double arrival_distance = 0.3;    ///< m
-  double agreement_distance = 0.3;  ///< m, parallax vs vector at arrival
-  double max_linear = 0.5;          ///< m/s, v_max of eq 15
-  double linear_gain = 0.5;         ///< 1/s, speed = min(v_max, gain * distance)
-  double angular_gain = 1.0;        ///< 1/s
-  double max_angular = 1.0;         ///< rad/s
+  double tau = 5.0;                  ///< eq 3 decay, in readings
+  int window = 20;                   ///< vector goals kept
+  double k = 0.8;                    ///< Kohonen step
+  double min_baseline = 0.2;         ///< m
+  double min_parallax_angle = 0.05;  ///< rad
+  double error_threshold = 0.3;      ///< eq 14
+  double z_threshold = 1.645;        ///< 90 % one-sided
+  double arrival_distance = 0.3;     ///< m
+  double agreement_distance = 0.3;   ///< m, parallax vs vector at arrival
+  double max_linear = 0.5;           ///< m/s, v_max of eq 15
+  double linear_gain = 0.5;          ///< 1/s, speed = min(v_max, gain * distance)
+  double angular_gain = 1.0;         ///< 1/s
+  double max_angular = 1.0;          ///< rad/s
 
   void validate() const;
 };

@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
-#include <deque>
-
 #include <Eigen/Core>
+#include <deque>
 
 namespace radio_follow {
 namespace control {

@@ -106,7 +106,7 @@ class ControllerBase {
   std::string status_text_;
   std::optional<control::SectorRanges> sectors_;
   ros::Time scan_stamp_;
-  unsigned long safety_stops_ = 0;
+  unsigned long stopped_ticks_ = 0;
 
   std::vector<ros::Subscriber> range_subs_;
   ros::Subscriber scan_sub_;

@@ -25,12 +25,12 @@ class PathFollowerNode : public ControllerBase {
   struct Params {
     std::string odom_frame = "odom";
     std::string base_frame = "base_link";
-    double path_spacing = 0.1;      ///< m
+    double path_spacing = 0.1;  ///< m
     int max_path_points = 2000;
-    double lookahead = 0.6;         ///< m
-    double reached_radius = 0.3;    ///< m
-    double turn_gain = 1.5;         ///< 1/s, turning in place towards a goal behind
-    double tf_timeout = 0.05;       ///< s
+    double lookahead = 0.6;       ///< m
+    double reached_radius = 0.3;  ///< m
+    double turn_gain = 1.5;       ///< 1/s, turning in place towards a goal behind
+    double tf_timeout = 0.05;     ///< s
 
     void load(const ros::NodeHandle& private_nh);
     void validate() const;

@@ -51,8 +51,8 @@ TEST(ConfigDefaults, VelocityControllerYamlMatchesLaw) {
   EXPECT_EQ(y["allow_backwards"].as<bool>(), law.allow_backwards);
   EXPECT_NEAR(deg2rad(y["backwards_angle_deg"].as<double>()), law.backwards_angle, 1e-12);
   EXPECT_EQ(y["backwards_cycles"].as<int>(), law.backwards_cycles);
-  for (const auto& [key, gains] : {std::make_pair("linear_pid", law.linear),
-                                   std::make_pair("angular_pid", law.angular)}) {
+  for (const auto& [key, gains] :
+       {std::make_pair("linear_pid", law.linear), std::make_pair("angular_pid", law.angular)}) {
     EXPECT_DOUBLE_EQ(y[key]["kp"].as<double>(), gains.kp) << key;
     EXPECT_DOUBLE_EQ(y[key]["ki"].as<double>(), gains.ki) << key;
     EXPECT_DOUBLE_EQ(y[key]["kd"].as<double>(), gains.kd) << key;

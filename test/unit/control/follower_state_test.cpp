@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "radio_follow/control/announcement_queue.hpp"
 #include "radio_follow/control/follower_state.hpp"
 
 #include <gtest/gtest.h>
+
+#include "radio_follow/control/announcement_queue.hpp"
 
 namespace radio_follow {
 namespace control {

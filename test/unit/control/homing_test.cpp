@@ -56,8 +56,8 @@ TEST(VectorEstimator, ZTestFlagsFarPointOnly) {
 TEST(ParallaxEstimator, IntersectionOfTwoRaysRecoversTarget) {
   const Eigen::Vector2d target(4.0, 3.0);
   const Eigen::Vector2d r1(0.0, 0.0), r2(1.0, -0.5);
-  const auto goal = ParallaxEstimator::intersect(r1, bearingTo(r1, target), r2,
-                                                 bearingTo(r2, target), 0.01);
+  const auto goal =
+      ParallaxEstimator::intersect(r1, bearingTo(r1, target), r2, bearingTo(r2, target), 0.01);
   ASSERT_TRUE(goal);
   EXPECT_NEAR(goal->x(), 4.0, 1e-9);
   EXPECT_NEAR(goal->y(), 3.0, 1e-9);

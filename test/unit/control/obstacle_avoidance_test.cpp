@@ -26,13 +26,13 @@ std::vector<float> scan(double far, double near, double from, double to) {
 }
 
 TEST(ScanSectors, MinimumPerSector) {
-  const SectorRanges s = scanSectors(scan(5.0, 0.8, 40, 50), deg2rad(-90.0), deg2rad(1.0),
-                                     0.05, 10.0);
+  const SectorRanges s =
+      scanSectors(scan(5.0, 0.8, 40, 50), deg2rad(-90.0), deg2rad(1.0), 0.05, 10.0);
   EXPECT_NEAR(s.left, 0.8, 1e-6);
   EXPECT_NEAR(s.centre, 5.0, 1e-6);
   EXPECT_NEAR(s.right, 5.0, 1e-6);
-  const SectorRanges c = scanSectors(scan(5.0, 0.8, 20, 25), deg2rad(-90.0), deg2rad(1.0),
-                                     0.05, 10.0);
+  const SectorRanges c =
+      scanSectors(scan(5.0, 0.8, 20, 25), deg2rad(-90.0), deg2rad(1.0), 0.05, 10.0);
   EXPECT_NEAR(c.centre, 0.8, 1e-6);
   EXPECT_NEAR(c.centre_narrow, 5.0, 1e-6);  // 20..25 deg lies outside the middle 20 %
 }
@@ -52,8 +52,7 @@ TEST(AvoidObstacles, ClearScanChangesNothing) {
 }
 
 TEST(AvoidObstacles, StopsAndTurnsToFreerSideWhenBlocked) {
-  const VelocityCommand out =
-      avoidObstacles({0.8, 0.0}, {3.0, 0.3, 0.3, 1.0}, AvoidanceParams());
+  const VelocityCommand out = avoidObstacles({0.8, 0.0}, {3.0, 0.3, 0.3, 1.0}, AvoidanceParams());
   EXPECT_EQ(out.linear, 0.0);
   EXPECT_GT(out.angular, 0.0);  // left is freer
 }
@@ -66,8 +65,8 @@ TEST(AvoidObstacles, SlowsAndBendsForObstacleAhead) {
 }
 
 TEST(AvoidObstacles, TurnsAwayFromCloseSide) {
-  const VelocityCommand out = avoidObstacles({0.5, 0.3}, {0.3, kInf, kInf, kInf},
-                                             AvoidanceParams());
+  const VelocityCommand out =
+      avoidObstacles({0.5, 0.3}, {0.3, kInf, kInf, kInf}, AvoidanceParams());
   EXPECT_EQ(out.linear, 0.5);
   EXPECT_LT(out.angular, 0.0);
 }

@@ -44,7 +44,7 @@ TEST(Pid, FilteredDerivativeIsSmallerThanRawSlope) {
   Pid pid(g);
   pid.update(0.0, 0.1);
   const double first = pid.update(0.2, 0.1);
-  EXPECT_NEAR(first, 1.0, 1e-12);  // alpha = dt / (tau + dt) = 0.5
+  EXPECT_NEAR(first, 1.0, 1e-12);          // alpha = dt / (tau + dt) = 0.5
   EXPECT_GT(pid.update(0.4, 0.1), first);  // converges towards the raw slope 2
 }
 
