@@ -190,7 +190,12 @@ bool HybridHoming::arrived(const Eigen::Vector2d& robot) const {
   }
   const auto vector = vector_.estimate();
   const auto& parallax = parallax_.goal();
-  if (!vector || !parallax) {
+  // Bearings only (no distance ever): nothing to cross-check the parallax goal with,
+  // and refusing to arrive would leave the robot circling the goal.
+  if (!vector) {
+    return parallax.has_value();
+  }
+  if (!parallax) {
     return false;
   }
   return (*vector - *parallax).norm() < params_.agreement_distance;

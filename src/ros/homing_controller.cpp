@@ -133,7 +133,9 @@ void HomingControllerNode::onBearing(const AoaBearing::ConstPtr& msg) {
   }
   homing_.update(sensor, bearing, distance);
   last_bearing_ = bearing;
-  noteEstimate(stamp, homing_.goal().has_value());
+  // A fresh bearing is a usable observation even before a goal exists: compute() then
+  // searches along it, which is how the parallax estimate gets its baseline.
+  noteEstimate(stamp, true);
 
   if (homing_.goal()) {
     geometry_msgs::PoseStamped goal;

@@ -31,8 +31,8 @@ TEST(LayoutPublisher, PublishesStaticSensorFrames) {
   tf2_ros::Buffer buffer;
   tf2_ros::TransformListener listener(buffer);
   std::string error;
-  ASSERT_TRUE(buffer.canTransform("base_link", "uwb_5A84", ros::Time(0), ros::Duration(20.0),
-                                  &error))
+  ASSERT_TRUE(
+      buffer.canTransform("base_link", "uwb_5A84", ros::Time(0), ros::Duration(20.0), &error))
       << error;
   const auto module = buffer.lookupTransform("base_link", "uwb_5A84", ros::Time(0));
   EXPECT_NEAR(module.transform.translation.x, -0.07, 1e-9);

@@ -110,7 +110,8 @@ class HybridHoming {
   const std::optional<Eigen::Vector2d>& parallaxGoal() const { return parallax_.goal(); }
 
   /// Arrived: within arrival_distance of the goal and both estimates within
-  /// agreement_distance of each other.
+  /// agreement_distance of each other. With bearings only (no vector estimate) the
+  /// distance condition alone decides.
   bool arrived(const Eigen::Vector2d& robot) const;
 
  private:

@@ -168,6 +168,32 @@ TEST(HybridHoming, ConvergesWithNoisyReadingsAndArrives) {
   EXPECT_LT((robot.position() - target).norm(), 0.6);
 }
 
+TEST(HybridHoming, ArrivalNeedsAgreementWhenBothEstimatesExist) {
+  const Eigen::Vector2d target(3.0, 0.0);
+  HybridHoming homing{HomingParams()};
+  // Vector goals 1 m short of the parallax goal: the robot at the reported goal has
+  // not arrived while the two disagree.
+  for (int i = 0; i < 6; ++i) {
+    const Eigen::Vector2d robot(0.0, i % 2 == 0 ? -0.5 : 0.5);
+    homing.update(robot, bearingTo(robot, target), (target - robot).norm() - 1.0);
+  }
+  ASSERT_TRUE(homing.goal());
+  EXPECT_FALSE(homing.arrived(*homing.goal()));
+}
+
+TEST(HybridHoming, BearingsOnlyArriveOnDistance) {
+  const Eigen::Vector2d target(3.0, 0.0);
+  HybridHoming homing{HomingParams()};
+  const double no_distance = std::nan("");
+  homing.update({0.0, -0.5}, bearingTo({0.0, -0.5}, target), no_distance);
+  homing.update({0.0, 0.5}, bearingTo({0.0, 0.5}, target), no_distance);
+  ASSERT_TRUE(homing.goal());
+  EXPECT_FALSE(homing.vectorGoal());
+  EXPECT_EQ(homing.source(), HomingSource::kParallax);
+  EXPECT_TRUE(homing.arrived({2.9, 0.0}));
+  EXPECT_FALSE(homing.arrived({2.0, 0.0}));
+}
+
 TEST(HomingVelocity, IsEq15) {
   HomingParams params;
   params.max_linear = 0.5;
