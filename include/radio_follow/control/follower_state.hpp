@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace radio_follow {
+namespace control {
+
+/// Controller states; the numeric values equal FollowerStatus.STATE_*.
+enum class FollowerState : std::uint8_t {
+  kDisabled = 0,
+  kWaitingForTarget = 1,
+  kFollowing = 2,
+  kTooClose = 3,
+  kTargetLost = 4,
+  kArrived = 5,
+};
+
+/// Why the safety layer holds the robot (or kNone when it may move).
+enum class StopReason {
+  kNone,
+  kDisabled,
+  kNoEstimateYet,
+  kTooClose,
+  kEstimateStale,
+  kTargetLost,
+  kRangesSilent,
+};
+
+/// The state a stop reason is reported as (kNone maps to kFollowing).
+FollowerState stateFor(StopReason reason);
+
+/// A short sentence a person can hear, e.g. "Too close, stopping."
+std::string stopText(StopReason reason);
+
+/// Default sentence for a state (used when the controller gives no more specific one).
+std::string defaultText(FollowerState state);
+
+/// Remembers the last reported (state, text) so the node publishes status only on a
+/// change, as the announcer speaks each message it receives.
+class StatusTracker {
+ public:
+  /// True when (state, text) differs from the last call (always true the first time).
+  bool update(FollowerState state, const std::string& text);
+
+ private:
+  bool has_last_ = false;
+  FollowerState last_state_ = FollowerState::kDisabled;
+  std::string last_text_;
+};
+
+}  // namespace control
+}  // namespace radio_follow

@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <deque>
+#include <optional>
+
+#include "radio_follow/control/path_follower.hpp"
+#include "radio_follow/control/rate_limiter.hpp"
+
+namespace radio_follow {
+namespace control {
+
+/// Homing to a static target of unknown position from bearings and odometry
+/// (seed 000, Section 5; equation numbers refer to that paper, doc/control/homing.md).
+/// Every angle here is in the odometry frame: `bearing` = robot heading theta_r plus
+/// the sensor's angle of arrival theta_s (plus the board's mounting yaw).
+
+/// Vector estimate, eqs 1-5: goal = robot + d (cos, sin)(bearing), averaged over the
+/// last `window` goals with weights w_k = exp(-(k-1)/tau), k = 1 the newest.
+class VectorEstimator {
+ public:
+  VectorEstimator(double tau, std::size_t window);
+
+  /// The raw goal of eqs 1-2 for one reading (not stored).
+  static Eigen::Vector2d rawGoal(const Eigen::Vector2d& robot, double bearing, double distance);
+
+  /// z-test of `raw` against the stored raw goals: outlier when |z| > z_threshold on
+  /// either axis. Needs at least three stored goals; fewer means "not an outlier".
+  bool isOutlier(const Eigen::Vector2d& raw, double z_threshold) const;
+
+  void add(const Eigen::Vector2d& raw);
+  /// Weighted average (eqs 4-5); nullopt before the first reading.
+  std::optional<Eigen::Vector2d> estimate() const;
+  std::size_t size() const { return goals_.size(); }
+
+ private:
+  double tau_;
+  std::size_t window_;
+  std::deque<Eigen::Vector2d> goals_;  // newest first
+};
+
+/// Parallax estimate: intersection of the first two bearing rays (eqs 6-9), then
+/// Kohonen-style steps moving the goal towards each new bearing line (eqs 10-13).
+class ParallaxEstimator {
+ public:
+  /// `k` = step towards the new line (0.8 in seed 000); `min_baseline` = robot travel
+  /// between the two initial readings, metres; `min_angle` = smallest angle between
+  /// the two rays, rad (nearly parallel rays give a wild intersection).
+  ParallaxEstimator(double k, double min_baseline, double min_angle);
+
+  /// Feeds one reading; returns the goal once initialised.
+  std::optional<Eigen::Vector2d> update(const Eigen::Vector2d& robot, double bearing);
+  /// Overrides the goal (the hybrid rule's averaging step).
+  void set(const Eigen::Vector2d& goal) { goal_ = goal; }
+  const std::optional<Eigen::Vector2d>& goal() const { return goal_; }
+
+  /// Eqs 6-9: intersection of the ray from r1 at bearing b1 with the ray from r2 at b2;
+  /// nullopt when the rays are parallel or meet behind r1.
+  static std::optional<Eigen::Vector2d> intersect(const Eigen::Vector2d& r1, double b1,
+                                                  const Eigen::Vector2d& r2, double b2,
+                                                  double min_angle);
+  /// Eqs 10-13: moves `old_goal` by k times its signed distance to the bearing line.
+  static Eigen::Vector2d kohonenStep(const Eigen::Vector2d& old_goal, const Eigen::Vector2d& robot,
+                                     double bearing, double k);
+
+ private:
+  double k_;
+  double min_baseline_;
+  double min_angle_;
+  std::optional<std::pair<Eigen::Vector2d, double>> first_;
+  std::optional<Eigen::Vector2d> goal_;
+};
+
+/// Parameters of the hybrid homing estimator and its velocity law.
+struct HomingParams {
+  double tau = 5.0;                  ///< eq 3 decay, in readings
+  int window = 20;                   ///< vector goals kept
+  double k = 0.8;                    ///< Kohonen step
+  double min_baseline = 0.2;         ///< m
+  double min_parallax_angle = 0.05;  ///< rad
+  double error_threshold = 0.3;      ///< eq 14
+  double z_threshold = 1.645;        ///< 90 % one-sided
+  double arrival_distance = 0.3;     ///< m
+  double agreement_distance = 0.3;   ///< m, parallax vs vector at arrival
+  double max_linear = 0.5;           ///< m/s, v_max of eq 15
+  double linear_gain = 0.5;          ///< 1/s, speed = min(v_max, gain * distance)
+  double angular_gain = 1.0;         ///< 1/s
+  double max_angular = 1.0;          ///< rad/s
+
+  void validate() const;
+};
+
+/// Which estimate the hybrid rule reported.
+enum class HomingSource { kNone, kVector, kParallax, kAverage };
+
+/// The hybrid rule of seed 000 Section 5.3.
+class HybridHoming {
+ public:
+  explicit HybridHoming(const HomingParams& params);
+
+  /// One reading at robot position `robot` with world bearing `bearing` and an
+  /// estimated distance (NaN when none: the vector estimate then skips this reading).
+  void update(const Eigen::Vector2d& robot, double bearing, double distance);
+
+  const std::optional<Eigen::Vector2d>& goal() const { return goal_; }
+  HomingSource source() const { return source_; }
+  std::optional<Eigen::Vector2d> vectorGoal() const { return vector_.estimate(); }
+  const std::optional<Eigen::Vector2d>& parallaxGoal() const { return parallax_.goal(); }
+
+  /// Arrived: within arrival_distance of the goal and both estimates within
+  /// agreement_distance of each other. With bearings only (no vector estimate) the
+  /// distance condition alone decides.
+  bool arrived(const Eigen::Vector2d& robot) const;
+
+ private:
+  HomingParams params_;
+  VectorEstimator vector_;
+  ParallaxEstimator parallax_;
+  std::optional<Eigen::Vector2d> goal_;
+  HomingSource source_ = HomingSource::kNone;
+};
+
+/// Eq 14: distance between the parallax and vector goals over the mean of their
+/// distances to the robot.
+double homingErrorMetric(const Eigen::Vector2d& parallax, const Eigen::Vector2d& vector,
+                         const Eigen::Vector2d& robot);
+
+/// Eq 15 with proportional turning: v = (2/pi) v (pi/2 - |theta_g|), zero beyond
+/// +-pi/2, where v = min(max_linear, linear_gain * distance); w = angular_gain * theta_g.
+VelocityCommand homingVelocity(const Pose2& robot, const Eigen::Vector2d& goal,
+                               const HomingParams& params);
+
+}  // namespace control
+}  // namespace radio_follow

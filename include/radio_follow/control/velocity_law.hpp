@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <string>
+
+#include "radio_follow/control/pid.hpp"
+#include "radio_follow/control/rate_limiter.hpp"
+
+namespace radio_follow {
+namespace control {
+
+/// Parameters of the "drive straight to the target" law (thesis Section 4.6).
+struct VelocityLawParams {
+  /// Desired gap to the target, metres.
+  double follow_distance = 1.6;
+  /// The speed cap ramps from 0 at follow_distance to max_linear at
+  /// follow_distance + slowdown_distance, metres: the robot slows smoothly as the gap closes.
+  double slowdown_distance = 1.0;
+  /// Linear speed is multiplied by this while the estimate is DEGRADED.
+  double degraded_speed_factor = 0.5;
+  /// Maximum forward speed, m/s (also the linear PID's output limit).
+  double max_linear = 1.0;
+  /// Drive backwards when the target stays behind the robot (reversible robots only).
+  bool allow_backwards = false;
+  /// |bearing| beyond this angle from the current driving direction counts as "behind", rad.
+  double backwards_angle = 2.6179938779914944;  // 150 deg
+  /// Consecutive "behind" cycles before the driving direction switches.
+  int backwards_cycles = 5;
+  PidGains linear{0.8, 0.05, 0.1, 0.3, 0.2, 1.0};
+  PidGains angular{1.5, 0.0, 0.1, 0.3, 0.1, 1.0};
+
+  void validate() const;
+};
+
+/// Target as the law sees it: range and bearing in the robot frame.
+struct TargetPolar {
+  double range = 0.0;    ///< m
+  double bearing = 0.0;  ///< rad, CCW from the robot's x axis
+  /// false for HEADING_ONLY estimates: turn towards the target, never drive forward.
+  bool range_valid = true;
+  bool degraded = false;
+};
+
+/// PID on (range - follow_distance) for speed and on the heading error for yaw rate.
+/// It never backs away to grow the gap: the speed is zero, not negative, when the
+/// target is closer than follow_distance. With allow_backwards the reference direction
+/// flips to the robot's rear once the target stayed behind for backwards_cycles cycles.
+class VelocityLaw {
+ public:
+  explicit VelocityLaw(const VelocityLawParams& params);
+
+  VelocityCommand update(const TargetPolar& target, double dt);
+  void reset();
+
+  bool driving_backwards() const { return backwards_; }
+  /// True when the last update found the target at (or inside) the follow distance.
+  bool arrived() const { return arrived_; }
+
+ private:
+  VelocityLawParams params_;
+  Pid linear_pid_;
+  Pid angular_pid_;
+  bool backwards_ = false;
+  int behind_count_ = 0;
+  bool arrived_ = false;
+};
+
+/// Speed cap that falls linearly from `max_speed` to 0 as `gap` (distance beyond the
+/// follow distance) shrinks from `slowdown_distance` to 0.
+double slowdownCap(double gap, double slowdown_distance, double max_speed);
+
+}  // namespace control
+}  // namespace radio_follow

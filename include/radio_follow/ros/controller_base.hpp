@@ -1,0 +1,122 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <ros/ros.h>
+#include <sensor_msgs/LaserScan.h>
+#include <std_msgs/Bool.h>
+#include <std_srvs/SetBool.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "radio_follow/UwbRanges.h"
+#include "radio_follow/control/follower_state.hpp"
+#include "radio_follow/control/obstacle_avoidance.hpp"
+#include "radio_follow/control/pid.hpp"
+#include "radio_follow/control/rate_limiter.hpp"
+#include "radio_follow/control/safety_monitor.hpp"
+
+namespace radio_follow {
+
+/// Parameters every controller shares (doc/nodes/velocity_controller.md lists them).
+struct ControllerCommonParams {
+  std::string cmd_vel_topic = "cmd_vel";
+  double rate = 20.0;  ///< Hz
+  bool start_enabled = false;
+  /// UwbRanges topics whose raw ranges feed the safety stop.
+  std::vector<std::string> range_topics{"uwb_ranges"};
+  /// Anchor carried by the target; empty = every anchor counts.
+  std::string target_anchor_id;
+  bool use_scan = false;
+  double scan_timeout = 0.5;  ///< s
+  control::SafetyParams safety;
+  control::MotionLimits limits;
+  control::AvoidanceParams avoidance;
+
+  void load(const ros::NodeHandle& private_nh);
+  void validate() const;
+};
+
+/// Reads `<ns>/kp`, `ki`, `kd`, `integral_limit`, `derivative_time_constant` into `gains`
+/// (the output limit is set by the node from its speed limits).
+void loadPidGains(const ros::NodeHandle& private_nh, const std::string& ns,
+                  control::PidGains& gains);
+
+/// The safety layer and plumbing shared by the three controllers: raw-range safety stop
+/// (published from the range callback, not only at the next tick), enable service and
+/// topic, status on change, optional laser-scan avoidance, rate and acceleration
+/// limits, cmd_vel at a fixed rate, and a last zero command on SIGINT/SIGTERM.
+///
+/// A derived node loads and validates its own parameters, creates its subscribers and
+/// then calls start(); the base calls compute() on every tick in which the safety
+/// monitor allows motion.
+class ControllerBase {
+ public:
+  virtual ~ControllerBase() = default;
+  ControllerBase(const ControllerBase&) = delete;
+  ControllerBase& operator=(const ControllerBase&) = delete;
+
+ protected:
+  /// What the control law wants this tick.
+  struct Output {
+    control::VelocityCommand command;
+    control::FollowerState state = control::FollowerState::kFollowing;
+    std::string text;
+  };
+
+  /// Loads and validates the common parameters (throws ParamError); subscribes nothing.
+  /// `watch_ranges_default` decides whether ranges are watched when ~range_topics is unset.
+  ControllerBase(ros::NodeHandle& nh, ros::NodeHandle& private_nh, bool watch_ranges_default);
+
+  /// Creates the shared subscribers, service, publishers and timer.
+  void start();
+
+  /// The control law; `dt` seconds since the previous tick.
+  virtual Output compute(const ros::Time& now, double dt) = 0;
+  /// Called when the safety layer takes over, so laws can reset their integrators.
+  virtual void onStopped() {}
+
+  /// Feeds the safety monitor with an estimate (or a bearing, for homing).
+  void noteEstimate(const ros::Time& stamp, bool usable);
+
+  const ControllerCommonParams& common() const { return common_; }
+
+  ros::NodeHandle nh_;
+  ros::NodeHandle private_nh_;
+
+ private:
+  void onRanges(const std::string& topic, const UwbRanges::ConstPtr& msg);
+  void onScan(const sensor_msgs::LaserScan::ConstPtr& msg);
+  void onEnableTopic(const std_msgs::Bool::ConstPtr& msg);
+  bool onEnableService(std_srvs::SetBool::Request& req, std_srvs::SetBool::Response& res);
+  void setEnabled(bool enabled);
+  void onTick(const ros::TimerEvent& event);
+  void stopNow(control::StopReason reason);
+  void publishCommand(const control::VelocityCommand& cmd);
+  void publishStatus(control::FollowerState state, const std::string& text);
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
+
+  ControllerCommonParams common_;
+  control::SafetyMonitor monitor_;
+  control::CommandLimiter limiter_;
+  control::StatusTracker status_tracker_;
+  control::FollowerState state_ = control::FollowerState::kDisabled;
+  std::string status_text_;
+  std::optional<control::SectorRanges> sectors_;
+  ros::Time scan_stamp_;
+  unsigned long stopped_ticks_ = 0;
+
+  std::vector<ros::Subscriber> range_subs_;
+  ros::Subscriber scan_sub_;
+  ros::Subscriber enable_sub_;
+  ros::ServiceServer enable_srv_;
+  ros::Publisher cmd_pub_;
+  ros::Publisher status_pub_;
+  ros::Timer timer_;
+  diagnostic_updater::Updater diagnostics_;
+  bool shutting_down_ = false;
+};
+
+}  // namespace radio_follow

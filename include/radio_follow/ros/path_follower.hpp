@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <nav_msgs/Path.h>
+#include <ros/ros.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
+
+#include <optional>
+#include <string>
+
+#include "radio_follow/TargetEstimate.h"
+#include "radio_follow/control/path_follower.hpp"
+#include "radio_follow/control/pid.hpp"
+#include "radio_follow/control/velocity_law.hpp"
+#include "radio_follow/ros/controller_base.hpp"
+
+namespace radio_follow {
+
+/// path_follower (thesis Section 4.7): stores the person's path in the odometry frame
+/// and follows it with pure pursuit, keeping follow_distance along the path. Without
+/// the odometry transform it drives straight to the target and says so.
+class PathFollowerNode : public ControllerBase {
+ public:
+  struct Params {
+    std::string odom_frame = "odom";
+    std::string base_frame = "base_link";
+    double path_spacing = 0.1;  ///< m
+    int max_path_points = 2000;
+    double lookahead = 0.6;       ///< m
+    double reached_radius = 0.3;  ///< m
+    double turn_gain = 1.5;       ///< 1/s, turning in place towards a goal behind
+    double tf_timeout = 0.05;     ///< s
+
+    void load(const ros::NodeHandle& private_nh);
+    void validate() const;
+  };
+
+  PathFollowerNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh);
+
+ private:
+  Output compute(const ros::Time& now, double dt) override;
+  void onStopped() override;
+  void onEstimate(const TargetEstimate::ConstPtr& msg);
+  std::optional<control::Pose2> robotPose();
+  void publishPath(const ros::Time& stamp);
+
+  Params params_;
+  control::VelocityLawParams law_params_;
+  control::VelocityLaw fallback_law_;
+  control::Pid speed_pid_;
+  control::PathBuffer path_;
+  tf2_ros::Buffer tf_buffer_;
+  tf2_ros::TransformListener tf_listener_;
+  TargetEstimate::ConstPtr estimate_;
+  bool path_mode_ = false;  // false: the last estimate could not be put into odom
+  ros::Publisher path_pub_;
+  ros::Subscriber estimate_sub_;
+};
+
+}  // namespace radio_follow

@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <ros/ros.h>
+
+#include "radio_follow/TargetEstimate.h"
+#include "radio_follow/control/velocity_law.hpp"
+#include "radio_follow/ros/controller_base.hpp"
+
+namespace radio_follow {
+
+/// Loads the velocity law's parameters (shared by velocity_controller and the
+/// path_follower's straight-line fallback); speed limits come from `common`.
+control::VelocityLawParams loadVelocityLawParams(const ros::NodeHandle& private_nh,
+                                                 const ControllerCommonParams& common);
+
+/// Converts an estimate into the law's input (HEADING_ONLY -> no range, DEGRADED flag).
+control::TargetPolar targetPolar(const TargetEstimate& estimate);
+
+/// True for estimates the safety layer may accept (everything but LOST).
+bool estimateUsable(const TargetEstimate& estimate);
+
+/// velocity_controller (thesis Section 4.6): drives straight towards the target's
+/// estimate with PID on distance and heading, behind the shared safety layer.
+class VelocityControllerNode : public ControllerBase {
+ public:
+  VelocityControllerNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh);
+
+ private:
+  Output compute(const ros::Time& now, double dt) override;
+  void onStopped() override { law_.reset(); }
+  void onEstimate(const TargetEstimate::ConstPtr& msg);
+
+  control::VelocityLaw law_;
+  TargetEstimate::ConstPtr estimate_;
+  ros::Subscriber estimate_sub_;
+};
+
+}  // namespace radio_follow

@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/control/follower_state.hpp"
+
+namespace radio_follow {
+namespace control {
+
+FollowerState stateFor(StopReason reason) {
+  switch (reason) {
+    case StopReason::kNone:
+      return FollowerState::kFollowing;
+    case StopReason::kDisabled:
+      return FollowerState::kDisabled;
+    case StopReason::kNoEstimateYet:
+      return FollowerState::kWaitingForTarget;
+    case StopReason::kTooClose:
+      return FollowerState::kTooClose;
+    case StopReason::kEstimateStale:
+    case StopReason::kTargetLost:
+    case StopReason::kRangesSilent:
+      return FollowerState::kTargetLost;
+  }
+  return FollowerState::kTargetLost;
+}
+
+std::string stopText(StopReason reason) {
+  switch (reason) {
+    case StopReason::kNone:
+      return "Following.";
+    case StopReason::kDisabled:
+      return "Following disabled.";
+    case StopReason::kNoEstimateYet:
+      return "Waiting for the target.";
+    case StopReason::kTooClose:
+      return "Too close, stopping.";
+    case StopReason::kEstimateStale:
+      return "Target estimate too old, stopping.";
+    case StopReason::kTargetLost:
+      return "Target lost, stopping.";
+    case StopReason::kRangesSilent:
+      return "No range to the target, stopping.";
+  }
+  return "Stopping.";
+}
+
+std::string defaultText(FollowerState state) {
+  switch (state) {
+    case FollowerState::kDisabled:
+      return stopText(StopReason::kDisabled);
+    case FollowerState::kWaitingForTarget:
+      return stopText(StopReason::kNoEstimateYet);
+    case FollowerState::kFollowing:
+      return "Following.";
+    case FollowerState::kTooClose:
+      return stopText(StopReason::kTooClose);
+    case FollowerState::kTargetLost:
+      return stopText(StopReason::kTargetLost);
+    case FollowerState::kArrived:
+      return "Arrived, waiting.";
+  }
+  return "Stopping.";
+}
+
+bool StatusTracker::update(FollowerState state, const std::string& text) {
+  if (has_last_ && state == last_state_ && text == last_text_) {
+    return false;
+  }
+  has_last_ = true;
+  last_state_ = state;
+  last_text_ = text;
+  return true;
+}
+
+}  // namespace control
+}  // namespace radio_follow

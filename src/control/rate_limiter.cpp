@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/control/rate_limiter.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "radio_follow/common/param_error.hpp"
+
+namespace radio_follow {
+namespace control {
+
+void MotionLimits::validate() const {
+  const auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
+  require(positive(max_linear), "~max_linear", max_linear, "a speed > 0 in m/s");
+  require(positive(max_angular), "~max_angular", max_angular, "a yaw rate > 0 in rad/s");
+  require(positive(max_linear_accel), "~max_linear_accel", max_linear_accel,
+          "an acceleration > 0 in m/s^2");
+  require(positive(max_linear_decel), "~max_linear_decel", max_linear_decel,
+          "a deceleration > 0 in m/s^2");
+  require(positive(max_angular_accel), "~max_angular_accel", max_angular_accel,
+          "an angular acceleration > 0 in rad/s^2");
+}
+
+double RateLimiter::update(double request, double dt) {
+  if (!std::isfinite(request)) {
+    request = 0.0;
+  }
+  if (!(dt > 0.0)) {
+    return value_;
+  }
+  // Moving away from zero (same sign, larger magnitude) is acceleration; everything
+  // else, including a sign change, first has to pass through a deceleration.
+  const bool speeding_up = value_ * request >= 0.0 && std::abs(request) > std::abs(value_);
+  const double step = (speeding_up ? rise_ : fall_) * dt;
+  value_ += std::clamp(request - value_, -step, step);
+  return value_;
+}
+
+CommandLimiter::CommandLimiter(const MotionLimits& limits)
+    : limits_(limits),
+      linear_(limits.max_linear_accel, limits.max_linear_decel),
+      angular_(limits.max_angular_accel, limits.max_angular_accel) {}
+
+VelocityCommand CommandLimiter::update(const VelocityCommand& request, double dt) {
+  const double v = std::isfinite(request.linear) ? request.linear : 0.0;
+  const double w = std::isfinite(request.angular) ? request.angular : 0.0;
+  VelocityCommand out;
+  out.linear = linear_.update(std::clamp(v, -limits_.max_linear, limits_.max_linear), dt);
+  out.angular = angular_.update(std::clamp(w, -limits_.max_angular, limits_.max_angular), dt);
+  return out;
+}
+
+void CommandLimiter::reset() {
+  linear_.reset();
+  angular_.reset();
+}
+
+}  // namespace control
+}  // namespace radio_follow

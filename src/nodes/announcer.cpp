@@ -1,0 +1,8 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/ros/announcer.hpp"
+
+#include "radio_follow/ros/node_main.hpp"
+
+int main(int argc, char** argv) {
+  return radio_follow::runNode<radio_follow::AnnouncerNode>(argc, argv, "announcer");
+}

@@ -1,0 +1,165 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/ros/path_follower.hpp"
+
+#include <geometry_msgs/PointStamped.h>
+#include <tf2/utils.h>
+#include <tf2_geometry_msgs/tf2_geometry_msgs.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "radio_follow/common/param_error.hpp"
+#include "radio_follow/ros/velocity_controller.hpp"
+
+namespace radio_follow {
+
+void PathFollowerNode::Params::load(const ros::NodeHandle& pnh) {
+  pnh.param("odom_frame", odom_frame, odom_frame);
+  pnh.param("base_frame", base_frame, base_frame);
+  pnh.param("path_spacing", path_spacing, path_spacing);
+  pnh.param("max_path_points", max_path_points, max_path_points);
+  pnh.param("lookahead", lookahead, lookahead);
+  pnh.param("reached_radius", reached_radius, reached_radius);
+  pnh.param("turn_gain", turn_gain, turn_gain);
+  pnh.param("tf_timeout", tf_timeout, tf_timeout);
+}
+
+void PathFollowerNode::Params::validate() const {
+  require(!odom_frame.empty(), "~odom_frame", odom_frame, "a frame id");
+  require(!base_frame.empty(), "~base_frame", base_frame, "a frame id");
+  require(path_spacing > 0.0, "~path_spacing", path_spacing, "a spacing > 0 in metres");
+  require(max_path_points >= 2, "~max_path_points", max_path_points, "a count >= 2");
+  require(lookahead > 0.0, "~lookahead", lookahead, "a distance > 0 in metres");
+  require(reached_radius > 0.0, "~reached_radius", reached_radius, "a distance > 0 in metres");
+  require(turn_gain > 0.0, "~turn_gain", turn_gain, "a gain > 0 in 1/s");
+  require(tf_timeout >= 0.0 && tf_timeout < 1.0, "~tf_timeout", tf_timeout,
+          "a timeout in [0, 1) seconds");
+}
+
+PathFollowerNode::PathFollowerNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
+    : ControllerBase(nh, private_nh, true),
+      params_([&] {
+        Params p;
+        p.load(private_nh);
+        p.validate();
+        return p;
+      }()),
+      law_params_(loadVelocityLawParams(private_nh, common())),
+      fallback_law_(law_params_),
+      speed_pid_(law_params_.linear),
+      path_(params_.path_spacing, static_cast<std::size_t>(params_.max_path_points)),
+      tf_listener_(tf_buffer_) {
+  path_pub_ = private_nh_.advertise<nav_msgs::Path>("path", 1, true);
+  estimate_sub_ = nh_.subscribe("target_estimate", 5, &PathFollowerNode::onEstimate, this);
+  start();
+}
+
+void PathFollowerNode::onStopped() {
+  fallback_law_.reset();
+  speed_pid_.reset();
+}
+
+void PathFollowerNode::onEstimate(const TargetEstimate::ConstPtr& msg) {
+  estimate_ = msg;
+  noteEstimate(msg->header.stamp, estimateUsable(*msg));
+  // Only full positions extend the path: a HEADING_ONLY position is a guess.
+  if (msg->status != TargetEstimate::STATUS_OK && msg->status != TargetEstimate::STATUS_DEGRADED) {
+    return;
+  }
+  geometry_msgs::PointStamped in;
+  in.header = msg->header;
+  in.point = msg->position;
+  try {
+    geometry_msgs::PointStamped out;
+    tf_buffer_.transform(in, out, params_.odom_frame, ros::Duration(params_.tf_timeout));
+    path_mode_ = true;
+    if (path_.add({out.point.x, out.point.y})) {
+      publishPath(msg->header.stamp);
+    }
+  } catch (const tf2::TransformException& e) {
+    path_mode_ = false;
+    ROS_WARN_THROTTLE(5.0, "%s: no transform %s <- %s at the estimate's stamp (%s)",
+                      ros::this_node::getName().c_str(), params_.odom_frame.c_str(),
+                      msg->header.frame_id.c_str(), e.what());
+  }
+}
+
+std::optional<control::Pose2> PathFollowerNode::robotPose() {
+  try {
+    const auto t = tf_buffer_.lookupTransform(params_.odom_frame, params_.base_frame, ros::Time(0));
+    control::Pose2 pose;
+    pose.x = t.transform.translation.x;
+    pose.y = t.transform.translation.y;
+    pose.yaw = tf2::getYaw(t.transform.rotation);
+    return pose;
+  } catch (const tf2::TransformException& e) {
+    ROS_WARN_THROTTLE(5.0, "%s: no robot pose %s <- %s (%s)", ros::this_node::getName().c_str(),
+                      params_.odom_frame.c_str(), params_.base_frame.c_str(), e.what());
+    return std::nullopt;
+  }
+}
+
+void PathFollowerNode::publishPath(const ros::Time& stamp) {
+  nav_msgs::Path msg;
+  msg.header.stamp = stamp;
+  msg.header.frame_id = params_.odom_frame;
+  for (const auto& p : path_.points()) {
+    geometry_msgs::PoseStamped pose;
+    pose.header = msg.header;
+    pose.pose.position.x = p.x();
+    pose.pose.position.y = p.y();
+    pose.pose.orientation.w = 1.0;
+    msg.poses.push_back(pose);
+  }
+  path_pub_.publish(msg);
+}
+
+ControllerBase::Output PathFollowerNode::compute(const ros::Time& now, double dt) {
+  Output out;
+  const bool heading_only = estimate_->status == TargetEstimate::STATUS_HEADING_ONLY;
+  const std::optional<control::Pose2> robot = path_mode_ ? robotPose() : std::nullopt;
+  if (!robot || path_.empty() || heading_only) {
+    // Without self-localisation no path can be stored: drive straight at the target.
+    out.command = fallback_law_.update(targetPolar(*estimate_), dt);
+    if (heading_only) {
+      out.text = "Direction only, turning to the target.";
+    } else if (fallback_law_.arrived()) {
+      out.state = control::FollowerState::kArrived;
+      out.text = "At follow distance, waiting.";
+    } else {
+      out.text = "No odometry, driving straight to the target.";
+    }
+    return out;
+  }
+
+  const std::size_t before = path_.points().size();
+  path_.prune(robot->position(), params_.reached_radius);
+  if (path_.points().size() != before) {
+    publishPath(now);
+  }
+  const control::PursuitTarget goal =
+      control::purePursuit(path_.points(), *robot, params_.lookahead);
+  const double gap = path_.lengthFrom(robot->position()) - law_params_.follow_distance;
+  const double alpha = std::atan2(goal.local.y(), goal.local.x());
+  double speed = std::max(0.0, speed_pid_.update(gap, dt));
+  speed = std::min(
+      speed, control::slowdownCap(gap, law_params_.slowdown_distance, law_params_.max_linear));
+  speed *= std::max(0.0, std::cos(alpha));
+  if (estimate_->status == TargetEstimate::STATUS_DEGRADED) {
+    speed *= law_params_.degraded_speed_factor;
+  }
+  out.command.linear = speed;
+  // Pure pursuit steers along the arc; a goal behind the robot (after it stopped and the
+  // person walked around it) needs turning in place first.
+  out.command.angular =
+      std::abs(alpha) > 0.5 * M_PI ? params_.turn_gain * alpha : speed * goal.curvature;
+  if (gap <= 0.0) {
+    out.state = control::FollowerState::kArrived;
+    out.text = "At follow distance, waiting.";
+  } else {
+    out.text = "Following the path.";
+  }
+  return out;
+}
+
+}  // namespace radio_follow

@@ -1,0 +1,219 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/control/homing.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "radio_follow/common/angles.hpp"
+#include "radio_follow/common/param_error.hpp"
+
+namespace radio_follow {
+namespace control {
+namespace {
+
+double bearingTo(const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
+  const Eigen::Vector2d d = to - from;
+  return std::atan2(d.y(), d.x());
+}
+
+TEST(VectorEstimator, RawGoalIsEqs1And2) {
+  const Eigen::Vector2d g = VectorEstimator::rawGoal({1.0, 2.0}, kPi / 2.0, 3.0);
+  EXPECT_NEAR(g.x(), 1.0, 1e-12);
+  EXPECT_NEAR(g.y(), 5.0, 1e-12);
+}
+
+TEST(VectorEstimator, ExponentialWeightsFavourNewest) {
+  VectorEstimator estimator(1.0, 20);
+  estimator.add({0.0, 0.0});
+  estimator.add({1.0, 0.0});  // newest, weight 1; older weight e^-1
+  const double expected = 1.0 / (1.0 + std::exp(-1.0));
+  EXPECT_NEAR(estimator.estimate()->x(), expected, 1e-12);
+}
+
+TEST(VectorEstimator, KeepsOnlyWindow) {
+  VectorEstimator estimator(1e9, 20);  // near-uniform weights
+  for (int i = 0; i < 25; ++i) {
+    estimator.add({static_cast<double>(i), 0.0});
+  }
+  EXPECT_EQ(estimator.size(), 20u);
+  EXPECT_NEAR(estimator.estimate()->x(), 14.5, 1e-6);  // mean of 5..24
+}
+
+TEST(VectorEstimator, ZTestFlagsFarPointOnly) {
+  VectorEstimator estimator(5.0, 20);
+  std::mt19937 rng(3);
+  std::normal_distribution<double> noise(0.0, 0.1);
+  for (int i = 0; i < 20; ++i) {
+    estimator.add({5.0 + noise(rng), 2.0 + noise(rng)});
+  }
+  EXPECT_FALSE(estimator.isOutlier({5.05, 2.0}, 1.645));
+  EXPECT_TRUE(estimator.isOutlier({6.0, 2.0}, 1.645));
+  EXPECT_TRUE(estimator.isOutlier({5.0, 1.0}, 1.645));
+}
+
+TEST(ParallaxEstimator, IntersectionOfTwoRaysRecoversTarget) {
+  const Eigen::Vector2d target(4.0, 3.0);
+  const Eigen::Vector2d r1(0.0, 0.0), r2(1.0, -0.5);
+  const auto goal =
+      ParallaxEstimator::intersect(r1, bearingTo(r1, target), r2, bearingTo(r2, target), 0.01);
+  ASSERT_TRUE(goal);
+  EXPECT_NEAR(goal->x(), 4.0, 1e-9);
+  EXPECT_NEAR(goal->y(), 3.0, 1e-9);
+}
+
+TEST(ParallaxEstimator, ParallelRaysGiveNothing) {
+  EXPECT_FALSE(ParallaxEstimator::intersect({0.0, 0.0}, 0.3, {1.0, 0.0}, 0.3, 0.01));
+}
+
+TEST(ParallaxEstimator, KohonenStepWithKOneProjectsOntoBearingLine) {
+  // Bearing line along +x from the origin; old goal 1 m off the line.
+  const Eigen::Vector2d g = ParallaxEstimator::kohonenStep({3.0, 1.0}, {0.0, 0.0}, 0.0, 1.0);
+  EXPECT_NEAR(g.x(), 3.0, 1e-12);
+  EXPECT_NEAR(g.y(), 0.0, 1e-12);
+  const Eigen::Vector2d h = ParallaxEstimator::kohonenStep({3.0, 1.0}, {0.0, 0.0}, 0.0, 0.8);
+  EXPECT_NEAR(h.y(), 0.2, 1e-12);
+  const Eigen::Vector2d below = ParallaxEstimator::kohonenStep({3.0, -1.0}, {0.0, 0.0}, 0.0, 0.8);
+  EXPECT_NEAR(below.y(), -0.2, 1e-12);
+}
+
+TEST(ParallaxEstimator, WaitsForBaselineThenConverges) {
+  const Eigen::Vector2d target(5.0, 2.0);
+  ParallaxEstimator estimator(0.8, 0.2, 0.01);
+  EXPECT_FALSE(estimator.update({0.0, 0.0}, bearingTo({0.0, 0.0}, target)));
+  EXPECT_FALSE(estimator.update({0.1, 0.0}, bearingTo({0.1, 0.0}, target)));  // too short
+  const auto goal = estimator.update({0.5, 0.0}, bearingTo({0.5, 0.0}, target));
+  ASSERT_TRUE(goal);
+  EXPECT_NEAR((*goal - target).norm(), 0.0, 1e-9);
+}
+
+TEST(HomingErrorMetric, IsEq14) {
+  // Goals 1 m apart, at 4 m and 5 m from the robot: 1 / 4.5.
+  EXPECT_NEAR(homingErrorMetric({4.0, 0.0}, {5.0, 0.0}, {0.0, 0.0}), 1.0 / 4.5, 1e-12);
+}
+
+TEST(HybridHoming, AgreeingEstimatesReportParallax) {
+  const Eigen::Vector2d target(4.0, 1.0);
+  HybridHoming homing{HomingParams()};
+  for (int i = 0; i < 10; ++i) {
+    const Eigen::Vector2d robot(0.1 * i, 0.05 * i);
+    homing.update(robot, bearingTo(robot, target), (target - robot).norm());
+  }
+  EXPECT_EQ(homing.source(), HomingSource::kParallax);
+  EXPECT_NEAR((*homing.goal() - target).norm(), 0.0, 1e-6);
+}
+
+TEST(HybridHoming, DisagreementWithConsistentVectorAverages) {
+  // Distances are consistently 2 m short, so the vector goal sits 2 m before the true
+  // target while parallax finds it: err > 0.3 and the vector goal is no outlier (the
+  // robot sways sideways, its raw goals alternate) -> the average is reported and the
+  // parallax goal is pulled to it.
+  const Eigen::Vector2d target(6.0, 0.0);
+  HybridHoming homing{HomingParams()};
+  bool saw_average = false;
+  for (int i = 0; i < 8 && !saw_average; ++i) {
+    const Eigen::Vector2d robot(0.0, i % 2 == 0 ? -0.5 : 0.5);
+    homing.update(robot, bearingTo(robot, target), (target - robot).norm() - 2.0);
+    if (homing.source() == HomingSource::kAverage) {
+      saw_average = true;
+      EXPECT_EQ(*homing.goal(), *homing.parallaxGoal());
+      EXPECT_GT(homing.goal()->x(), 4.2);
+      EXPECT_LT(homing.goal()->x(), 5.8);
+    }
+  }
+  EXPECT_TRUE(saw_average);
+}
+
+TEST(HybridHoming, OutlyingVectorKeepsParallax) {
+  const Eigen::Vector2d target(6.0, 0.0);
+  HybridHoming homing{HomingParams()};
+  std::mt19937 rng(7);
+  std::normal_distribution<double> noise(0.0, 0.05);
+  Eigen::Vector2d robot(0.0, 0.0);
+  for (int i = 0; i < 20; ++i) {
+    robot = Eigen::Vector2d(0.0, 0.1 * i);
+    homing.update(robot, bearingTo(robot, target), (target - robot).norm() + noise(rng));
+  }
+  const Eigen::Vector2d before = *homing.goal();
+  robot.y() += 0.05;
+  homing.update(robot, bearingTo(robot, target), 20.0);  // wild RSSI distance
+  EXPECT_EQ(homing.source(), HomingSource::kParallax);
+  EXPECT_LT((*homing.goal() - before).norm(), 0.05);
+}
+
+TEST(HybridHoming, ConvergesWithNoisyReadingsAndArrives) {
+  const Eigen::Vector2d target(5.0, 3.0);
+  HomingParams params;
+  HybridHoming homing(params);
+  std::mt19937 rng(11);
+  std::normal_distribution<double> angle_noise(0.0, deg2rad(3.0));
+  std::normal_distribution<double> range_noise(0.0, 0.3);
+  Pose2 robot;
+  for (int i = 0; i < 400; ++i) {
+    const double distance = (target - robot.position()).norm();
+    homing.update(robot.position(), bearingTo(robot.position(), target) + angle_noise(rng),
+                  distance + range_noise(rng));
+    ASSERT_TRUE(homing.goal());
+    if (homing.arrived(robot.position())) {
+      break;
+    }
+    const VelocityCommand cmd = homingVelocity(robot, *homing.goal(), params);
+    const double dt = 0.1;
+    robot.yaw += cmd.angular * dt;
+    robot.x += cmd.linear * std::cos(robot.yaw) * dt;
+    robot.y += cmd.linear * std::sin(robot.yaw) * dt;
+  }
+  EXPECT_TRUE(homing.arrived(robot.position()));
+  EXPECT_LT((robot.position() - target).norm(), 0.6);
+}
+
+TEST(HybridHoming, ArrivalNeedsAgreementWhenBothEstimatesExist) {
+  const Eigen::Vector2d target(3.0, 0.0);
+  HybridHoming homing{HomingParams()};
+  // Vector goals 1 m short of the parallax goal: the robot at the reported goal has
+  // not arrived while the two disagree.
+  for (int i = 0; i < 6; ++i) {
+    const Eigen::Vector2d robot(0.0, i % 2 == 0 ? -0.5 : 0.5);
+    homing.update(robot, bearingTo(robot, target), (target - robot).norm() - 1.0);
+  }
+  ASSERT_TRUE(homing.goal());
+  EXPECT_FALSE(homing.arrived(*homing.goal()));
+}
+
+TEST(HybridHoming, BearingsOnlyArriveOnDistance) {
+  const Eigen::Vector2d target(3.0, 0.0);
+  HybridHoming homing{HomingParams()};
+  const double no_distance = std::nan("");
+  homing.update({0.0, -0.5}, bearingTo({0.0, -0.5}, target), no_distance);
+  homing.update({0.0, 0.5}, bearingTo({0.0, 0.5}, target), no_distance);
+  ASSERT_TRUE(homing.goal());
+  EXPECT_FALSE(homing.vectorGoal());
+  EXPECT_EQ(homing.source(), HomingSource::kParallax);
+  EXPECT_TRUE(homing.arrived({2.9, 0.0}));
+  EXPECT_FALSE(homing.arrived({2.0, 0.0}));
+}
+
+TEST(HomingVelocity, IsEq15) {
+  HomingParams params;
+  params.max_linear = 0.5;
+  params.linear_gain = 100.0;
+  const VelocityCommand ahead = homingVelocity(Pose2{}, {3.0, 0.0}, params);
+  EXPECT_NEAR(ahead.linear, 0.5, 1e-12);
+  EXPECT_NEAR(ahead.angular, 0.0, 1e-12);
+  const VelocityCommand diagonal = homingVelocity(Pose2{}, {3.0, 3.0}, params);
+  EXPECT_NEAR(diagonal.linear, 0.25, 1e-12);  // (2/pi) 0.5 (pi/2 - pi/4)
+  EXPECT_GT(diagonal.angular, 0.0);
+  EXPECT_EQ(homingVelocity(Pose2{}, {-3.0, 1.0}, params).linear, 0.0);
+}
+
+TEST(HomingParams, ValidateRejectsBadK) {
+  HomingParams params;
+  params.k = 1.5;
+  EXPECT_THROW(params.validate(), ParamError);
+  EXPECT_NO_THROW(HomingParams().validate());
+}
+
+}  // namespace
+}  // namespace control
+}  // namespace radio_follow

@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/control/path_follower.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "radio_follow/common/angles.hpp"
+
+namespace radio_follow {
+namespace control {
+namespace {
+
+TEST(PathBuffer, KeepsPointsAtLeastMinSpacingApart) {
+  PathBuffer path(0.1, 100);
+  EXPECT_TRUE(path.add({0.0, 0.0}));
+  EXPECT_FALSE(path.add({0.05, 0.0}));
+  EXPECT_TRUE(path.add({0.1, 0.0}));
+  EXPECT_FALSE(path.add({std::nan(""), 0.0}));
+  EXPECT_EQ(path.points().size(), 2u);
+}
+
+TEST(PathBuffer, DropsOldestBeyondCapacity) {
+  PathBuffer path(0.1, 3);
+  for (int i = 0; i < 5; ++i) {
+    path.add({static_cast<double>(i), 0.0});
+  }
+  ASSERT_EQ(path.points().size(), 3u);
+  EXPECT_DOUBLE_EQ(path.points().front().x(), 2.0);
+}
+
+TEST(PathBuffer, PrunesPassedPointsButKeepsNewest) {
+  PathBuffer path(0.1, 100);
+  for (int i = 0; i <= 10; ++i) {
+    path.add({0.5 * i, 0.0});
+  }
+  path.prune({2.1, 0.05}, 0.2);  // nearest is x = 2.0, reached: drop through it
+  EXPECT_DOUBLE_EQ(path.points().front().x(), 2.5);
+  path.prune({100.0, 0.0}, 0.2);
+  ASSERT_EQ(path.points().size(), 1u);
+  EXPECT_DOUBLE_EQ(path.points().front().x(), 5.0);
+}
+
+TEST(PathBuffer, LengthAlongPathFromRobot) {
+  PathBuffer path(0.1, 100);
+  path.add({1.0, 0.0});
+  path.add({1.0, 2.0});
+  path.add({3.0, 2.0});
+  EXPECT_NEAR(path.lengthFrom({0.0, 0.0}), 1.0 + 2.0 + 2.0, 1e-12);
+}
+
+TEST(PurePursuit, StraightAheadHasZeroCurvature) {
+  const std::deque<Eigen::Vector2d> path = {{0.5, 0.0}, {1.0, 0.0}, {2.0, 0.0}};
+  const PursuitTarget t = purePursuit(path, Pose2{}, 0.8);
+  ASSERT_TRUE(t.valid);
+  EXPECT_DOUBLE_EQ(t.point.x(), 1.0);
+  EXPECT_NEAR(t.curvature, 0.0, 1e-12);
+}
+
+TEST(PurePursuit, CurvatureOfArcThroughGoal) {
+  // Goal 1 m ahead, 1 m left: the circle through robot and goal tangent to x has r = 1.
+  const std::deque<Eigen::Vector2d> path = {{1.0, 1.0}};
+  const PursuitTarget t = purePursuit(path, Pose2{}, 0.5);
+  EXPECT_NEAR(t.curvature, 1.0, 1e-12);
+}
+
+TEST(PurePursuit, GoalExpressedInRobotFrame) {
+  Pose2 robot;
+  robot.x = 1.0;
+  robot.y = 1.0;
+  robot.yaw = kPi / 2.0;
+  const std::deque<Eigen::Vector2d> path = {{1.0, 3.0}};
+  const PursuitTarget t = purePursuit(path, robot, 1.0);
+  EXPECT_NEAR(t.local.x(), 2.0, 1e-12);
+  EXPECT_NEAR(t.local.y(), 0.0, 1e-12);
+  EXPECT_NEAR(t.curvature, 0.0, 1e-12);
+}
+
+TEST(PurePursuit, EmptyPathIsInvalid) {
+  EXPECT_FALSE(purePursuit({}, Pose2{}, 1.0).valid);
+}
+
+}  // namespace
+}  // namespace control
+}  // namespace radio_follow

@@ -1,0 +1,119 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/control/velocity_law.hpp"
+
+#include <gtest/gtest.h>
+
+#include "radio_follow/common/angles.hpp"
+#include "radio_follow/common/param_error.hpp"
+
+namespace radio_follow {
+namespace control {
+namespace {
+
+TargetPolar target(double range, double bearing) {
+  TargetPolar t;
+  t.range = range;
+  t.bearing = bearing;
+  return t;
+}
+
+TEST(VelocityLaw, DrivesForwardWhenTargetAheadAndFar) {
+  VelocityLaw law{VelocityLawParams()};
+  const VelocityCommand cmd = law.update(target(4.0, 0.0), 0.05);
+  EXPECT_GT(cmd.linear, 0.5);
+  EXPECT_NEAR(cmd.angular, 0.0, 1e-12);
+  EXPECT_FALSE(law.arrived());
+}
+
+TEST(VelocityLaw, NeverBacksAwayWhenTooClose) {
+  VelocityLaw law{VelocityLawParams()};
+  for (int i = 0; i < 50; ++i) {
+    EXPECT_EQ(law.update(target(1.0, 0.0), 0.05).linear, 0.0);
+  }
+  EXPECT_TRUE(law.arrived());
+}
+
+TEST(VelocityLaw, SlowsDownAsGapCloses) {
+  VelocityLaw far_law{VelocityLawParams()};
+  VelocityLaw near_law{VelocityLawParams()};
+  const double far = far_law.update(target(3.0, 0.0), 0.05).linear;
+  const double near = near_law.update(target(1.8, 0.0), 0.05).linear;
+  EXPECT_GT(far, near);
+  EXPECT_LE(near, slowdownCap(0.2, 1.0, 1.0) + 1e-12);
+}
+
+TEST(VelocityLaw, TurnsTowardsTargetOnTheLeft) {
+  VelocityLaw law{VelocityLawParams()};
+  const VelocityCommand cmd = law.update(target(3.0, 1.0), 0.05);
+  EXPECT_GT(cmd.angular, 0.0);
+  EXPECT_LT(cmd.linear, law.update(target(3.0, 0.0), 0.05).linear + 1.0);
+}
+
+TEST(VelocityLaw, NoForwardMotionWithTargetBeside) {
+  VelocityLaw law{VelocityLawParams()};
+  EXPECT_NEAR(law.update(target(3.0, kPi / 2.0), 0.05).linear, 0.0, 1e-12);
+}
+
+TEST(VelocityLaw, HeadingOnlyTurnsButDoesNotDrive) {
+  VelocityLaw law{VelocityLawParams()};
+  TargetPolar t = target(5.0, -0.5);
+  t.range_valid = false;
+  const VelocityCommand cmd = law.update(t, 0.05);
+  EXPECT_EQ(cmd.linear, 0.0);
+  EXPECT_LT(cmd.angular, 0.0);
+}
+
+TEST(VelocityLaw, DegradedDrivesSlower) {
+  VelocityLaw ok_law{VelocityLawParams()};
+  VelocityLaw degraded_law{VelocityLawParams()};
+  TargetPolar t = target(4.0, 0.0);
+  const double ok = ok_law.update(t, 0.05).linear;
+  t.degraded = true;
+  EXPECT_NEAR(degraded_law.update(t, 0.05).linear, 0.5 * ok, 1e-12);
+}
+
+TEST(VelocityLaw, SwitchesToBackwardsAfterFiveCyclesBehind) {
+  VelocityLawParams params;
+  params.allow_backwards = true;
+  VelocityLaw law(params);
+  const TargetPolar behind = target(3.0, deg2rad(170.0));
+  for (int i = 0; i < 4; ++i) {
+    law.update(behind, 0.05);
+    EXPECT_FALSE(law.driving_backwards()) << i;
+  }
+  const VelocityCommand cmd = law.update(behind, 0.05);
+  EXPECT_TRUE(law.driving_backwards());
+  EXPECT_LT(cmd.linear, 0.0);
+}
+
+TEST(VelocityLaw, ShortGlimpseBehindDoesNotSwitch) {
+  VelocityLawParams params;
+  params.allow_backwards = true;
+  VelocityLaw law(params);
+  for (int i = 0; i < 20; ++i) {
+    law.update(target(3.0, i % 4 == 3 ? 0.0 : deg2rad(170.0)), 0.05);
+  }
+  EXPECT_FALSE(law.driving_backwards());
+}
+
+TEST(VelocityLaw, WithoutBackwardsOptionItTurnsAround) {
+  VelocityLaw law{VelocityLawParams()};
+  VelocityCommand cmd;
+  for (int i = 0; i < 10; ++i) {
+    cmd = law.update(target(3.0, deg2rad(170.0)), 0.05);
+  }
+  EXPECT_FALSE(law.driving_backwards());
+  EXPECT_EQ(cmd.linear, 0.0);
+  EXPECT_GT(cmd.angular, 0.0);
+}
+
+TEST(VelocityLawParams, ValidateRejectsBadFollowDistance) {
+  VelocityLawParams params;
+  params.follow_distance = 0.0;
+  EXPECT_THROW(params.validate(), ParamError);
+  EXPECT_NO_THROW(VelocityLawParams().validate());
+}
+
+}  // namespace
+}  // namespace control
+}  // namespace radio_follow
