@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
-# README command 1: install, build and run the simulated follow-me demo headless.
-# Extra arguments go to roslaunch (e.g. layout:=tracked).
+# README command 1: install, build and run the simulated follow-me demo headless, then
+# draw its report. Extra arguments go to roslaunch (e.g. scenario:=straight_walk
+# controller:=path_follower layout:=tracked).
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$repo/scripts/setup.sh"
@@ -9,6 +10,16 @@ bash "$repo/scripts/build.sh"
 # shellcheck disable=SC1091
 source "$repo/scripts/env.sh"
 export ROS_HOME="${ROS_HOME:-$RF_WS/ros_home}"
+report="${RF_REPORT_DIR:-$repo/report/demo}"
+rm -rf "$report"
+mkdir -p "$report"
 # A private master port, so the demo never joins (or disturbs) a robot's running master.
 port="${RF_DEMO_PORT:-11411}"
-exec roslaunch -p "$port" radio_follow demo.launch check:=true "$@"
+roslaunch -p "$port" radio_follow demo.launch report_dir:="$report" "$@"
+if [ ! -s "$report/metrics.json" ]; then
+  echo "demo: no report was written to $report" >&2
+  exit 1
+fi
+/usr/bin/python3 "$repo/scripts/plot_report.py" "$report"
+echo "demo: report in $report (metrics.json, trajectory.csv, report.png)"
+cat "$report/metrics.json"

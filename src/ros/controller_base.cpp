@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/ros/controller_base.hpp"
 
+#include "radio_follow/config/layout.hpp"
+
 #include <geometry_msgs/Twist.h>
 
 #include <algorithm>
@@ -36,6 +38,13 @@ void ControllerCommonParams::load(const ros::NodeHandle& pnh) {
   pnh.param("cmd_vel_topic", cmd_vel_topic, cmd_vel_topic);
   pnh.param("rate", rate, rate);
   pnh.param("start_enabled", start_enabled, start_enabled);
+  pnh.param("layout_file", layout_file, layout_file);
+  if (!layout_file.empty()) {
+    // Explicit parameters below still win over what the layout implies.
+    const Layout layout = loadLayoutFile(layout_file);
+    range_topics = conventionalTopics(layout).uwb;
+    target_anchor_id = layout.target_anchor_id;
+  }
   loadStringList(pnh, "range_topics", range_topics);
   pnh.param("target_anchor_id", target_anchor_id, target_anchor_id);
   target_anchor_id = upper(target_anchor_id);

@@ -50,7 +50,7 @@ PathFollowerNode::PathFollowerNode(ros::NodeHandle& nh, ros::NodeHandle& private
       path_(params_.path_spacing, static_cast<std::size_t>(params_.max_path_points)),
       tf_listener_(tf_buffer_) {
   path_pub_ = private_nh_.advertise<nav_msgs::Path>("path", 1, true);
-  estimate_sub_ = nh_.subscribe("target_estimate", 5, &PathFollowerNode::onEstimate, this);
+  estimate_sub_ = nh_.subscribe("target", 5, &PathFollowerNode::onEstimate, this);
   start();
 }
 

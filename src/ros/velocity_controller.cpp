@@ -42,7 +42,7 @@ bool estimateUsable(const TargetEstimate& estimate) {
 
 VelocityControllerNode::VelocityControllerNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
     : ControllerBase(nh, private_nh, true), law_(loadVelocityLawParams(private_nh, common())) {
-  estimate_sub_ = nh_.subscribe("target_estimate", 5, &VelocityControllerNode::onEstimate, this);
+  estimate_sub_ = nh_.subscribe("target", 5, &VelocityControllerNode::onEstimate, this);
   start();
 }
 

@@ -21,7 +21,7 @@ using radio_follow_test::waitFor;
 class Feeder {
  public:
   explicit Feeder(ros::NodeHandle& nh)
-      : estimate_pub_(nh.advertise<radio_follow::TargetEstimate>("target_estimate", 10)),
+      : estimate_pub_(nh.advertise<radio_follow::TargetEstimate>("target", 10)),
         range_pub_(nh.advertise<radio_follow::UwbRanges>("uwb_ranges", 10)),
         timer_(nh.createTimer(ros::Duration(0.05), &Feeder::tick, this)) {}
 

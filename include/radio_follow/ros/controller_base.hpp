@@ -25,6 +25,9 @@ struct ControllerCommonParams {
   std::string cmd_vel_topic = "cmd_vel";
   double rate = 20.0;  ///< Hz
   bool start_enabled = false;
+  /// Optional sensor layout: when set, `range_topics` and `target_anchor_id` default to
+  /// the layout's conventional topics (`uwb/<module id>/ranges`) and target anchor.
+  std::string layout_file;
   /// UwbRanges topics whose raw ranges feed the safety stop.
   std::vector<std::string> range_topics{"uwb_ranges"};
   /// Anchor carried by the target; empty = every anchor counts.
