@@ -4,7 +4,7 @@
 // Each benchmark also times every solve and reports its median and 99th percentile
 // (counters p50_us, p99_us): the mean alone hides the tail.
 //
-//   .ws/devel/lib/radio_follow/bench_locator_solve
+//   "$RF_WS"/devel/lib/radio_follow/bench_locator_solve
 #include <benchmark/benchmark.h>
 
 #include <algorithm>

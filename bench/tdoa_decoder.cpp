@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Throughput of the TDoA anchor-report decoder and of the whole receive pipeline
 // (decode + group + differences), in packets per second. Goal: >= 1e6 packets/s decoded.
-//   .ws/devel/lib/radio_follow/bench_tdoa_decoder
+//   "$RF_WS"/devel/lib/radio_follow/bench_tdoa_decoder
 #include <benchmark/benchmark.h>
 
 #include <cstdint>

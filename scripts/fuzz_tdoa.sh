@@ -5,11 +5,11 @@
 #   scripts/fuzz_tdoa.sh [seconds]      default 60
 # Seeds: valid and broken packets from the test packet builder (written by a small seed
 # generator built from the same sources). The corpus lives in fuzz/corpus-tdoa/ (ignored
-# by git); crashes are written to .ws/fuzz-tdoa/artifacts/ and make the script fail.
+# by git); crashes are written to .fuzz/tdoa/artifacts/ and make the script fail.
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 seconds="${1:-60}"
-out="$repo/.ws/fuzz-tdoa"
+out="$repo/.fuzz/tdoa"
 corpus="$repo/fuzz/corpus-tdoa"
 artifacts="$out/artifacts"
 mkdir -p "$out" "$corpus" "$artifacts"

@@ -24,6 +24,7 @@ pids+=($!)
 sleep 3
 # rosrun execs the node, so $! is the locator's own PID.
 rosrun radio_follow locator _layout_file:="$repo/config/layouts/spot.yaml" \
+  _uwb_topics:="[uwb/ranges]" \
   _aoa_topics:="[aoa/front/bearing, aoa/left/bearing, aoa/back/bearing, aoa/right/bearing]" \
   >/dev/null 2>&1 &
 pids+=($!)

@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/ros/controller_base.hpp"
 
-#include "radio_follow/config/layout.hpp"
-
 #include <geometry_msgs/Twist.h>
 
 #include <algorithm>
@@ -12,6 +10,7 @@
 
 #include "radio_follow/FollowerStatus.h"
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/config/layout.hpp"
 #include "radio_follow/ros/params.hpp"
 
 namespace radio_follow {

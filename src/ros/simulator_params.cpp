@@ -96,8 +96,7 @@ void SimulatorNode::Params::validate() const {
   require(std::isfinite(cmd_timeout) && cmd_timeout > 0.0, "~cmd_timeout", cmd_timeout,
           "seconds > 0");
   require(!odom_frame.empty(), "~odom_frame", odom_frame, "a non-empty frame name");
-  require(output == "messages" || output == "serial", "~output", output,
-          "'messages' or 'serial'");
+  require(output == "messages" || output == "serial", "~output", output, "'messages' or 'serial'");
   require(output != "serial" || !serial_dir.empty(), "~serial_dir", serial_dir,
           "a directory for the device links");
   require(unplug.empty() || output == "serial", "~unplug", std::string("(list)"),

@@ -15,7 +15,9 @@ namespace sim {
 
 PtyDevice::PtyDevice(std::string link_path) : link_path_(std::move(link_path)) {}
 
-PtyDevice::~PtyDevice() { unplug(); }
+PtyDevice::~PtyDevice() {
+  unplug();
+}
 
 bool PtyDevice::plug() {
   if (plugged()) {

@@ -46,10 +46,12 @@ SerialDevices::SerialDevices(const Layout& layout, const std::string& directory,
     const auto& f = faults_[i];
     bool known = false;
     for (const auto* list : {&uwb_, &aoa_}) {
-      for (const auto& d : *list) known = known || d.name == f.device;
+      for (const auto& d : *list)
+        known = known || d.name == f.device;
     }
     const std::string name = "~unplug[" + std::to_string(i) + "]";
-    require(known, name + ".device", f.device, "a simulated device: uwb_<module id> or aoa_<board id>");
+    require(known, name + ".device", f.device,
+            "a simulated device: uwb_<module id> or aoa_<board id>");
     require(f.at >= 0.0 && f.duration > 0.0, name + ".duration", f.duration,
             "at >= 0 and duration > 0 seconds");
   }
@@ -107,7 +109,8 @@ void SerialDevices::write(const StepEvents& events) {
 std::size_t SerialDevices::droppedBytes() const {
   std::size_t total = 0;
   for (const auto* list : {&uwb_, &aoa_}) {
-    for (const auto& d : *list) total += d.pty->droppedBytes();
+    for (const auto& d : *list)
+      total += d.pty->droppedBytes();
   }
   return total;
 }

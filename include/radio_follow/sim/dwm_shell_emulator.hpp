@@ -41,8 +41,8 @@ class DwmShellEmulator {
   std::string module_id_;
   Mode mode_ = Mode::kApi;
   Stream stream_ = Stream::kNone;
-  std::string input_;              ///< shell input up to the next carriage return
-  double last_api_cr_ = -1e9;      ///< time of the last CR received in API mode
+  std::string input_;          ///< shell input up to the next carriage return
+  double last_api_cr_ = -1e9;  ///< time of the last CR received in API mode
 };
 
 }  // namespace sim

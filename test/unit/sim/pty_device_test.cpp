@@ -13,16 +13,20 @@ namespace radio_follow {
 namespace sim {
 namespace {
 
-std::string linkPath() { return "/tmp/rf_pty_test_" + std::to_string(::getpid()); }
+std::string linkPath() {
+  return "/tmp/rf_pty_test_" + std::to_string(::getpid());
+}
 
 std::string readWithTimeout(int fd, std::size_t want) {
   std::string out;
   char buffer[256];
   while (out.size() < want) {
     pollfd p{fd, POLLIN, 0};
-    if (::poll(&p, 1, 2000) <= 0) break;
+    if (::poll(&p, 1, 2000) <= 0)
+      break;
     const ssize_t n = ::read(fd, buffer, sizeof(buffer));
-    if (n <= 0) break;
+    if (n <= 0)
+      break;
     out.append(buffer, static_cast<std::size_t>(n));
   }
   return out;

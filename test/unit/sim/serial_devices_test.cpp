@@ -39,7 +39,8 @@ std::string readUntil(int fd, SerialDevices& devices, const std::string& marker)
     pollfd p{fd, POLLIN, 0};
     if (::poll(&p, 1, 10) > 0) {
       const ssize_t n = ::read(fd, buffer, sizeof(buffer));
-      if (n > 0) out.append(buffer, static_cast<std::size_t>(n));
+      if (n > 0)
+        out.append(buffer, static_cast<std::size_t>(n));
     }
   }
   return out;
