@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/sim/homing_trial.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <random>
 
 #include "radio_follow/common/angles.hpp"
@@ -60,6 +62,29 @@ HomingResult runHomingTrial(const HomingController& controller, double target_x,
                           ? std::hypot(*command.goal_x - target_x, *command.goal_y - target_y)
                           : std::numeric_limits<double>::quiet_NaN();
   return result;
+}
+
+HomingController hybridHomingController(const control::HomingParams& params, double search_speed) {
+  auto homing = std::make_shared<control::HybridHoming>(params);
+  return [homing, params, search_speed](const HomingMeasurement& m) {
+    const Eigen::Vector2d robot(m.odom.x, m.odom.y);
+    homing->update(robot, m.odom.yaw + m.bearing, m.distance);
+    HomingCommand c;
+    if (const auto& goal = homing->goal()) {
+      c.goal_x = goal->x();
+      c.goal_y = goal->y();
+      c.arrived = homing->arrived(robot);
+      const auto v =
+          control::homingVelocity(control::Pose2{m.odom.x, m.odom.y, m.odom.yaw}, *goal, params);
+      c.linear = v.linear;
+      c.angular = v.angular;
+    } else {
+      c.linear = std::abs(m.bearing) < kPi / 2.0 ? search_speed : 0.0;
+      c.angular =
+          std::clamp(params.angular_gain * m.bearing, -params.max_angular, params.max_angular);
+    }
+    return c;
+  };
 }
 
 std::vector<std::pair<double, double>> homingTargets(int per_quadrant, double half_size,

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "radio_follow/control/homing.hpp"
 #include "radio_follow/sim/robot.hpp"
 
 namespace radio_follow {
@@ -67,6 +68,12 @@ struct HomingResult {
 HomingResult runHomingTrial(const HomingController& controller, double target_x, double target_y,
                             const HomingNoise& noise, const HomingTrialConfig& config,
                             std::uint64_t seed);
+
+/// The homing controller's core (control::HybridHoming and the eq 15 velocity law) as a
+/// HomingController, as the homing_controller node runs it: while no goal exists yet it
+/// creeps along the bearing at `search_speed` (m/s) so the parallax gets a baseline.
+HomingController hybridHomingController(const control::HomingParams& params,
+                                        double search_speed = 0.3);
 
 /// Seed 000's target set: `per_quadrant` uniform random targets in each quadrant of the
 /// (-half_size, half_size) square, at least `min_distance` from the origin.

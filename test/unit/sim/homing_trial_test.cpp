@@ -4,8 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
+#include <vector>
 
 #include "radio_follow/common/angles.hpp"
+#include "radio_follow/control/homing.hpp"
 
 namespace radio_follow {
 namespace sim {
@@ -94,6 +97,24 @@ TEST(HomingTrial, SummaryAveragesSuccessfulRunsOnly) {
   EXPECT_DOUBLE_EQ(s.success_rate, 0.5);
   EXPECT_DOUBLE_EQ(s.time, 10.0);
   EXPECT_DOUBLE_EQ(s.goal_error, 0.1);
+}
+
+TEST(HomingTrial, HybridHomingReachesBeaconsInEveryQuadrantUnderTheWorstNoise) {
+  // The homing controller's core in the loop, seed 000's noisiest configuration.
+  control::HomingParams params;
+  params.max_linear = 1.0;
+  HomingTrialConfig config;
+  config.robot.max_linear = 1.0;
+  const HomingNoise noise = seed000NoiseConfigurations()[4];
+  std::vector<HomingResult> results;
+  int seed = 0;
+  for (const auto& [x, y] : homingTargets(2, 10.0, 1.0, 11)) {
+    results.push_back(runHomingTrial(hybridHomingController(params), x, y, noise, config, ++seed));
+  }
+  const HomingSummary s = summarize(results);
+  EXPECT_DOUBLE_EQ(s.success_rate, 1.0);
+  EXPECT_LT(s.goal_error, 0.4);
+  EXPECT_LT(s.final_error, 0.6);
 }
 
 }  // namespace
