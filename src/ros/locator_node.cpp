@@ -166,7 +166,10 @@ void LocatorNode::publish(const LocatorEstimate& estimate, const ros::Time& now)
       pose.pose.covariance[static_cast<std::size_t>(6 * i + i)] = 1e6;
     }
     pose_pub_.publish(pose);
-    if (params_.publish_tf) {
+    // The estimate is stamped with its newest measurement; solving faster than the sensors
+    // report repeats a stamp, which tf2 rejects (TF_REPEATED_DATA): send each stamp once.
+    if (params_.publish_tf && pose.header.stamp > last_tf_stamp_) {
+      last_tf_stamp_ = pose.header.stamp;
       geometry_msgs::TransformStamped t;
       t.header = pose.header;
       t.child_frame_id = params_.target_frame;

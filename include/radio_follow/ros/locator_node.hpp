@@ -58,6 +58,7 @@ class LocatorNode {
   ros::Publisher pose_pub_;
   ros::Publisher markers_pub_;
   tf2_ros::TransformBroadcaster tf_;
+  ros::Time last_tf_stamp_;  ///< stamp of the last target TF sent
   diagnostic_updater::Updater diagnostics_;
   ros::Timer timer_;
   TargetStatus last_status_ = TargetStatus::kLost;
