@@ -27,7 +27,7 @@ class PathFollowerNode : public ControllerBase {
     std::string base_frame = "base_link";
     double path_spacing = 0.1;  ///< m
     int max_path_points = 2000;
-    double lookahead = 0.6;       ///< m
+    double lookahead = 1.5;       ///< m (shorter chases the noise of a path built from estimates)
     double reached_radius = 0.3;  ///< m
     double turn_gain = 1.5;       ///< 1/s, turning in place towards a goal behind
     double tf_timeout = 0.05;     ///< s
