@@ -11,12 +11,15 @@
 #include <mutex>
 
 #include "../support/fake_dwm1001.hpp"
+#include "../support/spin_until.hpp"
 #include "radio_follow/UwbRanges.h"
 #include "radio_follow/UwbTagLocation.h"
 #include "radio_follow/common/param_error.hpp"
 
 namespace radio_follow {
 namespace {
+
+using radio_follow::test::spinUntil;
 
 struct Received {
   std::mutex mutex;
@@ -25,20 +28,6 @@ struct Received {
   int ranges = 0;
   int locations = 0;
 };
-
-// Spins until `predicate` holds; the deadline only turns a hang into a failure.
-template <typename Predicate>
-bool spinUntil(Predicate predicate, double timeout = 20.0) {
-  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(timeout);
-  while (ros::ok() && ros::WallTime::now() < deadline) {
-    ros::spinOnce();
-    if (predicate()) {
-      return true;
-    }
-    ros::WallDuration(0.01).sleep();
-  }
-  return false;
-}
 
 TEST(Dwm1001DriverParams, Validation) {
   Dwm1001DriverNode::Params p;

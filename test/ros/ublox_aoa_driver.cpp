@@ -13,24 +13,14 @@
 #include <set>
 
 #include "../support/pty_device.hpp"
+#include "../support/spin_until.hpp"
 #include "radio_follow/AoaBearing.h"
 #include "radio_follow/common/param_error.hpp"
 
 namespace radio_follow {
 namespace {
 
-template <typename Predicate>
-bool spinUntil(Predicate predicate, double timeout = 20.0) {
-  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(timeout);
-  while (ros::ok() && ros::WallTime::now() < deadline) {
-    ros::spinOnce();
-    if (predicate()) {
-      return true;
-    }
-    ros::WallDuration(0.01).sleep();
-  }
-  return false;
-}
+using radio_follow::test::spinUntil;
 
 // Streams events of an accepted and an unknown tag, advertising data, an echo and a
 // cut event, as a board with two tags in range on a noisy cable would.
