@@ -17,6 +17,8 @@ void VelocityLawParams::validate() const {
           slowdown_distance, "a distance > 0 in metres");
   require(degraded_speed_factor >= 0.0 && degraded_speed_factor <= 1.0, "~degraded_speed_factor",
           degraded_speed_factor, "a factor in [0, 1]");
+  require(std::isfinite(feed_forward) && feed_forward >= 0.0 && feed_forward <= 1.0,
+          "~feed_forward", feed_forward, "a fraction in [0, 1]");
   require(std::isfinite(max_linear) && max_linear > 0.0, "~max_linear", max_linear,
           "a speed > 0 in m/s");
   require(backwards_angle > kPi / 2.0 && backwards_angle < kPi, "~backwards_angle", backwards_angle,
@@ -26,11 +28,23 @@ void VelocityLawParams::validate() const {
   angular.validate("~angular_pid");
 }
 
-double slowdownCap(double gap, double slowdown_distance, double max_speed) {
+double slowdownCap(double gap, double slowdown_distance, double max_speed, double target_speed) {
   if (!(gap > 0.0)) {
     return 0.0;
   }
-  return max_speed * std::min(1.0, gap / slowdown_distance);
+  // The ramp's slope grows with the speed it has to take away, so the cap is continuous
+  // at the follow distance and the robot settles just outside it instead of on the edge.
+  const double ramp = std::min(1.0, gap / slowdown_distance);
+  return std::min(max_speed, (std::max(0.0, target_speed) + max_speed) * ramp);
+}
+
+double gapSpeed(double gap, double target_speed, double dt, Pid& pid,
+                const VelocityLawParams& params) {
+  const double feed_forward =
+      std::isfinite(target_speed) ? params.feed_forward * std::max(0.0, target_speed) : 0.0;
+  const double speed = std::max(0.0, feed_forward + pid.update(gap, dt));
+  return std::min(speed,
+                  slowdownCap(gap, params.slowdown_distance, params.max_linear, feed_forward));
 }
 
 VelocityLaw::VelocityLaw(const VelocityLawParams& params)
@@ -66,8 +80,7 @@ VelocityCommand VelocityLaw::update(const TargetPolar& target, double dt) {
     linear_pid_.reset();
     return cmd;
   }
-  double speed = std::max(0.0, linear_pid_.update(gap, dt));
-  speed = std::min(speed, slowdownCap(gap, params_.slowdown_distance, params_.max_linear));
+  double speed = gapSpeed(gap, target.receding_speed, dt, linear_pid_, params_);
   // Do not drive forward while the target is off to the side: cos() fades speed to zero
   // at 90 deg so the robot turns first instead of circling.
   speed *= std::max(0.0, std::cos(heading_error));

@@ -124,6 +124,10 @@ void ControllerBase::start() {
 
   setEnabled(common_.start_enabled);
   timer_ = nh_.createTimer(ros::Duration(1.0 / common_.rate), &ControllerBase::onTick, this);
+  // The stop request is watched on wall time: on simulated time the clock may already
+  // have stopped (its publisher shut down first) and a sim-time timer would never fire.
+  stop_check_timer_ =
+      nh_.createWallTimer(ros::WallDuration(0.05), &ControllerBase::onStopCheck, this);
 }
 
 void ControllerBase::noteEstimate(const ros::Time& stamp, bool usable) {
@@ -180,17 +184,22 @@ void ControllerBase::stopNow(control::StopReason reason) {
   publishStatus(control::stateFor(reason), control::stopText(reason));
 }
 
+void ControllerBase::onStopCheck(const ros::WallTimerEvent& /*event*/) {
+  if (!stop_requested || shutting_down_) {
+    return;
+  }
+  shutting_down_ = true;
+  timer_.stop();
+  stop_check_timer_.stop();
+  monitor_.setEnabled(false);
+  stopNow(control::StopReason::kDisabled);
+  // Give the zero command time to leave the process before the connections close.
+  ros::WallDuration(0.2).sleep();
+  ros::shutdown();
+}
+
 void ControllerBase::onTick(const ros::TimerEvent& event) {
-  if (stop_requested) {
-    if (!shutting_down_) {
-      shutting_down_ = true;
-      timer_.stop();
-      monitor_.setEnabled(false);
-      stopNow(control::StopReason::kDisabled);
-      // Give the zero command time to leave the process before the connections close.
-      ros::WallDuration(0.2).sleep();
-      ros::shutdown();
-    }
+  if (shutting_down_) {
     return;
   }
   const ros::Time now = ros::Time::now();

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/ros/path_follower.hpp"
 
-#include <geometry_msgs/PointStamped.h>
 #include <tf2/utils.h>
 #include <tf2_geometry_msgs/tf2_geometry_msgs.h>
 
@@ -48,7 +47,8 @@ PathFollowerNode::PathFollowerNode(ros::NodeHandle& nh, ros::NodeHandle& private
       fallback_law_(law_params_),
       speed_pid_(law_params_.linear),
       path_(params_.path_spacing, static_cast<std::size_t>(params_.max_path_points)),
-      tf_listener_(tf_buffer_) {
+      tf_listener_(tf_buffer_),
+      motion_(tf_buffer_, params_.odom_frame, params_.tf_timeout) {
   path_pub_ = private_nh_.advertise<nav_msgs::Path>("path", 1, true);
   estimate_sub_ = nh_.subscribe("target", 5, &PathFollowerNode::onEstimate, this);
   start();
@@ -66,21 +66,16 @@ void PathFollowerNode::onEstimate(const TargetEstimate::ConstPtr& msg) {
   if (msg->status != TargetEstimate::STATUS_OK && msg->status != TargetEstimate::STATUS_DEGRADED) {
     return;
   }
-  geometry_msgs::PointStamped in;
-  in.header = msg->header;
-  in.point = msg->position;
-  try {
-    geometry_msgs::PointStamped out;
-    tf_buffer_.transform(in, out, params_.odom_frame, ros::Duration(params_.tf_timeout));
-    path_mode_ = true;
-    if (path_.add({out.point.x, out.point.y})) {
-      publishPath(msg->header.stamp);
-    }
-  } catch (const tf2::TransformException& e) {
-    path_mode_ = false;
+  const std::optional<Eigen::Vector2d> point = motion_.add(*msg);
+  path_mode_ = point.has_value();
+  if (!point) {
     ROS_WARN_THROTTLE(5.0, "%s: no transform %s <- %s at the estimate's stamp (%s)",
                       ros::this_node::getName().c_str(), params_.odom_frame.c_str(),
-                      msg->header.frame_id.c_str(), e.what());
+                      msg->header.frame_id.c_str(), motion_.lastError().c_str());
+    return;
+  }
+  if (path_.add(*point)) {
+    publishPath(msg->header.stamp);
   }
 }
 
@@ -120,7 +115,7 @@ ControllerBase::Output PathFollowerNode::compute(const ros::Time& now, double dt
   const std::optional<control::Pose2> robot = path_mode_ ? robotPose() : std::nullopt;
   if (!robot || path_.empty() || heading_only) {
     // Without self-localisation no path can be stored: drive straight at the target.
-    out.command = fallback_law_.update(targetPolar(*estimate_), dt);
+    out.command = fallback_law_.update(targetPolar(*estimate_, std::nullopt), dt);
     if (heading_only) {
       out.text = "Direction only, turning to the target.";
     } else if (fallback_law_.arrived()) {
@@ -139,11 +134,15 @@ ControllerBase::Output PathFollowerNode::compute(const ros::Time& now, double dt
   }
   const control::PursuitTarget goal =
       control::purePursuit(path_.points(), *robot, params_.lookahead);
-  const double gap = path_.lengthFrom(robot->position()) - law_params_.follow_distance;
+  // A path built from noisy estimates zig-zags and is longer than the walk; the straight
+  // range is never longer than the walk. The smaller of the two keeps the robot from
+  // closing in on a person who has stopped because their path looked long.
+  const double along = path_.lengthFrom(robot->position());
+  const double gap = std::min(along, estimate_->range) - law_params_.follow_distance;
   const double alpha = std::atan2(goal.local.y(), goal.local.x());
-  double speed = std::max(0.0, speed_pid_.update(gap, dt));
-  speed = std::min(
-      speed, control::slowdownCap(gap, law_params_.slowdown_distance, law_params_.max_linear));
+  // The person walks the path ahead: the feed-forward is their whole ground speed.
+  double speed =
+      control::gapSpeed(gap, motion_.speed(now).value_or(0.0), dt, speed_pid_, law_params_);
   speed *= std::max(0.0, std::cos(alpha));
   if (estimate_->status == TargetEstimate::STATUS_DEGRADED) {
     speed *= law_params_.degraded_speed_factor;

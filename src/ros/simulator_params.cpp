@@ -121,6 +121,7 @@ SimulatorNode::Params loadSimulatorParams(ros::NodeHandle& pnh) {
   pnh.param("robot/max_linear", w.robot.max_linear, w.robot.max_linear);
   pnh.param("robot/max_angular", w.robot.max_angular, w.robot.max_angular);
   pnh.param("robot/max_linear_accel", w.robot.max_linear_accel, w.robot.max_linear_accel);
+  pnh.param("robot/max_linear_decel", w.robot.max_linear_decel, w.robot.max_linear_decel);
   pnh.param("robot/max_angular_accel", w.robot.max_angular_accel, w.robot.max_angular_accel);
   pnh.param("twr_rate", w.rates.twr_hz, w.rates.twr_hz);
   pnh.param("aoa_rate", w.rates.aoa_hz, w.rates.aoa_hz);

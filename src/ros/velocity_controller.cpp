@@ -2,6 +2,7 @@
 #include "radio_follow/ros/velocity_controller.hpp"
 
 #include "radio_follow/common/angles.hpp"
+#include "radio_follow/common/param_error.hpp"
 
 namespace radio_follow {
 
@@ -10,6 +11,7 @@ control::VelocityLawParams loadVelocityLawParams(const ros::NodeHandle& pnh,
   control::VelocityLawParams p;
   pnh.param("follow_distance", p.follow_distance, p.follow_distance);
   pnh.param("slowdown_distance", p.slowdown_distance, p.slowdown_distance);
+  pnh.param("feed_forward", p.feed_forward, p.feed_forward);
   pnh.param("degraded_speed_factor", p.degraded_speed_factor, p.degraded_speed_factor);
   pnh.param("allow_backwards", p.allow_backwards, p.allow_backwards);
   double backwards_deg = rad2deg(p.backwards_angle);
@@ -25,8 +27,10 @@ control::VelocityLawParams loadVelocityLawParams(const ros::NodeHandle& pnh,
   return p;
 }
 
-control::TargetPolar targetPolar(const TargetEstimate& estimate) {
+control::TargetPolar targetPolar(const TargetEstimate& estimate,
+                                 std::optional<double> receding_speed) {
   control::TargetPolar t;
+  t.receding_speed = receding_speed.value_or(0.0);
   t.range = estimate.range;
   t.bearing = estimate.bearing;
   t.range_valid = estimate.status == TargetEstimate::STATUS_OK ||
@@ -40,8 +44,27 @@ bool estimateUsable(const TargetEstimate& estimate) {
          std::isfinite(estimate.range);
 }
 
+void VelocityControllerNode::Params::load(const ros::NodeHandle& pnh) {
+  pnh.param("odom_frame", odom_frame, odom_frame);
+  pnh.param("tf_timeout", tf_timeout, tf_timeout);
+}
+
+void VelocityControllerNode::Params::validate() const {
+  require(tf_timeout >= 0.0 && tf_timeout < 1.0, "~tf_timeout", tf_timeout,
+          "a timeout in [0, 1) seconds");
+}
+
 VelocityControllerNode::VelocityControllerNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
-    : ControllerBase(nh, private_nh, true), law_(loadVelocityLawParams(private_nh, common())) {
+    : ControllerBase(nh, private_nh, true),
+      params_([&] {
+        Params p;
+        p.load(private_nh);
+        p.validate();
+        return p;
+      }()),
+      law_(loadVelocityLawParams(private_nh, common())),
+      tf_listener_(tf_buffer_),
+      motion_(tf_buffer_, params_.odom_frame, params_.tf_timeout) {
   estimate_sub_ = nh_.subscribe("target", 5, &VelocityControllerNode::onEstimate, this);
   start();
 }
@@ -49,11 +72,18 @@ VelocityControllerNode::VelocityControllerNode(ros::NodeHandle& nh, ros::NodeHan
 void VelocityControllerNode::onEstimate(const TargetEstimate::ConstPtr& msg) {
   estimate_ = msg;
   noteEstimate(msg->header.stamp, estimateUsable(*msg));
+  if (!params_.odom_frame.empty() && !motion_.add(*msg) && !motion_.lastError().empty()) {
+    ROS_WARN_THROTTLE(10.0, "%s: no transform %s <- %s, following without speed feed-forward (%s)",
+                      ros::this_node::getName().c_str(), params_.odom_frame.c_str(),
+                      msg->header.frame_id.c_str(), motion_.lastError().c_str());
+  }
 }
 
-ControllerBase::Output VelocityControllerNode::compute(const ros::Time& /*now*/, double dt) {
+ControllerBase::Output VelocityControllerNode::compute(const ros::Time& now, double dt) {
   Output out;
-  out.command = law_.update(targetPolar(*estimate_), dt);
+  const std::optional<double> receding =
+      params_.odom_frame.empty() ? std::nullopt : motion_.recedingSpeed(now);
+  out.command = law_.update(targetPolar(*estimate_, receding), dt);
   if (estimate_->status == TargetEstimate::STATUS_HEADING_ONLY) {
     out.text = "Direction only, turning to the target.";
   } else if (law_.arrived()) {

@@ -109,6 +109,8 @@ FollowReport FollowMetrics::report() const {
   std::vector<double> gaps_in_window;
   std::vector<double> errors;
   int within = 0;
+  bool caught_up = false;
+  r.gap_window_start = std::numeric_limits<double>::quiet_NaN();
   for (std::size_t i = 0; i < samples_.size(); ++i) {
     const FollowSample& s = samples_[i];
     if (i > 0) {
@@ -122,10 +124,14 @@ FollowReport FollowMetrics::report() const {
     if (moving) {
       r.min_gap_while_moving = std::min(r.min_gap_while_moving, gap);
     }
-    if (s.t - samples_.front().t >= settings_.settle_time &&
-        s.target_speed < settings_.robot_max_speed) {
+    const bool within_now = std::abs(gap - settings_.follow_distance) <= settings_.gap_tolerance;
+    if (!caught_up && s.t - samples_.front().t >= settings_.settle_time && within_now) {
+      caught_up = true;
+      r.gap_window_start = s.t - samples_.front().t;
+    }
+    if (caught_up && s.target_speed < settings_.robot_max_speed) {
       gaps_in_window.push_back(gap);
-      within += std::abs(gap - settings_.follow_distance) <= settings_.gap_tolerance;
+      within += within_now;
     }
     if (s.estimate_x && s.estimate_y) {
       errors.push_back(std::hypot(*s.estimate_x - s.truth_x, *s.estimate_y - s.truth_y));
@@ -143,7 +149,9 @@ FollowReport FollowMetrics::report() const {
   const std::vector<PathPoint> path = buildPath(samples_, settings_);
   for (std::size_t k = 0; k < samples_.size(); ++k) {
     const FollowSample& s = samples_[k];
-    if (s.t - samples_.front().t < settings_.settle_time) {
+    // Like the gap, the path is judged while following: the path recorded while the robot
+    // caught up from its start was estimated from farther away.
+    if (!(s.t - samples_.front().t >= r.gap_window_start)) {
       continue;
     }
     double best = std::numeric_limits<double>::infinity();
@@ -203,6 +211,7 @@ std::string FollowReport::toJson() const {
       << "  \"gap_mean_m\": " << number(gap_mean) << ",\n"
       << "  \"gap_within_tolerance\": " << number(gap_within_tolerance) << ",\n"
       << "  \"gap_samples\": " << gap_samples << ",\n"
+      << "  \"gap_window_start_s\": " << number(gap_window_start) << ",\n"
       << "  \"estimate_availability\": " << number(estimate_availability) << ",\n"
       << "  \"estimate_error_median_m\": " << number(estimate_error_median) << ",\n"
       << "  \"estimate_error_p95_m\": " << number(estimate_error_p95) << ",\n"

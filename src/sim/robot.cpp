@@ -26,6 +26,8 @@ void RobotLimits::validate() const {
   require(positiveFinite(max_angular), "robot.max_angular", max_angular, "a rate > 0 in rad/s");
   require(positiveFinite(max_linear_accel), "robot.max_linear_accel", max_linear_accel,
           "an acceleration > 0 in m/s^2");
+  require(positiveFinite(max_linear_decel), "robot.max_linear_decel", max_linear_decel,
+          "a deceleration > 0 in m/s^2");
   require(positiveFinite(max_angular_accel), "robot.max_angular_accel", max_angular_accel,
           "an acceleration > 0 in rad/s^2");
 }
@@ -48,7 +50,10 @@ void UnicycleRobot::step(double cmd_linear, double cmd_angular, double dt) {
                               : 0.0;
   const double v0 = linear_;
   const double w0 = angular_;
-  linear_ = approach(linear_, v_target, limits_.max_linear_accel * dt);
+  // Slowing down (towards zero speed) uses the braking limit.
+  const bool slowing = std::abs(v_target) < std::abs(linear_) || v_target * linear_ < 0.0;
+  linear_ = approach(linear_, v_target,
+                     (slowing ? limits_.max_linear_decel : limits_.max_linear_accel) * dt);
   angular_ = approach(angular_, w_target, limits_.max_angular_accel * dt);
   const double v = 0.5 * (v0 + linear_);
   const double w = 0.5 * (w0 + angular_);

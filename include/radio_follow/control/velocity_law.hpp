@@ -16,6 +16,11 @@ struct VelocityLawParams {
   /// The speed cap ramps from 0 at follow_distance to max_linear at
   /// follow_distance + slowdown_distance, metres: the robot slows smoothly as the gap closes.
   double slowdown_distance = 1.0;
+  /// Fraction of the target's own speed (TargetPolar::receding_speed, the path follower's
+  /// walking speed) added to the command before the PID and to the speed cap; 0 disables.
+  /// It lets the robot match a walking person at the follow distance instead of trailing
+  /// by the gap error the slow-down ramp needs.
+  double feed_forward = 1.0;
   /// Linear speed is multiplied by this while the estimate is DEGRADED.
   double degraded_speed_factor = 0.5;
   /// Maximum forward speed, m/s (also the linear PID's output limit).
@@ -39,9 +44,13 @@ struct TargetPolar {
   /// false for HEADING_ONLY estimates: turn towards the target, never drive forward.
   bool range_valid = true;
   bool degraded = false;
+  /// The target's ground speed away from the robot along the line of sight, m/s
+  /// (negative: walking towards it); 0 when unknown (no odometry).
+  double receding_speed = 0.0;
 };
 
-/// PID on (range - follow_distance) for speed and on the heading error for yaw rate.
+/// Feed-forward of the target's receding speed plus PID on (range - follow_distance) for
+/// speed (see gapSpeed()), PID on the heading error for yaw rate.
 /// It never backs away to grow the gap: the speed is zero, not negative, when the
 /// target is closer than follow_distance. With allow_backwards the reference direction
 /// flips to the robot's rear once the target stayed behind for backwards_cycles cycles.
@@ -65,9 +74,17 @@ class VelocityLaw {
   bool arrived_ = false;
 };
 
-/// Speed cap that falls linearly from `max_speed` to 0 as `gap` (distance beyond the
-/// follow distance) shrinks from `slowdown_distance` to 0.
-double slowdownCap(double gap, double slowdown_distance, double max_speed);
+/// Speed cap as the gap (distance beyond the follow distance) closes:
+/// min(max_speed, (target_speed + max_speed) * min(1, gap / slowdown_distance)), with
+/// `target_speed` < 0 counted as 0; 0 once the gap is closed (the robot never drives
+/// inside the follow distance). With target_speed = 0 it falls linearly from max_speed.
+double slowdownCap(double gap, double slowdown_distance, double max_speed,
+                   double target_speed = 0.0);
+
+/// Forward speed that holds the gap: feed_forward * target_speed plus the PID on `gap`,
+/// within [0, slowdownCap()]. Shared by the velocity law and the path follower.
+double gapSpeed(double gap, double target_speed, double dt, Pid& pid,
+                const VelocityLawParams& params);
 
 }  // namespace control
 }  // namespace radio_follow

@@ -96,6 +96,8 @@ class ControllerBase {
   bool onEnableService(std_srvs::SetBool::Request& req, std_srvs::SetBool::Response& res);
   void setEnabled(bool enabled);
   void onTick(const ros::TimerEvent& event);
+  /// Handles SIGINT/SIGTERM (flag set by the signal handler): last zero, then shutdown.
+  void onStopCheck(const ros::WallTimerEvent& event);
   void stopNow(control::StopReason reason);
   void publishCommand(const control::VelocityCommand& cmd);
   void publishStatus(control::FollowerState state, const std::string& text);
@@ -118,6 +120,7 @@ class ControllerBase {
   ros::Publisher cmd_pub_;
   ros::Publisher status_pub_;
   ros::Timer timer_;
+  ros::WallTimer stop_check_timer_;
   diagnostic_updater::Updater diagnostics_;
   bool shutting_down_ = false;
 };

@@ -14,6 +14,7 @@
 #include "radio_follow/control/pid.hpp"
 #include "radio_follow/control/velocity_law.hpp"
 #include "radio_follow/ros/controller_base.hpp"
+#include "radio_follow/ros/target_motion_tracker.hpp"
 
 namespace radio_follow {
 
@@ -52,6 +53,7 @@ class PathFollowerNode : public ControllerBase {
   control::PathBuffer path_;
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;
+  TargetMotionTracker motion_;
   TargetEstimate::ConstPtr estimate_;
   bool path_mode_ = false;  // false: the last estimate could not be put into odom
   ros::Publisher path_pub_;

@@ -2,10 +2,16 @@
 #pragma once
 
 #include <ros/ros.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
+
+#include <optional>
+#include <string>
 
 #include "radio_follow/TargetEstimate.h"
 #include "radio_follow/control/velocity_law.hpp"
 #include "radio_follow/ros/controller_base.hpp"
+#include "radio_follow/ros/target_motion_tracker.hpp"
 
 namespace radio_follow {
 
@@ -14,8 +20,10 @@ namespace radio_follow {
 control::VelocityLawParams loadVelocityLawParams(const ros::NodeHandle& private_nh,
                                                  const ControllerCommonParams& common);
 
-/// Converts an estimate into the law's input (HEADING_ONLY -> no range, DEGRADED flag).
-control::TargetPolar targetPolar(const TargetEstimate& estimate);
+/// Converts an estimate into the law's input (HEADING_ONLY -> no range, DEGRADED flag,
+/// the target's receding speed when known).
+control::TargetPolar targetPolar(const TargetEstimate& estimate,
+                                 std::optional<double> receding_speed);
 
 /// True for estimates the safety layer may accept (everything but LOST).
 bool estimateUsable(const TargetEstimate& estimate);
@@ -24,6 +32,15 @@ bool estimateUsable(const TargetEstimate& estimate);
 /// estimate with PID on distance and heading, behind the shared safety layer.
 class VelocityControllerNode : public ControllerBase {
  public:
+  /// Where the person's ground speed (the speed feed-forward) comes from.
+  struct Params {
+    std::string odom_frame = "odom";  ///< empty: no feed-forward, no tf needed
+    double tf_timeout = 0.05;         ///< s
+
+    void load(const ros::NodeHandle& private_nh);
+    void validate() const;
+  };
+
   VelocityControllerNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh);
 
  private:
@@ -31,7 +48,11 @@ class VelocityControllerNode : public ControllerBase {
   void onStopped() override { law_.reset(); }
   void onEstimate(const TargetEstimate::ConstPtr& msg);
 
+  Params params_;
   control::VelocityLaw law_;
+  tf2_ros::Buffer tf_buffer_;
+  tf2_ros::TransformListener tf_listener_;
+  TargetMotionTracker motion_;
   TargetEstimate::ConstPtr estimate_;
   ros::Subscriber estimate_sub_;
 };

@@ -35,8 +35,11 @@ struct FollowSettings {
   double safe_distance = 1.3;    ///< m
   double gap_tolerance = 0.3;    ///< m
   double robot_max_speed = 1.5;  ///< m/s
-  /// Samples before this time are the start-up transient and excluded from gap stats, s.
+  /// Gap statistics start once this time has passed and the gap has first come within
+  /// gap_tolerance of follow_distance: the robot catching up from its start position is
+  /// not following yet. s.
   double settle_time = 5.0;
+  /// Path deviation is judged over the same window as the gap.
   /// A turn: the person's heading changes by more than this over `turn_window` metres
   /// of path; path-deviation stats exclude robot positions near such places.
   double turn_heading_change = 0.35;  ///< rad (20 deg)
@@ -52,6 +55,7 @@ struct FollowReport {
   double min_gap = 0.0;                ///< m
   double gap_within_tolerance = 0.0;   ///< fraction of gap samples
   int gap_samples = 0;                 ///< samples the gap fraction is over
+  double gap_window_start = 0.0;       ///< s after the first sample; NaN if never caught up
   double gap_mean = 0.0;               ///< m
   double estimate_error_median = 0.0;  ///< m
   double estimate_error_p95 = 0.0;     ///< m

@@ -14,9 +14,11 @@ struct Pose2 {
 /// Speed and acceleration limits of the simulated base. The commanded velocity is
 /// clamped to the speed limits and approached at no more than the accelerations.
 struct RobotLimits {
-  double max_linear = 1.5;         ///< m/s, both directions
-  double max_angular = 1.5;        ///< rad/s
-  double max_linear_accel = 1.0;   ///< m/s^2
+  double max_linear = 1.5;        ///< m/s, both directions
+  double max_angular = 1.5;       ///< rad/s
+  double max_linear_accel = 1.0;  ///< m/s^2, speeding up
+  /// m/s^2, slowing down (bases brake harder than they accelerate; 2.0 assumed for Spot).
+  double max_linear_decel = 2.0;
   double max_angular_accel = 3.0;  ///< rad/s^2
 
   /// Throws ParamError naming the first non-positive or non-finite limit.

@@ -47,6 +47,7 @@ TEST(ConfigDefaults, VelocityControllerYamlMatchesLaw) {
   const VelocityLawParams law;
   EXPECT_DOUBLE_EQ(y["follow_distance"].as<double>(), law.follow_distance);
   EXPECT_DOUBLE_EQ(y["slowdown_distance"].as<double>(), law.slowdown_distance);
+  EXPECT_DOUBLE_EQ(y["feed_forward"].as<double>(), law.feed_forward);
   EXPECT_DOUBLE_EQ(y["degraded_speed_factor"].as<double>(), law.degraded_speed_factor);
   EXPECT_EQ(y["allow_backwards"].as<bool>(), law.allow_backwards);
   EXPECT_NEAR(deg2rad(y["backwards_angle_deg"].as<double>()), law.backwards_angle, 1e-12);

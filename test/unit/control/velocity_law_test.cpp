@@ -42,6 +42,48 @@ TEST(VelocityLaw, SlowsDownAsGapCloses) {
   EXPECT_LE(near, slowdownCap(0.2, 1.0, 1.0) + 1e-12);
 }
 
+TEST(SlowdownCap, ContinuousAtTheFollowDistanceAndScaledByTheTargetSpeed) {
+  EXPECT_EQ(slowdownCap(0.0, 0.3, 1.5, 1.0), 0.0);
+  EXPECT_EQ(slowdownCap(-0.1, 0.3, 1.5, 1.0), 0.0);
+  EXPECT_NEAR(slowdownCap(1e-6, 0.3, 1.5, 1.0), 0.0, 1e-4);
+  EXPECT_NEAR(slowdownCap(0.06, 0.3, 1.5, 1.0), 0.5, 1e-12);   // (1 + 1.5) * 0.2
+  EXPECT_NEAR(slowdownCap(0.06, 0.3, 1.5, 0.0), 0.3, 1e-12);   // no target speed: 1.5 * 0.2
+  EXPECT_NEAR(slowdownCap(0.06, 0.3, 1.5, -1.0), 0.3, 1e-12);  // walking towards: as 0
+  EXPECT_EQ(slowdownCap(5.0, 0.3, 1.5, 1.0), 1.5);
+}
+
+TEST(VelocityLaw, FeedForwardHoldsAWalkingPersonNearTheFollowDistance) {
+  // A person walking away at 1 m/s, a robot that tracks its command, P only: with the
+  // feed-forward the gap settles just outside the follow distance (where the cap allows
+  // 1 m/s: gap = 0.3 * 1 / 2.5 = 0.12 m); without it the law cannot keep up.
+  VelocityLawParams p;
+  p.max_linear = 1.5;
+  p.slowdown_distance = 0.3;
+  p.linear = PidGains{1.0, 0.0, 0.0, 0.3, 0.2, 1.5};
+  for (const double feed_forward : {1.0, 0.0}) {
+    p.feed_forward = feed_forward;
+    VelocityLaw law{p};
+    double range = 3.0;
+    for (int i = 0; i < 1200; ++i) {
+      TargetPolar t = target(range, 0.0);
+      t.receding_speed = 1.0;
+      range += (1.0 - law.update(t, 0.05).linear) * 0.05;
+    }
+    if (feed_forward > 0.0) {
+      EXPECT_NEAR(range, p.follow_distance + 0.12, 0.01);
+    } else {
+      EXPECT_GT(range, p.follow_distance + 0.3);
+    }
+  }
+}
+
+TEST(VelocityLaw, FeedForwardNeverDrivesInsideTheFollowDistance) {
+  VelocityLaw law{VelocityLawParams()};
+  TargetPolar t = target(1.5, 0.0);
+  t.receding_speed = 1.0;
+  EXPECT_EQ(law.update(t, 0.05).linear, 0.0);
+}
+
 TEST(VelocityLaw, TurnsTowardsTargetOnTheLeft) {
   VelocityLaw law{VelocityLawParams()};
   const VelocityCommand cmd = law.update(target(3.0, 1.0), 0.05);

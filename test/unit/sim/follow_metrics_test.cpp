@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace radio_follow {
@@ -42,12 +43,44 @@ TEST(FollowMetrics, PerfectFollowerScoresPerfectly) {
   EXPECT_NEAR(r.robot_distance, 20.0, 1e-9);
 }
 
-TEST(FollowMetrics, GapOutsideToleranceAndLateralOffsetAreMeasured) {
-  const FollowReport r = straightRun(2.5, 0.4, 0.2).report();
+TEST(FollowMetrics, GapOutsideToleranceIsMeasured) {
+  // 2.5 m behind: never within 0.3 m of 1.6 m, so the robot never counts as following.
+  const FollowReport r = straightRun(2.5, 0.0, 0.0).report();
   EXPECT_DOUBLE_EQ(r.gap_within_tolerance, 0.0);
+  EXPECT_TRUE(std::isnan(r.path_deviation_max));
+}
+
+TEST(FollowMetrics, LateralOffsetAndEstimateErrorAreMeasured) {
+  const FollowReport r = straightRun(1.6, 0.4, 0.2).report();
+  EXPECT_DOUBLE_EQ(r.gap_within_tolerance, 1.0);
   EXPECT_NEAR(r.path_deviation_median, 0.4, 1e-9);
   EXPECT_NEAR(r.path_deviation_max, 0.4, 1e-9);
   EXPECT_NEAR(r.estimate_error_p95, 0.2, 1e-9);
+}
+
+TEST(FollowMetrics, GapStatisticsStartOnceTheRobotHasCaughtUp) {
+  // The robot starts 6 m behind and closes at 0.5 m/s until it holds 1.6 m (after 8.8 s);
+  // from then on it is perfect, so the fraction is 1 and the window starts at 8.8 s.
+  FollowMetrics metrics{FollowSettings{}};
+  for (int i = 0; i <= 600; ++i) {
+    FollowSample s;
+    s.t = i * 0.05;
+    s.target_x = 6.0 + s.t;
+    s.target_speed = 1.0;
+    s.robot_x = s.target_x - std::max(1.6, 6.0 - 0.5 * s.t);
+    s.cmd_linear = 1.0;
+    metrics.add(s);
+  }
+  const FollowReport r = metrics.report();
+  EXPECT_DOUBLE_EQ(r.gap_within_tolerance, 1.0);
+  EXPECT_NEAR(r.gap_window_start, (6.0 - 1.9) / 0.5, 0.051);
+  EXPECT_NEAR(r.gap_samples, (30.0 - 8.2) / 0.05, 2.0);
+}
+
+TEST(FollowMetrics, ARobotThatNeverCatchesUpHasNoGapWindow) {
+  const FollowReport r = straightRun(2.5, 0.0, 0.0).report();
+  EXPECT_EQ(r.gap_samples, 0);
+  EXPECT_TRUE(std::isnan(r.gap_window_start));
 }
 
 TEST(FollowMetrics, CornerCuttingIsExcludedButStraightDeviationIsNot) {

@@ -30,6 +30,26 @@ TEST(UnicycleRobot, RampsWithinAccelerationAndSpeedLimits) {
   EXPECT_NEAR(robot.pose().y, 0.0, 1e-12);
 }
 
+TEST(UnicycleRobot, BrakesAtItsOwnDecelerationLimit) {
+  RobotLimits limits;
+  limits.max_linear_accel = 0.5;
+  limits.max_linear_decel = 2.0;
+  UnicycleRobot robot(limits);
+  for (int i = 0; i < 100; ++i) {
+    robot.step(1.0, 0.0, 0.05);
+  }
+  ASSERT_NEAR(robot.linear(), 1.0, 1e-12);
+  const double before = robot.odometer();
+  robot.step(0.0, 0.0, 0.25);  // 2 m/s^2 for 0.25 s: 1 m/s -> 0.5 m/s
+  EXPECT_NEAR(robot.linear(), 0.5, 1e-12);
+  for (int i = 0; i < 10; ++i) {
+    robot.step(0.0, 0.0, 0.05);
+  }
+  EXPECT_EQ(robot.linear(), 0.0);
+  // Stopping distance from 1 m/s at 2 m/s^2 is 0.25 m.
+  EXPECT_NEAR(robot.odometer() - before, 0.25, 1e-9);
+}
+
 TEST(UnicycleRobot, DrivesAClosedCircle) {
   RobotLimits limits;
   limits.max_linear_accel = 1e6;
