@@ -70,6 +70,9 @@ void LocatorConfig::validate() const {
           "at least 1");
   require(positive(max_position_sigma), "max_position_sigma", max_position_sigma,
           "a positive sigma in metres");
+  require(
+      std::isfinite(max_relative_sigma) && max_relative_sigma >= 0.0 && max_relative_sigma < 1.0,
+      "max_relative_sigma", max_relative_sigma, "a fraction of the distance in [0, 1)");
   require(positive(default_range), "default_range", default_range, "a positive range in metres");
 }
 
@@ -288,8 +291,10 @@ LocatorEstimate Locator::update(double now) {
                                     .maxCoeff()));
   }
   const bool ambiguous = !helpers && obs.ranges.size() < full_ranges;
-  out.status = worst_sigma <= config_.max_position_sigma && !ambiguous ? TargetStatus::kOk
-                                                                       : TargetStatus::kDegraded;
+  const double allowed_sigma = std::max(
+      config_.max_position_sigma, config_.max_relative_sigma * result.position.head<2>().norm());
+  out.status =
+      worst_sigma <= allowed_sigma && !ambiguous ? TargetStatus::kOk : TargetStatus::kDegraded;
 
   const int d = config_.planar ? 2 : 3;
   Eigen::MatrixXd r = config_.measurement_noise * Eigen::MatrixXd::Identity(d, d);

@@ -78,6 +78,7 @@ void LocatorNode::Params::load(const ros::NodeHandle& nh) {
            c.max_consecutive_rejections);
   nh.param("ceres_covariance", c.ceres_covariance, c.ceres_covariance);
   nh.param("max_position_sigma", c.max_position_sigma, c.max_position_sigma);
+  nh.param("max_relative_sigma", c.max_relative_sigma, c.max_relative_sigma);
   nh.param("default_range", c.default_range, c.default_range);
 }
 

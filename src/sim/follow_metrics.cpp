@@ -98,6 +98,11 @@ void FollowMetrics::add(const FollowSample& sample) {
   samples_.push_back(sample);
 }
 
+namespace {
+/// Below this the person counts as standing (the gap is only judged while they walk), m/s.
+constexpr double kStandingSpeed = 0.05;
+}  // namespace
+
 FollowReport FollowMetrics::report() const {
   FollowReport r;
   r.min_gap = std::numeric_limits<double>::infinity();
@@ -129,7 +134,9 @@ FollowReport FollowMetrics::report() const {
       caught_up = true;
       r.gap_window_start = s.t - samples_.front().t;
     }
-    if (caught_up && s.target_speed < settings_.robot_max_speed) {
+    const bool walking =
+        s.target_speed > kStandingSpeed && s.target_speed < settings_.robot_max_speed;
+    if (caught_up && walking) {
       gaps_in_window.push_back(gap);
       within += within_now;
     }

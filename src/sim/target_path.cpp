@@ -87,6 +87,68 @@ void TargetPath::randomWalk(int steps, double step_length, double max_turn, doub
   }
 }
 
+void TargetPath::limitAcceleration(double accel) {
+  require(std::isfinite(accel) && accel >= 0.0, "target.accel", accel, "m/s^2 >= 0");
+  if (accel == 0.0 || samples_.size() < 2) {
+    return;
+  }
+  // Short pieces, so that linear interpolation in time stays close to the ramped motion.
+  constexpr double kPiece = 0.05;  // m
+  std::vector<TargetSample> pieces{samples_.front()};
+  std::vector<double> nominal;  // speed of the piece ending at pieces[i + 1]; 0 = a wait
+  std::vector<double> lengths;
+  for (std::size_t i = 1; i < samples_.size(); ++i) {
+    const TargetSample& a = samples_[i - 1];
+    const TargetSample& b = samples_[i];
+    const double length = std::hypot(b.pose.x - a.pose.x, b.pose.y - a.pose.y);
+    const double duration = b.t - a.t;
+    if (length <= 0.0) {
+      pieces.push_back(b);  // a wait (or a turn on the spot), kept as it is
+      nominal.push_back(0.0);
+      lengths.push_back(0.0);
+      continue;
+    }
+    const int n = std::max(1, static_cast<int>(std::ceil(length / kPiece)));
+    for (int k = 1; k <= n; ++k) {
+      TargetSample s = b;
+      s.pose.x = a.pose.x + (b.pose.x - a.pose.x) * k / n;
+      s.pose.y = a.pose.y + (b.pose.y - a.pose.y) * k / n;
+      pieces.push_back(s);
+      nominal.push_back(length / duration);
+      lengths.push_back(length / n);
+    }
+  }
+  // Speed at each piece boundary: at most the slower neighbour, 0 next to a stand, then
+  // reachable forwards and backwards at `accel` (v^2 = u^2 + 2 a d).
+  const std::size_t n = pieces.size();
+  std::vector<double> u(n, 0.0);
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    u[i] = std::min(nominal[i - 1], nominal[i]);
+  }
+  for (std::size_t i = 1; i < n; ++i) {
+    u[i] = std::min(u[i], std::sqrt(u[i - 1] * u[i - 1] + 2.0 * accel * lengths[i - 1]));
+  }
+  for (std::size_t i = n - 1; i-- > 0;) {
+    u[i] = std::min(u[i], std::sqrt(u[i + 1] * u[i + 1] + 2.0 * accel * lengths[i]));
+  }
+  // A piece at constant acceleration from u[i] to u[i + 1] takes 2 L / (u[i] + u[i + 1]).
+  double t = pieces.front().t;
+  std::vector<TargetSample> timed{pieces.front()};
+  timed.front().speed = 0.0;
+  for (std::size_t i = 1; i < n; ++i) {
+    TargetSample s = pieces[i];
+    if (lengths[i - 1] > 0.0) {
+      t += 2.0 * lengths[i - 1] / std::max(u[i - 1] + u[i], 1e-9);
+    } else {
+      t += pieces[i].t - pieces[i - 1].t;
+    }
+    s.t = t;
+    s.speed = u[i];
+    timed.push_back(s);
+  }
+  samples_ = std::move(timed);
+}
+
 TargetSample TargetPath::at(double t) const {
   if (t <= samples_.front().t) {
     return samples_.front();
@@ -234,6 +296,8 @@ Scenario parseScenario(const std::string& yaml_text, const std::string& origin,
   for (std::size_t i = 0; legs.IsDefined() && i < legs.size(); ++i) {
     addLeg(s.target, legs[i], "target.legs[" + std::to_string(i) + "].", speed, seed + i);
   }
+  s.target_accel = numberOr(target, "accel", "target.", "an acceleration in m/s^2", s.target_accel);
+  s.target.limitAcceleration(s.target_accel);
   const YAML::Node obstacles = root["obstacles"];
   if (obstacles.IsDefined()) {
     s.obstacles = readObstacles(obstacles);

@@ -15,6 +15,7 @@
 #include "radio_follow/AoaBearing.h"
 #include "radio_follow/TargetEstimate.h"
 #include "radio_follow/UwbRanges.h"
+#include "radio_follow/config/layout.hpp"
 
 namespace {
 
@@ -22,10 +23,12 @@ namespace {
 const Eigen::Vector3d kTruth(4.0, 1.0, 1.0);
 std::atomic<bool> g_publishing{true};
 
-struct Module {
-  const char* id;
-  Eigen::Vector3d position;
-};
+/// The raw reading a module reports for a true range: the inverse of the layout's linear
+/// calibration (the drivers report raw ranges; the locator calibrates them).
+double rawRange(const radio_follow::TwrModule& module, double range) {
+  const std::vector<double>& c = module.calibration;
+  return c.size() >= 2 ? (range - c[0]) / c[1] : range;
+}
 
 // Plays three UWB modules and two AoA boards at 20 Hz: "front" sees the tag, "back" hears
 // a reflection and reports a plausible bearing inside its own field of view.
@@ -34,21 +37,21 @@ void playDrivers() {
   ros::Publisher uwb = nh.advertise<radio_follow::UwbRanges>("uwb/ranges", 10);
   ros::Publisher front = nh.advertise<radio_follow::AoaBearing>("aoa/front/bearing", 10);
   ros::Publisher back = nh.advertise<radio_follow::AoaBearing>("aoa/back/bearing", 10);
-  const Module modules[] = {{"5722", {0.175, 0.075, 0.115}},
-                            {"5A84", {-0.07, -0.04, 0.093}},
-                            {"C4B5", {-0.30, 0.08, 0.098}}};
+  std::string layout_file;
+  ros::param::get("/locator/layout_file", layout_file);
+  const radio_follow::Layout layout = radio_follow::loadLayoutFile(layout_file);
   const Eigen::Vector3d front_board(0.065, 0.0, 0.25);
   ros::Rate rate(20.0);
   while (ros::ok() && g_publishing) {
     const ros::Time now = ros::Time::now();
-    for (const auto& m : modules) {
+    for (const auto& m : layout.twr_modules) {
       radio_follow::UwbRanges msg;
       msg.header.stamp = now;
-      msg.header.frame_id = std::string("uwb_") + m.id;
+      msg.header.frame_id = m.frame_id;
       msg.tag_id = m.id;
       radio_follow::UwbRange target;
-      target.anchor_id = "DA12";
-      target.range = (kTruth - m.position).norm();
+      target.anchor_id = layout.target_anchor_id;
+      target.range = rawRange(m, (kTruth - m.position).norm());
       radio_follow::UwbRange other;  // another anchor of the network: must be ignored
       other.anchor_id = "0B0B";
       other.range = 0.7;

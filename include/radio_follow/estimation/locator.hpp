@@ -47,6 +47,10 @@ struct LocatorConfig {
   bool ceres_covariance = false;
   /// Largest position standard deviation (worst axis) still reported as OK, m.
   double max_position_sigma = 0.5;
+  /// ... or this fraction of the target's distance, whichever is larger: a bearing's
+  /// sideways error grows with distance, and a far target that is DEGRADED (so followed
+  /// slowly) only gets farther away. 0 disables.
+  double max_relative_sigma = 0.1;
   /// Distance assumed along a bearing when no range exists, m.
   double default_range = 3.0;
 

@@ -34,7 +34,7 @@ struct FollowSettings {
   double follow_distance = 1.6;  ///< m
   double safe_distance = 1.3;    ///< m
   double gap_tolerance = 0.3;    ///< m
-  double robot_max_speed = 1.5;  ///< m/s
+  double robot_max_speed = 1.5;  ///< m/s; the gap is judged while the person walks slower
   /// Gap statistics start once this time has passed and the gap has first come within
   /// gap_tolerance of follow_distance: the robot catching up from its start position is
   /// not following yet. s.

@@ -35,6 +35,12 @@ class TargetPath {
   /// angle within +-`max_turn` rad, at `speed`; deterministic for a given `seed`.
   void randomWalk(int steps, double step_length, double max_turn, double speed, std::uint64_t seed);
 
+  /// Re-times the path so the speed changes at no more than `accel` m/s^2: the person
+  /// speeds up from every stand (start, waits) and slows down into every stand (waits,
+  /// end) instead of switching between standing and walking speed at once. Positions
+  /// are unchanged; call once, after the last leg.
+  void limitAcceleration(double accel);
+
   /// The target at time t (clamped to [0, duration()]).
   TargetSample at(double t) const;
   /// Time the last leg ends, seconds.
@@ -56,6 +62,8 @@ struct Scenario {
   std::string name;
   Pose2 robot_start;
   TargetPath target{Pose2{}};
+  /// The person's acceleration and deceleration, m/s^2 (0: instant speed changes).
+  double target_accel = 1.0;
   /// Height of the target's tags above the ground, metres.
   double target_height = 1.0;
   /// Seconds to simulate; defaults to the target path's end plus `settle_time`.

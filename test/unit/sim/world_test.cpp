@@ -132,6 +132,35 @@ target:
   EXPECT_DOUBLE_EQ(s.target_height, 1.1);
   EXPECT_GT(s.target.duration(), 10.0 + 1.5 * kPi * 3.0);
   EXPECT_DOUBLE_EQ(s.duration, s.target.duration() + s.settle_time);
+  EXPECT_DOUBLE_EQ(s.target_accel, 1.0);
+  EXPECT_LT(s.target.at(0.5).speed, 0.6);  // still speeding up from the start
+}
+
+TEST(TargetPath, LimitedAccelerationRampsIntoAndOutOfStands) {
+  // 10 m at 1 m/s, a 2 s wait, 10 m back: with 1 m/s^2 each start and stop takes 1 s and
+  // 0.5 m, so every ramp adds 0.5 s to the walk.
+  TargetPath path(Pose2{});
+  path.walkTo(10.0, 0.0, 1.0);
+  path.wait(2.0);
+  path.walkTo(0.0, 0.0, 1.0);
+  const double instant = path.duration();
+  path.limitAcceleration(1.0);
+  EXPECT_NEAR(path.duration(), instant + 4 * 0.5, 0.02);
+  double previous_speed = 0.0;
+  double previous_t = 0.0;
+  for (const TargetSample& s : path.samples()) {
+    EXPECT_LE(s.speed, 1.0 + 1e-9);
+    if (s.t > previous_t) {
+      EXPECT_LE(std::abs(s.speed - previous_speed) / (s.t - previous_t), 1.0 + 1e-6) << s.t;
+    }
+    previous_speed = s.speed;
+    previous_t = s.t;
+  }
+  // Positions are unchanged: half way out, at the turn, and back home.
+  EXPECT_NEAR(path.at(path.duration()).pose.x, 0.0, 1e-9);
+  EXPECT_NEAR(path.at(5.5).pose.x, 5.0, 1e-6);    // 0.5 s ramp, then 1 m/s
+  EXPECT_NEAR(path.at(11.0).pose.x, 10.0, 1e-9);  // standing at the turn
+  EXPECT_NEAR(path.length(), 20.0, 1e-9);
 }
 
 TEST(Scenario, RejectsBadLegsNamingThem) {
