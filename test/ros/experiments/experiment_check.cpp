@@ -124,6 +124,14 @@ TEST(Experiment, MeetsItsThresholds) {
   if (!expect_topic.empty()) {
     EXPECT_GT(last_on_topic, expect_after) << expect_topic << " did not publish after the fault";
   }
+  // Nothing crashed: every node the experiment names is still registered at the end.
+  std::vector<std::string> expected_nodes;
+  ros::param::get("~expect_nodes", expected_nodes);
+  std::vector<std::string> nodes;
+  ros::master::getNodes(nodes);
+  for (const std::string& name : expected_nodes) {
+    EXPECT_NE(std::find(nodes.begin(), nodes.end(), name), nodes.end()) << name << " is gone";
+  }
 }
 
 }  // namespace
