@@ -38,6 +38,10 @@ double slowdownCap(double gap, double slowdown_distance, double max_speed, doubl
   return std::min(max_speed, (std::max(0.0, target_speed) + max_speed) * ramp);
 }
 
+bool updateArrived(bool arrived, double gap) {
+  return arrived ? !(gap > kArrivalHysteresis) : !(gap > 0.0);
+}
+
 double gapSpeed(double gap, double target_speed, double dt, Pid& pid,
                 const VelocityLawParams& params) {
   const double feed_forward =
@@ -75,7 +79,7 @@ VelocityCommand VelocityLaw::update(const TargetPolar& target, double dt) {
   cmd.angular = angular_pid_.update(heading_error, dt);
 
   const double gap = target.range - params_.follow_distance;
-  arrived_ = target.range_valid && gap <= 0.0;
+  arrived_ = target.range_valid && updateArrived(arrived_, gap);
   if (!target.range_valid) {
     linear_pid_.reset();
     return cmd;

@@ -57,6 +57,7 @@ PathFollowerNode::PathFollowerNode(ros::NodeHandle& nh, ros::NodeHandle& private
 void PathFollowerNode::onStopped() {
   fallback_law_.reset();
   speed_pid_.reset();
+  arrived_ = false;
 }
 
 void PathFollowerNode::onEstimate(const TargetEstimate::ConstPtr& msg) {
@@ -152,7 +153,8 @@ ControllerBase::Output PathFollowerNode::compute(const ros::Time& now, double dt
   // person walked around it) needs turning in place first.
   out.command.angular =
       std::abs(alpha) > 0.5 * M_PI ? params_.turn_gain * alpha : speed * goal.curvature;
-  if (gap <= 0.0) {
+  arrived_ = control::updateArrived(arrived_, gap);
+  if (arrived_) {
     out.state = control::FollowerState::kArrived;
     out.text = "At follow distance, waiting.";
   } else {

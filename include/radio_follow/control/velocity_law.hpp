@@ -62,7 +62,8 @@ class VelocityLaw {
   void reset();
 
   bool driving_backwards() const { return backwards_; }
-  /// True when the last update found the target at (or inside) the follow distance.
+  /// True once the target came within the follow distance, until the gap opens again by
+  /// more than kArrivalHysteresis (so the status does not flip with every noisy range).
   bool arrived() const { return arrived_; }
 
  private:
@@ -73,6 +74,12 @@ class VelocityLaw {
   int behind_count_ = 0;
   bool arrived_ = false;
 };
+
+/// Gap (m) beyond the follow distance at which an arrived follower reports following again.
+constexpr double kArrivalHysteresis = 0.1;
+
+/// Arrived-state with hysteresis: true from gap <= 0 until gap > kArrivalHysteresis.
+bool updateArrived(bool arrived, double gap);
 
 /// Speed cap as the gap (distance beyond the follow distance) closes:
 /// min(max_speed, (target_speed + max_speed) * min(1, gap / slowdown_distance)), with

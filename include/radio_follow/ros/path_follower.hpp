@@ -51,6 +51,7 @@ class PathFollowerNode : public ControllerBase {
   control::VelocityLaw fallback_law_;
   control::Pid speed_pid_;
   control::PathBuffer path_;
+  bool arrived_ = false;  ///< for the status only (with hysteresis)
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;
   TargetMotionTracker motion_;

@@ -84,6 +84,21 @@ TEST(VelocityLaw, FeedForwardNeverDrivesInsideTheFollowDistance) {
   EXPECT_EQ(law.update(t, 0.05).linear, 0.0);
 }
 
+TEST(VelocityLaw, ArrivalHasHysteresis) {
+  VelocityLaw law{VelocityLawParams()};
+  const double d = VelocityLawParams().follow_distance;
+  law.update(target(d + 0.5, 0.0), 0.05);
+  EXPECT_FALSE(law.arrived());
+  law.update(target(d - 0.01, 0.0), 0.05);
+  EXPECT_TRUE(law.arrived());
+  law.update(target(d + 0.05, 0.0), 0.05);  // noise: still arrived
+  EXPECT_TRUE(law.arrived());
+  law.update(target(d + kArrivalHysteresis + 0.01, 0.0), 0.05);
+  EXPECT_FALSE(law.arrived());
+  law.update(target(d + 0.05, 0.0), 0.05);  // approaching again: not yet arrived
+  EXPECT_FALSE(law.arrived());
+}
+
 TEST(VelocityLaw, TurnsTowardsTargetOnTheLeft) {
   VelocityLaw law{VelocityLawParams()};
   const VelocityCommand cmd = law.update(target(3.0, 1.0), 0.05);
