@@ -56,6 +56,7 @@ LocatorNode::LocatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
   params_.validate();
   layout_ = loadLayoutFile(params_.layout_file);  // validated: target anchor set with TWR
   locator_ = std::make_unique<Locator>(layout_, params_.locator);
+  inputs_ = std::make_unique<LocatorInputs>(*locator_);
   if (params_.uwb_topics.empty() && params_.aoa_topics.empty() && params_.tdoa_topics.empty()) {
     const SensorTopics topics = conventionalTopics(layout_);
     params_.uwb_topics = topics.uwb;
@@ -84,26 +85,15 @@ LocatorNode::LocatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
 }
 
 void LocatorNode::onRanges(const UwbRanges::ConstPtr& msg) {
-  // The module is named by its ID; drivers started without one still set their frame.
-  const std::string& module = msg->tag_id.empty() ? msg->header.frame_id : msg->tag_id;
-  for (const auto& range : msg->ranges) {
-    if (range.anchor_id != layout_.target_anchor_id) {
-      continue;  // another anchor of the UWB network, not the target
-    }
-    if (!locator_->addRange(module, range.range, msg->header.stamp.toSec())) {
-      ++ignored_messages_;
-      ROS_WARN_THROTTLE(5.0, "locator: ignoring range from unknown module '%s' or invalid value",
-                        module.c_str());
-    }
+  if (const std::size_t refused = inputs_->add(*msg)) {
+    ignored_messages_ += refused;
+    ROS_WARN_THROTTLE(5.0, "locator: ignoring range from unknown module '%s' or invalid value",
+                      (msg->tag_id.empty() ? msg->header.frame_id : msg->tag_id).c_str());
   }
 }
 
 void LocatorNode::onBearing(const AoaBearing::ConstPtr& msg) {
-  if (!layout_.target_tag_id.empty() && msg->tag_id != layout_.target_tag_id) {
-    return;
-  }
-  if (!locator_->addBearing(msg->header.frame_id, msg->azimuth, msg->elevation, msg->rssi,
-                            msg->header.stamp.toSec())) {
+  if (inputs_->add(*msg) != 0) {
     ++ignored_messages_;
     ROS_WARN_THROTTLE(5.0, "locator: ignoring bearing from unknown board frame '%s'",
                       msg->header.frame_id.c_str());
@@ -111,13 +101,9 @@ void LocatorNode::onBearing(const AoaBearing::ConstPtr& msg) {
 }
 
 void LocatorNode::onTdoa(const TdoaMeasurements::ConstPtr& msg) {
-  for (const auto& d : msg->differences) {
-    if (!locator_->addTdoa(d.anchor_a, d.anchor_b, d.distance_difference, d.variance,
-                           msg->header.stamp.toSec())) {
-      ++ignored_messages_;
-      ROS_WARN_THROTTLE(5.0, "locator: ignoring TDoA difference %s-%s (unknown anchor?)",
-                        d.anchor_a.c_str(), d.anchor_b.c_str());
-    }
+  if (const std::size_t refused = inputs_->add(*msg)) {
+    ignored_messages_ += refused;
+    ROS_WARN_THROTTLE(5.0, "locator: ignoring %zu TDoA difference(s) (unknown anchor?)", refused);
   }
 }
 

@@ -3,11 +3,13 @@
 
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/ros/locator_node.hpp"  // declares LocatorNode::Params
+#include "radio_follow/ros/yaml_params.hpp"
 
 namespace radio_follow {
 namespace {
 
-LossConfig loadLoss(const ros::NodeHandle& nh, const std::string& name, const LossConfig& def) {
+template <typename Source>
+LossConfig loadLoss(const Source& nh, const std::string& name, const LossConfig& def) {
   std::string type = toString(def.type);
   LossConfig loss = def;
   nh.param(name, type, type);
@@ -18,7 +20,8 @@ LossConfig loadLoss(const ros::NodeHandle& nh, const std::string& name, const Lo
 
 }  // namespace
 
-void LocatorNode::Params::load(const ros::NodeHandle& nh) {
+template <typename Source>
+void LocatorNode::Params::load(const Source& nh) {
   nh.param("layout_file", layout_file, layout_file);
   nh.param("uwb_topics", uwb_topics, uwb_topics);
   nh.param("aoa_topics", aoa_topics, aoa_topics);
@@ -81,6 +84,9 @@ void LocatorNode::Params::load(const ros::NodeHandle& nh) {
   nh.param("max_relative_sigma", c.max_relative_sigma, c.max_relative_sigma);
   nh.param("default_range", c.default_range, c.default_range);
 }
+
+template void LocatorNode::Params::load(const ros::NodeHandle&);
+template void LocatorNode::Params::load(const YamlParams&);
 
 void LocatorNode::Params::validate() const {
   require(!layout_file.empty(), "~layout_file", layout_file, "the path of a layout YAML file");

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "radio_follow/common/angles.hpp"
+#include "radio_follow/tools/error_statistics.hpp"
 
 namespace radio_follow {
 namespace sim {
@@ -14,25 +15,6 @@ namespace {
 
 /// Path points closer than this are merged: the person's path at 5 cm resolution.
 constexpr double kPathResolution = 0.05;
-
-double quantile(std::vector<double> values, double q) {
-  if (values.empty()) {
-    return std::numeric_limits<double>::quiet_NaN();
-  }
-  const std::size_t k = static_cast<std::size_t>(q * (values.size() - 1) + 0.5);
-  std::nth_element(values.begin(), values.begin() + k, values.end());
-  return values[k];
-}
-
-double mean(const std::vector<double>& values) {
-  if (values.empty()) {
-    return std::numeric_limits<double>::quiet_NaN();
-  }
-  double sum = 0.0;
-  for (double v : values)
-    sum += v;
-  return sum / values.size();
-}
 
 struct PathPoint {
   double x;

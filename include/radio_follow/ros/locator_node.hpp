@@ -15,6 +15,7 @@
 #include "radio_follow/TdoaMeasurements.h"
 #include "radio_follow/UwbRanges.h"
 #include "radio_follow/estimation/locator.hpp"
+#include "radio_follow/ros/locator_inputs.hpp"
 
 namespace radio_follow {
 
@@ -35,7 +36,10 @@ class LocatorNode {
     LocatorConfig locator;  ///< the core's tuning
 
     /// Reads every parameter from the private node handle (names in doc/nodes/locator.md).
-    void load(const ros::NodeHandle& private_nh);
+    /// Reads the private parameters from `source`: a ros::NodeHandle, or a YamlParams
+    /// (a parameter file, for tools without a master) - the same keys either way.
+    template <typename Source>
+    void load(const Source& source);
     /// Throws ParamError naming the first invalid parameter.
     void validate() const;
   };
@@ -53,6 +57,7 @@ class LocatorNode {
   Params params_;
   Layout layout_;
   std::unique_ptr<Locator> locator_;
+  std::unique_ptr<LocatorInputs> inputs_;
   std::vector<ros::Subscriber> subscribers_;
   ros::Publisher target_pub_;
   ros::Publisher pose_pub_;

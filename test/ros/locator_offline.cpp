@@ -1,0 +1,148 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// locator_offline on the shipped simulator bag: the replay runs the locator at the
+// node's rate over the whole bag and its errors against the bag's ground truth match
+// what the live loop measured; the tool writes its files, ranks a sweep with a bad
+// setting last, and refuses bad input with a message naming it.
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "radio_follow/ros/locator_node.hpp"
+#include "radio_follow/ros/locator_replay.hpp"
+#include "radio_follow/ros/yaml_params.hpp"
+
+namespace rf = radio_follow;
+
+namespace {
+
+std::string param(const std::string& name) {
+  std::string value;
+  EXPECT_TRUE(ros::param::get("~" + name, value)) << name;
+  return value;
+}
+
+std::string readFile(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+/// Runs the tool (built next to this test binary); returns its exit code and puts its
+/// output (stdout + stderr) in `output`.
+int runTool(const std::string& args, std::string& output) {
+  const std::string tool =
+      std::filesystem::read_symlink("/proc/self/exe").parent_path() / "locator_offline";
+  const std::string log = std::filesystem::temp_directory_path() / "locator_offline_test.log";
+  const int status = std::system((tool + " " + args + " > " + log + " 2>&1").c_str());
+  output = readFile(log);
+  return WEXITSTATUS(status);
+}
+
+class LocatorOffline : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    bag_ = param("bag");
+    config_ = param("config_dir");
+    layout_ = config_ + "/layouts/spot.yaml";
+    out_ = std::filesystem::temp_directory_path() / "locator_offline_test";
+    std::filesystem::remove_all(out_);
+  }
+  std::string bag_, config_, layout_, out_;
+};
+
+TEST_F(LocatorOffline, ReplaysTheBagAtTheNodesRateAndMatchesTheLiveErrors) {
+  const rf::BagData bag = rf::loadBag(bag_, "ground_truth/target_relative");
+  ASSERT_GT(bag.duration(), 30.0);
+  EXPECT_GT(bag.ranges.size(), 1000u);    // 3 modules at 10 Hz
+  EXPECT_GT(bag.bearings.size(), 1000u);  // 4 boards at 10 Hz
+  EXPECT_GT(bag.truth.size(), 500u);
+
+  rf::LocatorNode::Params p;
+  p.load(rf::YamlParams::fromFile(config_ + "/locator.yaml"));
+  const rf::ReplayResult r = rf::replay(bag, rf::loadLayoutFile(layout_), p.locator, 20.0);
+  // One update every 1/20 s over the bag's span.
+  EXPECT_NEAR(double(r.rows.size()), bag.duration() * 20.0, 2.0);
+  EXPECT_EQ(r.refused, 0u);
+  EXPECT_GT(r.availability, 0.95);
+  const rf::ErrorSummary e = r.statistics.overall();
+  EXPECT_GT(e.count, r.rows.size() * 9 / 10);
+  EXPECT_LT(e.median, 0.15);  // the live demo loop measures 0.06-0.07 m
+  EXPECT_LT(e.p95, 0.5);
+}
+
+TEST_F(LocatorOffline, ToolWritesEstimatesAndStatistics) {
+  std::string output;
+  ASSERT_EQ(runTool(bag_ + " --layout " + layout_ + " --params " + config_ +
+                        "/locator.yaml --out " + out_,
+                    output),
+            0)
+      << output;
+  EXPECT_NE(output.find("x real time"), std::string::npos) << output;
+  const std::string csv = readFile(out_ + "/estimates.csv");
+  EXPECT_EQ(csv.rfind("t,status,x,y,z,sigma_x,sigma_y,truth_x,truth_y,error\n", 0), 0u);
+  EXPECT_GT(std::count(csv.begin(), csv.end(), '\n'), 700);
+  const std::string json = readFile(out_ + "/summary.json");
+  EXPECT_NE(json.find("\"by_sector\""), std::string::npos);
+  EXPECT_NE(json.find("\"by_distance\""), std::string::npos);
+}
+
+TEST_F(LocatorOffline, SweepRanksAMisconfiguredRangeNoiseLast) {
+  const std::string grid = out_ + "_grid.yaml";
+  {
+    std::ofstream g(grid);
+    // A range sigma of 3 m tells the solver to all but ignore the ranges.
+    g << "range_sigma: [0.03, 3.0]\nbearing_loss: [huber, cauchy]\n";
+  }
+  std::string output;
+  ASSERT_EQ(runTool(bag_ + " --layout " + layout_ + " --params " + config_ +
+                        "/locator.yaml --sweep " + grid + " --out " + out_,
+                    output),
+            0)
+      << output;
+  const std::string csv = readFile(out_ + "/sweep.csv");
+  std::istringstream lines(csv);
+  std::string line;
+  std::vector<std::string> rows;
+  while (std::getline(lines, line)) {
+    rows.push_back(line);
+  }
+  ASSERT_EQ(rows.size(), 5u) << csv;  // header + 2 x 2 combinations
+  EXPECT_NE(rows[1].find("range_sigma=0.03"), std::string::npos) << csv;
+  EXPECT_NE(rows[4].find("range_sigma=3"), std::string::npos) << csv;
+}
+
+TEST_F(LocatorOffline, BadInputIsRefusedWithItsName) {
+  std::string output;
+  EXPECT_EQ(runTool(bag_ + " --layout " + layout_ + " --params /nonexistent.yaml", output), 2);
+  EXPECT_NE(output.find("/nonexistent.yaml"), std::string::npos) << output;
+
+  const std::string bad = out_ + "_bad.yaml";
+  {
+    std::ofstream b(bad);
+    b << "range_sigma: -1.0\n";
+  }
+  EXPECT_EQ(runTool(bag_ + " --layout " + layout_ + " --params " + bad, output), 2);
+  EXPECT_NE(output.find("range_sigma"), std::string::npos) << output;
+  EXPECT_NE(output.find("-1"), std::string::npos) << output;
+
+  EXPECT_EQ(runTool("/nonexistent.bag --layout " + layout_, output), 1);
+  EXPECT_NE(output.find("/nonexistent.bag"), std::string::npos) << output;
+  EXPECT_EQ(runTool(bag_, output), 2);  // no --layout
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "locator_offline_rostest");
+  return RUN_ALL_TESTS();
+}
