@@ -4,7 +4,9 @@
 # (test/data/sim_spot_straight.bag): the Spot layout, the straight walk, seed 1, the
 # velocity controller in the loop, through launch/record.launch. Run it again after
 # changing the simulator or the message definitions.
-# Arguments: an output path (default: the file above) and extra demo.launch arguments.
+# Arguments: an output path (default: the file above) and extra demo.launch arguments;
+# RF_BAG_SCENARIO and RF_BAG_TIME_FACTOR choose another scenario and speed (the offline
+# evaluator's speed was measured on a long random walk made this way).
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 out="${1:-$repo/test/data/sim_spot_straight.bag}"
@@ -24,7 +26,8 @@ rosparam set /use_sim_time true  # the recorder must stamp with the simulator's 
 roslaunch radio_follow record.launch prefix:="$tmp/sim" split_size:=0 >/dev/null 2>&1 &
 record=$!
 sleep 2
-roslaunch radio_follow demo.launch scenario:=straight_walk time_factor:=2 \
+roslaunch radio_follow demo.launch scenario:="${RF_BAG_SCENARIO:-straight_walk}" \
+  time_factor:="${RF_BAG_TIME_FACTOR:-2}" \
   report_dir:="$tmp/report" "$@" >/dev/null 2>&1
 kill -INT $record
 wait $record || true

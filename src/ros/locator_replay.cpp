@@ -23,7 +23,10 @@ BagData loadBag(const std::string& path, const std::string& truth_topic) {
   }
   // The replay clock is the messages' own stamps (the drivers stamp on receipt), the
   // time base the locator node compares them with; the recorder's clock may differ.
-  for (const rosbag::MessageInstance& m : rosbag::View(bag)) {
+  // Only the connections of these types are read (TF, odometry, ... are skipped).
+  const rosbag::TypeQuery types({"radio_follow/UwbRanges", "radio_follow/AoaBearing",
+                                 "radio_follow/TdoaMeasurements", "geometry_msgs/PointStamped"});
+  for (const rosbag::MessageInstance& m : rosbag::View(bag, types)) {
     if (auto r = m.instantiate<UwbRanges>()) {
       data.entries.push_back(
           {r->header.stamp.toSec(), BagData::Entry::Kind::kRanges, data.ranges.size()});
