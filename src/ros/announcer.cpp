@@ -53,12 +53,7 @@ void AnnouncerNode::Params::validate() const {
 }
 
 AnnouncerNode::AnnouncerNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
-    : params_([&] {
-        Params p;
-        p.load(private_nh);
-        p.validate();
-        return p;
-      }()),
+    : params_(loadValidated<Params>(private_nh)),
       queue_(params_.repeat_interval, static_cast<std::size_t>(params_.max_queued)),
       executable_(findExecutable(params_.command)) {
   if (executable_.empty()) {

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/ros/params.hpp"
 #include "radio_follow/ros/velocity_controller.hpp"
 
 namespace radio_follow {
@@ -37,12 +38,7 @@ void PathFollowerNode::Params::validate() const {
 
 PathFollowerNode::PathFollowerNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
     : ControllerBase(nh, private_nh, true),
-      params_([&] {
-        Params p;
-        p.load(private_nh);
-        p.validate();
-        return p;
-      }()),
+      params_(loadValidated<Params>(private_nh)),
       law_params_(loadVelocityLawParams(private_nh, common())),
       fallback_law_(law_params_),
       speed_pid_(law_params_.linear),

@@ -3,6 +3,7 @@
 
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/ros/params.hpp"
 
 namespace radio_follow {
 
@@ -56,12 +57,7 @@ void VelocityControllerNode::Params::validate() const {
 
 VelocityControllerNode::VelocityControllerNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
     : ControllerBase(nh, private_nh, true),
-      params_([&] {
-        Params p;
-        p.load(private_nh);
-        p.validate();
-        return p;
-      }()),
+      params_(loadValidated<Params>(private_nh)),
       law_(loadVelocityLawParams(private_nh, common())),
       tf_listener_(tf_buffer_),
       motion_(tf_buffer_, params_.odom_frame, params_.tf_timeout) {

@@ -175,38 +175,24 @@ FollowReport FollowMetrics::report() const {
   return r;
 }
 
-namespace {
-
-std::string number(double v) {
-  if (!std::isfinite(v)) {
-    return "null";
-  }
-  std::ostringstream out;
-  out.precision(6);
-  out << v;
-  return out.str();
-}
-
-}  // namespace
-
 std::string FollowReport::toJson() const {
   std::ostringstream out;
   out << "{\n"
-      << "  \"duration_s\": " << number(duration) << ",\n"
-      << "  \"robot_distance_m\": " << number(robot_distance) << ",\n"
-      << "  \"target_distance_m\": " << number(target_distance) << ",\n"
-      << "  \"min_gap_m\": " << number(min_gap) << ",\n"
-      << "  \"min_gap_while_moving_m\": " << number(min_gap_while_moving) << ",\n"
-      << "  \"gap_mean_m\": " << number(gap_mean) << ",\n"
-      << "  \"gap_within_tolerance\": " << number(gap_within_tolerance) << ",\n"
+      << "  \"duration_s\": " << jsonNumber(duration) << ",\n"
+      << "  \"robot_distance_m\": " << jsonNumber(robot_distance) << ",\n"
+      << "  \"target_distance_m\": " << jsonNumber(target_distance) << ",\n"
+      << "  \"min_gap_m\": " << jsonNumber(min_gap) << ",\n"
+      << "  \"min_gap_while_moving_m\": " << jsonNumber(min_gap_while_moving) << ",\n"
+      << "  \"gap_mean_m\": " << jsonNumber(gap_mean) << ",\n"
+      << "  \"gap_within_tolerance\": " << jsonNumber(gap_within_tolerance) << ",\n"
       << "  \"gap_samples\": " << gap_samples << ",\n"
-      << "  \"gap_window_start_s\": " << number(gap_window_start) << ",\n"
-      << "  \"estimate_availability\": " << number(estimate_availability) << ",\n"
-      << "  \"estimate_error_median_m\": " << number(estimate_error_median) << ",\n"
-      << "  \"estimate_error_p95_m\": " << number(estimate_error_p95) << ",\n"
-      << "  \"estimate_error_mean_m\": " << number(estimate_error_mean) << ",\n"
-      << "  \"path_deviation_median_m\": " << number(path_deviation_median) << ",\n"
-      << "  \"path_deviation_max_m\": " << number(path_deviation_max) << ",\n"
+      << "  \"gap_window_start_s\": " << jsonNumber(gap_window_start) << ",\n"
+      << "  \"estimate_availability\": " << jsonNumber(estimate_availability) << ",\n"
+      << "  \"estimate_error_median_m\": " << jsonNumber(estimate_error_median) << ",\n"
+      << "  \"estimate_error_p95_m\": " << jsonNumber(estimate_error_p95) << ",\n"
+      << "  \"estimate_error_mean_m\": " << jsonNumber(estimate_error_mean) << ",\n"
+      << "  \"path_deviation_median_m\": " << jsonNumber(path_deviation_median) << ",\n"
+      << "  \"path_deviation_max_m\": " << jsonNumber(path_deviation_max) << ",\n"
       << "  \"path_samples\": " << path_samples << "\n"
       << "}\n";
   return out.str();

@@ -75,9 +75,7 @@ void ErrorStatistics::add(double truth_x, double truth_y, double error) {
   bands_[band].push_back(error);
 }
 
-namespace {
-
-std::string number(double v) {
+std::string jsonNumber(double v) {
   if (!std::isfinite(v)) {
     return "null";
   }
@@ -87,11 +85,13 @@ std::string number(double v) {
   return out.str();
 }
 
+namespace {
+
 std::string json(const ErrorSummary& s) {
   std::ostringstream out;
-  out << "{\"count\": " << s.count << ", \"mean_m\": " << number(s.mean)
-      << ", \"median_m\": " << number(s.median) << ", \"p95_m\": " << number(s.p95)
-      << ", \"max_m\": " << number(s.max) << "}";
+  out << "{\"count\": " << s.count << ", \"mean_m\": " << jsonNumber(s.mean)
+      << ", \"median_m\": " << jsonNumber(s.median) << ", \"p95_m\": " << jsonNumber(s.p95)
+      << ", \"max_m\": " << jsonNumber(s.max) << "}";
   return out.str();
 }
 

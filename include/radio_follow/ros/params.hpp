@@ -14,4 +14,14 @@ namespace radio_follow {
 void loadStringList(const ros::NodeHandle& private_nh, const std::string& name,
                     std::vector<std::string>& out);
 
+/// A node's parameter struct loaded from the private namespace and validated (throws
+/// ParamError naming the first bad parameter), for a constructor's initialiser list.
+template <typename Params>
+Params loadValidated(const ros::NodeHandle& private_nh) {
+  Params p;
+  p.load(private_nh);
+  p.validate();
+  return p;
+}
+
 }  // namespace radio_follow

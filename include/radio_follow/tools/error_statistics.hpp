@@ -13,6 +13,9 @@ double quantile(std::vector<double> values, double q);
 /// Arithmetic mean; NaN for no values.
 double mean(const std::vector<double>& values);
 
+/// A number for a JSON document: 6 significant digits, `null` when not finite.
+std::string jsonNumber(double v);
+
 /// Count, mean, median, 95th percentile and maximum of a set of errors.
 struct ErrorSummary {
   std::size_t count = 0;
