@@ -22,6 +22,9 @@ from matplotlib.colors import LogNorm, TwoSlopeNorm  # noqa: E402
 from matplotlib.patches import Wedge  # noqa: E402
 
 
+LOG_TICKS = [k * 10.0**e for e in range(-3, 2) for k in (1, 2, 5)]
+
+
 def load(summary_path):
     summary = json.loads(Path(summary_path).read_text())
     rows = list(csv.DictReader(open(Path(summary_path).parent / summary["map_csv"], newline="")))
@@ -61,7 +64,11 @@ def draw_map(fig, ax, summary, xs, values, norm, cmap, label):
     ax.set_aspect("equal")
     ax.set_xlabel("x (ahead) [m]")
     ax.set_ylabel("y (left) [m]")
-    fig.colorbar(mesh, ax=ax, label=label, shrink=0.8)
+    bar = fig.colorbar(mesh, ax=ax, label=label, shrink=0.8)
+    if isinstance(norm, LogNorm):
+        ticks = [t for t in LOG_TICKS if norm.vmin <= t <= norm.vmax]
+        bar.set_ticks(ticks)
+        bar.set_ticklabels([f"{t:g}" for t in ticks])
     inset = ax.inset_axes([0.69, 0.69, 0.3, 0.3])
     inset.set_facecolor("white")
     draw_sensors(inset, summary)

@@ -222,8 +222,9 @@ void print(const Evaluated& e, const rf::AdvisorConfig& config) {
   for (const auto& s : e.summary.sectors) {
     if (s.weak) {
       char buffer[64];
-      std::snprintf(buffer, sizeof(buffer), " %+.1f deg (%s x median)", s.centre_deg,
-                    std::isfinite(s.worst_ratio) ? cell(s.worst_ratio).c_str() : "unobservable");
+      const std::string ratio =
+          std::isfinite(s.worst_ratio) ? cell(s.worst_ratio) + " x median" : "unobservable";
+      std::snprintf(buffer, sizeof(buffer), " %+.1f deg (%s)", s.centre_deg, ratio.c_str());
       weak += buffer;
     }
   }
