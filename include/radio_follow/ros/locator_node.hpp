@@ -15,6 +15,7 @@
 #include "radio_follow/TdoaMeasurements.h"
 #include "radio_follow/UwbRanges.h"
 #include "radio_follow/estimation/locator.hpp"
+#include "radio_follow/ros/locator_reconfigure.hpp"
 
 namespace radio_follow {
 
@@ -53,6 +54,7 @@ class LocatorNode {
   Params params_;
   Layout layout_;
   std::unique_ptr<Locator> locator_;
+  std::unique_ptr<LocatorReconfigure> reconfigure_;  ///< live tuning, after the params load
   std::vector<ros::Subscriber> subscribers_;
   ros::Publisher target_pub_;
   ros::Publisher pose_pub_;
