@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Live tuning of the running locator node through its dynamic_reconfigure service: the
-// server starts with the loaded parameters, a valid change is applied and written back
-// to the parameter server, an invalid one is refused and the old value stays.
+// Live tuning of the running locator and velocity_controller through their
+// dynamic_reconfigure services: each server starts with the loaded parameters, a valid
+// change is applied and written back to the parameter server, an invalid one is refused
+// and the old value stays.
 #include <dynamic_reconfigure/Reconfigure.h>
 #include <gtest/gtest.h>
 #include <ros/ros.h>
@@ -11,11 +12,13 @@
 namespace {
 
 constexpr char kService[] = "locator/set_parameters";
+constexpr char kControllerService[] = "velocity_controller/set_parameters";
 
-dynamic_reconfigure::Config call(const dynamic_reconfigure::Config& request) {
+dynamic_reconfigure::Config call(const dynamic_reconfigure::Config& request,
+                                 const std::string& service = kService) {
   dynamic_reconfigure::Reconfigure srv;
   srv.request.config = request;
-  EXPECT_TRUE(ros::service::call(kService, srv)) << "set_parameters failed";
+  EXPECT_TRUE(ros::service::call(service, srv)) << service << " failed";
   return srv.response.config;
 }
 
@@ -57,28 +60,30 @@ std::string stringOf(const dynamic_reconfigure::Config& c, const std::string& na
   return "";
 }
 
-double param(const std::string& name) {
+double param(const std::string& name, const std::string& node = "locator") {
   double value = -1.0;
-  EXPECT_TRUE(ros::param::get("locator/" + name, value)) << name;
+  EXPECT_TRUE(ros::param::get(node + "/" + name, value)) << name;
   return value;
 }
 
-class LocatorReconfigure : public ::testing::Test {
+class LiveTuning : public ::testing::Test {
  protected:
   void SetUp() override {
-    ASSERT_TRUE(ros::service::waitForService(kService, ros::Duration(30.0)))
-        << "no " << kService << " within 30 s";
+    for (const char* service : {kService, kControllerService}) {
+      ASSERT_TRUE(ros::service::waitForService(service, ros::Duration(30.0)))
+          << "no " << service << " within 30 s";
+    }
   }
 };
 
-TEST_F(LocatorReconfigure, StartsWithTheLoadedParameters) {
+TEST_F(LiveTuning, LocatorStartsWithTheLoadedParameters) {
   const auto current = call(dynamic_reconfigure::Config());
   EXPECT_DOUBLE_EQ(doubleOf(current, "range_sigma"), 0.05);  // launch file, not the .cfg
   EXPECT_EQ(stringOf(current, "range_loss"), "huber");
   EXPECT_DOUBLE_EQ(doubleOf(current, "gate_probability"), 0.999);  // core default
 }
 
-TEST_F(LocatorReconfigure, AppliesAValidChange) {
+TEST_F(LiveTuning, LocatorAppliesAValidChange) {
   const auto after = call(withDouble("azimuth_sigma_deg", 7.5));
   EXPECT_DOUBLE_EQ(doubleOf(after, "azimuth_sigma_deg"), 7.5);
   EXPECT_DOUBLE_EQ(param("azimuth_sigma_deg"), 7.5);
@@ -86,7 +91,7 @@ TEST_F(LocatorReconfigure, AppliesAValidChange) {
   EXPECT_EQ(stringOf(model, "motion_model"), "constant_velocity");
 }
 
-TEST_F(LocatorReconfigure, RefusesAnInvalidChangeAndKeepsTheOldValue) {
+TEST_F(LiveTuning, LocatorRefusesAnInvalidChangeAndKeepsTheOldValue) {
   // In the .cfg's range [0, 1] but not a valid gate (validate: 0 or in (0.5, 1)).
   const auto gate = call(withDouble("gate_probability", 0.3));
   EXPECT_DOUBLE_EQ(doubleOf(gate, "gate_probability"), 0.999);
@@ -98,11 +103,24 @@ TEST_F(LocatorReconfigure, RefusesAnInvalidChangeAndKeepsTheOldValue) {
   EXPECT_EQ(stringOf(loss, "range_loss"), "huber");
 }
 
+TEST_F(LiveTuning, ControllerSafeDistanceKeepsItsValidation) {
+  const auto start = call(dynamic_reconfigure::Config(), kControllerService);
+  EXPECT_DOUBLE_EQ(doubleOf(start, "safe_distance"), 1.1);  // launch file, not the .cfg
+  const auto wider = call(withDouble("safe_distance", 1.6), kControllerService);
+  EXPECT_DOUBLE_EQ(doubleOf(wider, "safe_distance"), 1.6);
+  EXPECT_DOUBLE_EQ(param("safe_distance", "velocity_controller"), 1.6);
+  const auto negative = call(withDouble("safe_distance", -0.5), kControllerService);
+  EXPECT_DOUBLE_EQ(doubleOf(negative, "safe_distance"), 1.6);
+  EXPECT_DOUBLE_EQ(param("safe_distance", "velocity_controller"), 1.6);
+  const auto stopped = call(withDouble("max_linear", 0.0), kControllerService);
+  EXPECT_GT(doubleOf(stopped, "max_linear"), 0.0);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);
-  ros::init(argc, argv, "locator_reconfigure_rostest");
+  ros::init(argc, argv, "live_tuning_rostest");
   ros::AsyncSpinner spinner(1);
   spinner.start();
   return RUN_ALL_TESTS();
