@@ -81,7 +81,10 @@ Options parse(int argc, char** argv) {
     } else if (key == "--height") {
       opt.config.target_height = number(key, value());
     } else if (key == "--sectors") {
-      opt.config.sectors = static_cast<int>(number(key, value()));
+      const double sectors = number(key, value());
+      rf::require(sectors >= 1.0 && sectors <= 360.0 && sectors == std::floor(sectors), key,
+                  sectors, "a whole number of sectors from 1 to 360");
+      opt.config.sectors = static_cast<int>(sectors);
     } else if (key == "--weak-factor") {
       opt.config.weak_factor = number(key, value());
     } else if (key == "--3d") {
