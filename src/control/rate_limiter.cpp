@@ -50,6 +50,15 @@ VelocityCommand CommandLimiter::update(const VelocityCommand& request, double dt
   return out;
 }
 
+void CommandLimiter::setLimits(const MotionLimits& limits) {
+  limits.validate();
+  const double linear = linear_.value();
+  const double angular = angular_.value();
+  *this = CommandLimiter(limits);
+  linear_.reset(linear);
+  angular_.reset(angular);
+}
+
 void CommandLimiter::reset() {
   linear_.reset();
   angular_.reset();

@@ -22,6 +22,11 @@ void SafetyParams::validate() const {
 
 SafetyMonitor::SafetyMonitor(const SafetyParams& params) : params_(params) {}
 
+void SafetyMonitor::setParams(const SafetyParams& params) {
+  params.validate();
+  params_ = params;
+}
+
 bool SafetyMonitor::onRange(double time, const std::string& source, double range) {
   // A NaN range cannot prove the target is far away: it counts as a violation.
   const bool violation = !(range >= params_.safe_distance);

@@ -65,6 +65,22 @@ void KalmanFilter::reset() {
   p_.setZero();
 }
 
+bool KalmanFilter::reconfigure(const KalmanConfig& config) {
+  if (config.model == config_.model && config.dims == config_.dims) {
+    config_ = config;
+    gate_ = KalmanFilter(config).gate_;
+    return true;
+  }
+  const std::size_t gated = gated_;
+  const std::size_t invalid = invalid_;
+  const std::size_t resets = resets_;
+  *this = KalmanFilter(config);
+  gated_ = gated;
+  invalid_ = invalid;
+  resets_ = resets;
+  return false;
+}
+
 Eigen::VectorXd KalmanFilter::velocity() const {
   if (config_.model == MotionModel::kConstantVelocity) {
     return x_.tail(config_.dims);

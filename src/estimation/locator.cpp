@@ -5,6 +5,9 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <string>
+#include <utility>
 
 #include "radio_follow/common/param_error.hpp"
 
@@ -79,7 +82,7 @@ void LocatorConfig::validate() const {
 Locator::Locator(const Layout& layout, const LocatorConfig& config)
     : layout_(layout),
       config_(validated(config)),
-      solver_(solverConfig(config_)),
+      solver_(std::make_unique<PositionSolver>(solverConfig(config_))),
       selector_(layout.aoa_boards.size(), config_.aoa),
       filter_(kalmanConfig(config_)),
       ranges_(layout.twr_modules.size()),
@@ -87,6 +90,26 @@ Locator::Locator(const Layout& layout, const LocatorConfig& config)
   init_config_.planar = config.planar;
   init_config_.height = config.height;
   init_config_.default_range = config.default_range;
+}
+
+bool Locator::setConfig(const LocatorConfig& config) {
+  config.validate();
+  require(config.planar == config_.planar, "mode", std::string(config.planar ? "2d" : "3d"),
+          std::string("the mode the locator started with (") + (config_.planar ? "2d" : "3d") +
+              "): it sets the size of the filter's state");
+  const bool selection_changed = config.aoa.mode != config_.aoa.mode ||
+                                 config.aoa.rssi_window != config_.aoa.rssi_window ||
+                                 config.aoa.vote_window != config_.aoa.vote_window;
+  auto solver = std::make_unique<PositionSolver>(solverConfig(config));
+  // Nothing below throws: the new tuning is applied entirely or not at all.
+  config_ = config;
+  solver_ = std::move(solver);
+  if (selection_changed) {
+    selector_ = AoaSelector(layout_.aoa_boards.size(), config_.aoa);
+  }
+  init_config_.height = config_.height;
+  init_config_.default_range = config_.default_range;
+  return filter_.reconfigure(kalmanConfig(config_));
 }
 
 bool Locator::addRange(const std::string& module_id, double raw_range, double t) {
@@ -257,11 +280,11 @@ LocatorEstimate Locator::update(double now) {
   const auto start = std::chrono::steady_clock::now();
   SolveResult result;
   if (warm_usable) {
-    result = solver_.solve(obs, *warm_);
+    result = solver_->solve(obs, *warm_);
   } else if (const auto guess = trilaterate(obs.ranges, init_config_)) {
-    result = solver_.solveCold(obs, *guess);
+    result = solver_->solveCold(obs, *guess);
   } else {
-    result = solver_.solveMultiStart(obs, multiStartCandidates(obs, init_config_));
+    result = solver_->solveMultiStart(obs, multiStartCandidates(obs, init_config_));
   }
   stats_.last_solve_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -11,6 +11,7 @@
 #include "radio_follow/FollowerStatus.h"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/config/layout.hpp"
+#include "radio_follow/ros/controller_reconfigure.hpp"
 #include "radio_follow/ros/params.hpp"
 
 namespace radio_follow {
@@ -103,6 +104,8 @@ ControllerBase::ControllerBase(ros::NodeHandle& nh, ros::NodeHandle& private_nh,
       monitor_(common_.safety),
       limiter_(common_.limits) {}
 
+ControllerBase::~ControllerBase() = default;
+
 void ControllerBase::start() {
   cmd_pub_ = nh_.advertise<geometry_msgs::Twist>(common_.cmd_vel_topic, 1);
   status_pub_ = private_nh_.advertise<FollowerStatus>("status", 10, true);
@@ -121,6 +124,13 @@ void ControllerBase::start() {
 
   std::signal(SIGINT, requestStop);
   std::signal(SIGTERM, requestStop);
+
+  reconfigure_ = std::make_unique<ControllerReconfigure>(
+      private_nh_, common_, [this](const ControllerCommonParams& params) {
+        monitor_.setParams(params.safety);  // both validated by the caller: no partial update
+        limiter_.setLimits(params.limits);
+        common_ = params;
+      });
 
   setEnabled(common_.start_enabled);
   timer_ = nh_.createTimer(ros::Duration(1.0 / common_.rate), &ControllerBase::onTick, this);

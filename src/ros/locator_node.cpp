@@ -76,6 +76,13 @@ LocatorNode::LocatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
   for (const auto& topic : params_.tdoa_topics) {
     subscribers_.push_back(nh.subscribe(topic, 50, &LocatorNode::onTdoa, this));
   }
+  reconfigure_ = std::make_unique<LocatorReconfigure>(
+      private_nh, params_.locator, [this](const LocatorConfig& config) {
+        if (!locator_->setConfig(config)) {
+          ROS_INFO("locator: motion model changed, the filter restarts from the next solve");
+        }
+        params_.locator = config;
+      });
   diagnostics_.setHardwareID("locator");
   diagnostics_.add("locator", this, &LocatorNode::diagnose);
   timer_ = nh.createTimer(ros::Duration(1.0 / params_.rate), &LocatorNode::onTimer, this);

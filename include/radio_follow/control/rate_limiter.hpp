@@ -51,6 +51,10 @@ class CommandLimiter {
 
   VelocityCommand update(const VelocityCommand& request, double dt);
   void reset();
+  /// New limits at runtime (live tuning); the current output is kept, so the next update
+  /// moves from it at the new rates. Throws ParamError and keeps the old limits when
+  /// `limits` fails validate().
+  void setLimits(const MotionLimits& limits);
 
  private:
   MotionLimits limits_;

@@ -49,6 +49,10 @@ class SafetyMonitor {
   /// An estimate stamped `stamp`; `usable` is false for a LOST estimate.
   void onEstimate(double stamp, bool usable);
 
+  /// New thresholds at runtime (live tuning). Throws ParamError and keeps the old ones
+  /// when `params` fails validate(); the latched state and the last ranges are kept.
+  void setParams(const SafetyParams& params);
+
   void setEnabled(bool enabled) { enabled_ = enabled; }
   bool enabled() const { return enabled_; }
 

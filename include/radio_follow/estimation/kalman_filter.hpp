@@ -44,6 +44,11 @@ class KalmanFilter {
   /// (dims x dims). NaN/Inf or a non-positive-definite r is rejected and counted, never repaired.
   CorrectionResult correct(const Eigen::VectorXd& z, const Eigen::MatrixXd& r, double t);
   void reset();
+  /// Applies new tuning at runtime. With the same motion model and dimension the state,
+  /// covariance and counters are kept and only Q, the gate and the rejection limit
+  /// change (returns true); otherwise the state has another size and the filter starts
+  /// again uninitialised, keeping its counters (returns false).
+  bool reconfigure(const KalmanConfig& config);
 
   bool initialized() const { return initialized_; }
   /// Position part of the state and its covariance.

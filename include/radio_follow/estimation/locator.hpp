@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -103,6 +104,14 @@ class Locator {
   bool addTdoa(const std::string& anchor_a, const std::string& anchor_b, double difference,
                double variance, double t);
 
+  /// Applies new tuning without a restart (live tuning). Throws ParamError and keeps the
+  /// old tuning when `config` is invalid or changes `mode` (2d/3d: the state's size).
+  /// The buffered measurements and statistics are kept. The filter keeps its track unless
+  /// motion_model changes (then it restarts from the next solve); a change of the AoA
+  /// selection settings restarts the board selection's RSSI history. Returns false when
+  /// the filter was restarted.
+  bool setConfig(const LocatorConfig& config);
+
   /// Solves and filters with what is fresh at `now`.
   LocatorEstimate update(double now);
 
@@ -137,7 +146,7 @@ class Locator {
   Layout layout_;
   LocatorConfig config_;
   InitializerConfig init_config_;
-  PositionSolver solver_;
+  std::unique_ptr<PositionSolver> solver_;  // rebuilt by setConfig (it owns the losses)
   AoaSelector selector_;
   KalmanFilter filter_;
   std::vector<RangeSlot> ranges_;

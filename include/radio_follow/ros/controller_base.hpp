@@ -7,6 +7,7 @@
 #include <std_msgs/Bool.h>
 #include <std_srvs/SetBool.h>
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,6 +20,8 @@
 #include "radio_follow/control/safety_monitor.hpp"
 
 namespace radio_follow {
+
+class ControllerReconfigure;
 
 /// Parameters every controller shares (doc/nodes/velocity_controller.md lists them).
 struct ControllerCommonParams {
@@ -57,7 +60,7 @@ void loadPidGains(const ros::NodeHandle& private_nh, const std::string& ns,
 /// monitor allows motion.
 class ControllerBase {
  public:
-  virtual ~ControllerBase() = default;
+  virtual ~ControllerBase();
   ControllerBase(const ControllerBase&) = delete;
   ControllerBase& operator=(const ControllerBase&) = delete;
 
@@ -122,6 +125,8 @@ class ControllerBase {
   ros::Timer timer_;
   ros::WallTimer stop_check_timer_;
   diagnostic_updater::Updater diagnostics_;
+  /// Live tuning of the safety thresholds and limits (doc/live_tuning.md), from start().
+  std::unique_ptr<ControllerReconfigure> reconfigure_;
   bool shutting_down_ = false;
 };
 

@@ -16,6 +16,7 @@
 #include "radio_follow/UwbRanges.h"
 #include "radio_follow/estimation/locator.hpp"
 #include "radio_follow/ros/locator_inputs.hpp"
+#include "radio_follow/ros/locator_reconfigure.hpp"
 
 namespace radio_follow {
 
@@ -58,6 +59,7 @@ class LocatorNode {
   Layout layout_;
   std::unique_ptr<Locator> locator_;
   std::unique_ptr<LocatorInputs> inputs_;
+  std::unique_ptr<LocatorReconfigure> reconfigure_;  ///< live tuning, after the params load
   std::vector<ros::Subscriber> subscribers_;
   ros::Publisher target_pub_;
   ros::Publisher pose_pub_;

@@ -65,6 +65,24 @@ TEST(CommandLimiter, AccelerationStaysWithinLimitOverManySteps) {
   EXPECT_DOUBLE_EQ(previous, limits.max_linear);
 }
 
+TEST(CommandLimiter, NewLimitsApplyFromTheCurrentOutput) {
+  CommandLimiter limiter{MotionLimits()};
+  for (int i = 0; i < 40; ++i) {
+    limiter.update({1.0, 0.0}, 0.1);  // accelerate to the 1 m/s default cap
+  }
+  MotionLimits slower;
+  slower.max_linear = 0.5;
+  slower.max_linear_decel = 2.0;
+  limiter.setLimits(slower);
+  // From 1.0 towards the new cap 0.5 at the new deceleration: 0.8 after 0.1 s, not a jump.
+  EXPECT_NEAR(limiter.update({1.0, 0.0}, 0.1).linear, 0.8, 1e-12);
+  EXPECT_NEAR(limiter.update({1.0, 0.0}, 0.2).linear, 0.5, 1e-12);
+  MotionLimits invalid = slower;
+  invalid.max_linear = -1.0;
+  EXPECT_THROW(limiter.setLimits(invalid), ParamError);
+  EXPECT_NEAR(limiter.update({1.0, 0.0}, 0.1).linear, 0.5, 1e-12);  // old limits kept
+}
+
 TEST(MotionLimits, ValidateRejectsZeroAcceleration) {
   MotionLimits limits;
   limits.max_linear_accel = 0.0;

@@ -29,6 +29,23 @@ TEST(SafetyMonitor, StartsDisabled) {
   EXPECT_EQ(d.reason, StopReason::kDisabled);
 }
 
+TEST(SafetyMonitor, NewSafeDistanceAppliesAndAnInvalidOneIsRefused) {
+  SafetyMonitor monitor = enabledMonitor();
+  monitor.onRange(0.0, "a", 2.0);
+  monitor.onEstimate(0.0, true);
+  ASSERT_TRUE(monitor.evaluate(0.1).may_move);
+  SafetyParams wider;
+  wider.safe_distance = 2.5;
+  monitor.setParams(wider);
+  monitor.onRange(0.2, "a", 2.0);
+  EXPECT_EQ(monitor.evaluate(0.2).reason, StopReason::kTooClose);
+  SafetyParams invalid = wider;
+  invalid.safe_distance = -1.0;
+  EXPECT_THROW(monitor.setParams(invalid), ParamError);
+  monitor.onRange(0.3, "a", 2.0);
+  EXPECT_FALSE(monitor.evaluate(0.3).may_move);  // still 2.5 m
+}
+
 TEST(SafetyMonitor, MovesWithFreshFarRangeAndEstimate) {
   SafetyMonitor monitor = enabledMonitor();
   monitor.onRange(0.0, "a", 3.0);

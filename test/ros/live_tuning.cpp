@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Live tuning of the running locator and velocity_controller through their
+// dynamic_reconfigure services: each server starts with the loaded parameters, a valid
+// change is applied and written back to the parameter server, an invalid one is refused
+// and the old value stays.
+#include <dynamic_reconfigure/Reconfigure.h>
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+
+#include <string>
+
+namespace {
+
+constexpr char kService[] = "locator/set_parameters";
+constexpr char kControllerService[] = "velocity_controller/set_parameters";
+
+dynamic_reconfigure::Config call(const dynamic_reconfigure::Config& request,
+                                 const std::string& service = kService) {
+  dynamic_reconfigure::Reconfigure srv;
+  srv.request.config = request;
+  EXPECT_TRUE(ros::service::call(service, srv)) << service << " failed";
+  return srv.response.config;
+}
+
+dynamic_reconfigure::Config withDouble(const std::string& name, double value) {
+  dynamic_reconfigure::Config c;
+  dynamic_reconfigure::DoubleParameter p;
+  p.name = name;
+  p.value = value;
+  c.doubles.push_back(p);
+  return c;
+}
+
+dynamic_reconfigure::Config withString(const std::string& name, const std::string& value) {
+  dynamic_reconfigure::Config c;
+  dynamic_reconfigure::StrParameter p;
+  p.name = name;
+  p.value = value;
+  c.strs.push_back(p);
+  return c;
+}
+
+double doubleOf(const dynamic_reconfigure::Config& c, const std::string& name) {
+  for (const auto& p : c.doubles) {
+    if (p.name == name) {
+      return p.value;
+    }
+  }
+  ADD_FAILURE() << name << " missing from the response";
+  return -1.0;
+}
+
+std::string stringOf(const dynamic_reconfigure::Config& c, const std::string& name) {
+  for (const auto& p : c.strs) {
+    if (p.name == name) {
+      return p.value;
+    }
+  }
+  ADD_FAILURE() << name << " missing from the response";
+  return "";
+}
+
+double param(const std::string& name, const std::string& node = "locator") {
+  double value = -1.0;
+  EXPECT_TRUE(ros::param::get(node + "/" + name, value)) << name;
+  return value;
+}
+
+class LiveTuning : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    for (const char* service : {kService, kControllerService}) {
+      ASSERT_TRUE(ros::service::waitForService(service, ros::Duration(30.0)))
+          << "no " << service << " within 30 s";
+    }
+  }
+};
+
+TEST_F(LiveTuning, LocatorStartsWithTheLoadedParameters) {
+  const auto current = call(dynamic_reconfigure::Config());
+  EXPECT_DOUBLE_EQ(doubleOf(current, "range_sigma"), 0.05);  // launch file, not the .cfg
+  EXPECT_EQ(stringOf(current, "range_loss"), "huber");
+  EXPECT_DOUBLE_EQ(doubleOf(current, "gate_probability"), 0.999);  // core default
+}
+
+TEST_F(LiveTuning, LocatorAppliesAValidChange) {
+  const auto after = call(withDouble("azimuth_sigma_deg", 7.5));
+  EXPECT_DOUBLE_EQ(doubleOf(after, "azimuth_sigma_deg"), 7.5);
+  EXPECT_DOUBLE_EQ(param("azimuth_sigma_deg"), 7.5);
+  const auto model = call(withString("motion_model", "constant_velocity"));
+  EXPECT_EQ(stringOf(model, "motion_model"), "constant_velocity");
+}
+
+TEST_F(LiveTuning, LocatorRefusesAnInvalidChangeAndKeepsTheOldValue) {
+  // In the .cfg's range [0, 1] but not a valid gate (validate: 0 or in (0.5, 1)).
+  const auto gate = call(withDouble("gate_probability", 0.3));
+  EXPECT_DOUBLE_EQ(doubleOf(gate, "gate_probability"), 0.999);
+  EXPECT_DOUBLE_EQ(param("gate_probability"), 0.999);
+  const auto sigma = call(withDouble("range_sigma", 0.0));
+  EXPECT_DOUBLE_EQ(doubleOf(sigma, "range_sigma"), 0.05);
+  EXPECT_DOUBLE_EQ(param("range_sigma"), 0.05);
+  const auto loss = call(withString("range_loss", "quadratic"));
+  EXPECT_EQ(stringOf(loss, "range_loss"), "huber");
+}
+
+TEST_F(LiveTuning, ControllerSafeDistanceKeepsItsValidation) {
+  const auto start = call(dynamic_reconfigure::Config(), kControllerService);
+  EXPECT_DOUBLE_EQ(doubleOf(start, "safe_distance"), 1.1);  // launch file, not the .cfg
+  const auto wider = call(withDouble("safe_distance", 1.6), kControllerService);
+  EXPECT_DOUBLE_EQ(doubleOf(wider, "safe_distance"), 1.6);
+  EXPECT_DOUBLE_EQ(param("safe_distance", "velocity_controller"), 1.6);
+  const auto negative = call(withDouble("safe_distance", -0.5), kControllerService);
+  EXPECT_DOUBLE_EQ(doubleOf(negative, "safe_distance"), 1.6);
+  EXPECT_DOUBLE_EQ(param("safe_distance", "velocity_controller"), 1.6);
+  const auto stopped = call(withDouble("max_linear", 0.0), kControllerService);
+  EXPECT_GT(doubleOf(stopped, "max_linear"), 0.0);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "live_tuning_rostest");
+  ros::AsyncSpinner spinner(1);
+  spinner.start();
+  return RUN_ALL_TESTS();
+}
