@@ -21,6 +21,17 @@ void PidGains::validate(const std::string& prefix) const {
           "a finite limit > 0");
 }
 
+void Pid::setGains(const PidGains& gains) {
+  const double contribution = gains_.ki * integral_;
+  gains_ = gains;
+  if (gains_.ki > 0.0) {
+    const double limited = std::clamp(contribution, -gains_.integral_limit, gains_.integral_limit);
+    integral_ = limited / gains_.ki;
+  } else {
+    integral_ = 0.0;
+  }
+}
+
 double Pid::update(double error, double dt) {
   const double proportional = gains_.kp * error;
   if (!(dt > 0.0) || !std::isfinite(error)) {

@@ -54,6 +54,12 @@ double gapSpeed(double gap, double target_speed, double dt, Pid& pid,
 VelocityLaw::VelocityLaw(const VelocityLawParams& params)
     : params_(params), linear_pid_(params.linear), angular_pid_(params.angular) {}
 
+void VelocityLaw::setParams(const VelocityLawParams& params) {
+  params_ = params;
+  linear_pid_.setGains(params.linear);
+  angular_pid_.setGains(params.angular);
+}
+
 void VelocityLaw::reset() {
   linear_pid_.reset();
   angular_pid_.reset();

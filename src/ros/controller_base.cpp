@@ -125,8 +125,8 @@ void ControllerBase::start() {
   std::signal(SIGINT, requestStop);
   std::signal(SIGTERM, requestStop);
 
-  reconfigure_ = std::make_unique<ControllerReconfigure>(
-      private_nh_, common_, [this](const ControllerCommonParams& params) {
+  reconfigure_ =
+      makeControllerReconfigure(private_nh_, common_, [this](const ControllerCommonParams& params) {
         monitor_.setParams(params.safety);  // both validated by the caller: no partial update
         limiter_.setLimits(params.limits);
         common_ = params;

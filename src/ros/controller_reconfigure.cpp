@@ -3,8 +3,6 @@
 
 #include <utility>
 
-#include "radio_follow/common/param_error.hpp"
-
 namespace radio_follow {
 
 namespace {
@@ -36,28 +34,54 @@ ControllerCommonParams fromTuning(const ControllerTuningConfig& t, ControllerCom
   return p;
 }
 
-}  // namespace
-
-ControllerReconfigure::ControllerReconfigure(
-    const ros::NodeHandle& private_nh, const ControllerCommonParams& initial,
-    std::function<void(const ControllerCommonParams&)> apply)
-    : server_(mutex_, private_nh), current_(initial), apply_(std::move(apply)) {
-  // Replace what the server read (parameter server or .cfg defaults) by the values in use.
-  server_.updateConfig(toTuning(current_));
-  server_.setCallback(
-      [this](ControllerTuningConfig& request, uint32_t level) { onRequest(request, level); });
+FollowLawTuningConfig toLawTuning(const control::VelocityLawParams& p) {
+  FollowLawTuningConfig t = FollowLawTuningConfig::__getDefault__();
+  t.follow_distance = p.follow_distance;
+  t.slowdown_distance = p.slowdown_distance;
+  t.feed_forward = p.feed_forward;
+  t.degraded_speed_factor = p.degraded_speed_factor;
+  t.linear_pid_kp = p.linear.kp;
+  t.linear_pid_ki = p.linear.ki;
+  t.linear_pid_kd = p.linear.kd;
+  t.linear_pid_integral_limit = p.linear.integral_limit;
+  t.angular_pid_kp = p.angular.kp;
+  t.angular_pid_ki = p.angular.ki;
+  t.angular_pid_kd = p.angular.kd;
+  t.angular_pid_integral_limit = p.angular.integral_limit;
+  return t;
 }
 
-void ControllerReconfigure::onRequest(ControllerTuningConfig& request, uint32_t /*level*/) {
-  try {
-    const ControllerCommonParams next = fromTuning(request, current_);
-    next.validate();
-    apply_(next);
-    current_ = next;
-  } catch (const ParamError& e) {
-    ROS_ERROR("controller: reconfigure refused, old values kept: %s", e.what());
-    request = toTuning(current_);  // the server stores and publishes what is left here
-  }
+control::VelocityLawParams fromLawTuning(const FollowLawTuningConfig& t,
+                                         control::VelocityLawParams p) {
+  p.follow_distance = t.follow_distance;
+  p.slowdown_distance = t.slowdown_distance;
+  p.feed_forward = t.feed_forward;
+  p.degraded_speed_factor = t.degraded_speed_factor;
+  p.linear.kp = t.linear_pid_kp;
+  p.linear.ki = t.linear_pid_ki;
+  p.linear.kd = t.linear_pid_kd;
+  p.linear.integral_limit = t.linear_pid_integral_limit;
+  p.angular.kp = t.angular_pid_kp;
+  p.angular.ki = t.angular_pid_ki;
+  p.angular.kd = t.angular_pid_kd;
+  p.angular.integral_limit = t.angular_pid_integral_limit;
+  return p;
+}
+
+}  // namespace
+
+std::unique_ptr<ControllerReconfigure> makeControllerReconfigure(
+    const ros::NodeHandle& private_nh, const ControllerCommonParams& initial,
+    std::function<void(const ControllerCommonParams&)> apply) {
+  return std::make_unique<ControllerReconfigure>(private_nh, initial, toTuning, fromTuning,
+                                                 std::move(apply));
+}
+
+std::unique_ptr<FollowLawReconfigure> makeFollowLawReconfigure(
+    const ros::NodeHandle& private_nh, const control::VelocityLawParams& initial,
+    std::function<void(const control::VelocityLawParams&)> apply) {
+  return std::make_unique<FollowLawReconfigure>(ros::NodeHandle(private_nh, "law"), initial,
+                                                toLawTuning, fromLawTuning, std::move(apply));
 }
 
 }  // namespace radio_follow

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/ros/controller_reconfigure.hpp"
 #include "radio_follow/ros/params.hpp"
 #include "radio_follow/ros/velocity_controller.hpp"
 
@@ -47,8 +48,16 @@ PathFollowerNode::PathFollowerNode(ros::NodeHandle& nh, ros::NodeHandle& private
       motion_(tf_buffer_, params_.odom_frame, params_.tf_timeout) {
   path_pub_ = private_nh_.advertise<nav_msgs::Path>("path", 1, true);
   estimate_sub_ = nh_.subscribe("target", 5, &PathFollowerNode::onEstimate, this);
+  law_reconfigure_ = makeFollowLawReconfigure(private_nh, law_params_,
+                                              [this](const control::VelocityLawParams& p) {
+                                                law_params_ = p;
+                                                fallback_law_.setParams(p);
+                                                speed_pid_.setGains(p.linear);
+                                              });
   start();
 }
+
+PathFollowerNode::~PathFollowerNode() = default;
 
 void PathFollowerNode::onStopped() {
   fallback_law_.reset();

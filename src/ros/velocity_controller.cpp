@@ -3,6 +3,7 @@
 
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/ros/controller_reconfigure.hpp"
 #include "radio_follow/ros/params.hpp"
 
 namespace radio_follow {
@@ -62,8 +63,14 @@ VelocityControllerNode::VelocityControllerNode(ros::NodeHandle& nh, ros::NodeHan
       tf_listener_(tf_buffer_),
       motion_(tf_buffer_, params_.odom_frame, params_.tf_timeout) {
   estimate_sub_ = nh_.subscribe("target", 5, &VelocityControllerNode::onEstimate, this);
+  // Speed caps come from the common limits; the law's own fields are tuned on ~law.
+  law_reconfigure_ =
+      makeFollowLawReconfigure(private_nh, law_.params(),
+                               [this](const control::VelocityLawParams& p) { law_.setParams(p); });
   start();
 }
+
+VelocityControllerNode::~VelocityControllerNode() = default;
 
 void VelocityControllerNode::onEstimate(const TargetEstimate::ConstPtr& msg) {
   estimate_ = msg;

@@ -13,6 +13,7 @@ namespace {
 
 constexpr char kService[] = "locator/set_parameters";
 constexpr char kControllerService[] = "velocity_controller/set_parameters";
+constexpr char kLawService[] = "velocity_controller/law/set_parameters";
 
 dynamic_reconfigure::Config call(const dynamic_reconfigure::Config& request,
                                  const std::string& service = kService) {
@@ -69,7 +70,7 @@ double param(const std::string& name, const std::string& node = "locator") {
 class LiveTuning : public ::testing::Test {
  protected:
   void SetUp() override {
-    for (const char* service : {kService, kControllerService}) {
+    for (const char* service : {kService, kControllerService, kLawService}) {
       ASSERT_TRUE(ros::service::waitForService(service, ros::Duration(30.0)))
           << "no " << service << " within 30 s";
     }
@@ -114,6 +115,21 @@ TEST_F(LiveTuning, ControllerSafeDistanceKeepsItsValidation) {
   EXPECT_DOUBLE_EQ(param("safe_distance", "velocity_controller"), 1.6);
   const auto stopped = call(withDouble("max_linear", 0.0), kControllerService);
   EXPECT_GT(doubleOf(stopped, "max_linear"), 0.0);
+}
+
+TEST_F(LiveTuning, ControllerLawGainsAndDistancesAreTunable) {
+  const auto start = call(dynamic_reconfigure::Config(), kLawService);
+  EXPECT_DOUBLE_EQ(doubleOf(start, "follow_distance"), 2.2);  // launch file, not the .cfg
+  EXPECT_DOUBLE_EQ(doubleOf(start, "linear_pid_kp"), 0.8);    // the node's default
+  const auto closer = call(withDouble("follow_distance", 1.8), kLawService);
+  EXPECT_DOUBLE_EQ(doubleOf(closer, "follow_distance"), 1.8);
+  const auto gain = call(withDouble("linear_pid_kp", 1.2), kLawService);
+  EXPECT_DOUBLE_EQ(doubleOf(gain, "linear_pid_kp"), 1.2);
+  // VelocityLawParams::validate: a distance > 0, a factor in [0, 1].
+  const auto negative = call(withDouble("follow_distance", -1.0), kLawService);
+  EXPECT_DOUBLE_EQ(doubleOf(negative, "follow_distance"), 1.8);
+  const auto factor = call(withDouble("feed_forward", 1.5), kLawService);
+  EXPECT_DOUBLE_EQ(doubleOf(factor, "feed_forward"), 1.0);
 }
 
 }  // namespace

@@ -38,6 +38,10 @@ class Pid {
   /// e.g. during a safety stop, so that it resumes without a kick).
   void reset();
 
+  /// New gains (live tuning) without a kick: the integral is kept, re-scaled so that its
+  /// contribution ki * integral stays the same, and clamped to the new integral_limit.
+  void setGains(const PidGains& gains);
+
   const PidGains& gains() const { return gains_; }
   double integral() const { return integral_; }
 

@@ -59,6 +59,9 @@ class VelocityLaw {
   explicit VelocityLaw(const VelocityLawParams& params);
 
   VelocityCommand update(const TargetPolar& target, double dt);
+  /// New parameters (live tuning; validated by the caller): the PIDs keep their state.
+  void setParams(const VelocityLawParams& params);
+  const VelocityLawParams& params() const { return params_; }
   void reset();
 
   bool driving_backwards() const { return backwards_; }

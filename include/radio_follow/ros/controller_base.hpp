@@ -21,7 +21,9 @@
 
 namespace radio_follow {
 
-class ControllerReconfigure;
+template <typename Tuning, typename Params>
+class ReconfigureServer;
+class ControllerTuningConfig;
 
 /// Parameters every controller shares (doc/nodes/velocity_controller.md lists them).
 struct ControllerCommonParams {
@@ -126,7 +128,8 @@ class ControllerBase {
   ros::WallTimer stop_check_timer_;
   diagnostic_updater::Updater diagnostics_;
   /// Live tuning of the safety thresholds and limits (doc/live_tuning.md), from start().
-  std::unique_ptr<ControllerReconfigure> reconfigure_;
+  /// Live tuning of common_ (controller_reconfigure.hpp).
+  std::unique_ptr<ReconfigureServer<ControllerTuningConfig, ControllerCommonParams>> reconfigure_;
   bool shutting_down_ = false;
 };
 

@@ -1,33 +1,31 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
-#include <dynamic_reconfigure/server.h>
 #include <ros/ros.h>
 
-#include <boost/thread/recursive_mutex.hpp>
 #include <functional>
+#include <memory>
 
 #include "radio_follow/ControllerTuningConfig.h"
+#include "radio_follow/FollowLawTuningConfig.h"
+#include "radio_follow/control/velocity_law.hpp"
 #include "radio_follow/ros/controller_base.hpp"
+#include "radio_follow/ros/reconfigure_server.hpp"
 
 namespace radio_follow {
 
-/// dynamic_reconfigure server of a controller's shared safety thresholds and motion limits
-/// (doc/live_tuning.md). Starts with the loaded values; each request runs the same
-/// ControllerCommonParams::validate() as at startup before `apply` installs it; a refused
-/// request is logged (parameter, value, expectation) and the old values are pushed back.
-class ControllerReconfigure {
- public:
-  ControllerReconfigure(const ros::NodeHandle& private_nh, const ControllerCommonParams& initial,
-                        std::function<void(const ControllerCommonParams&)> apply);
+/// Live tuning of a controller's shared safety thresholds and motion limits, on the
+/// controller's private namespace (doc/live_tuning.md).
+using ControllerReconfigure = ReconfigureServer<ControllerTuningConfig, ControllerCommonParams>;
+std::unique_ptr<ControllerReconfigure> makeControllerReconfigure(
+    const ros::NodeHandle& private_nh, const ControllerCommonParams& initial,
+    std::function<void(const ControllerCommonParams&)> apply);
 
- private:
-  void onRequest(ControllerTuningConfig& request, uint32_t level);
-
-  boost::recursive_mutex mutex_;  // the server's API takes this type; guards its updates
-  dynamic_reconfigure::Server<ControllerTuningConfig> server_;
-  ControllerCommonParams current_;
-  std::function<void(const ControllerCommonParams&)> apply_;
-};
+/// Live tuning of the follow law (follow distance, slow-down, feed-forward, PID gains) of
+/// velocity_controller and path_follower, on `<node>/law` (doc/live_tuning.md).
+using FollowLawReconfigure = ReconfigureServer<FollowLawTuningConfig, control::VelocityLawParams>;
+std::unique_ptr<FollowLawReconfigure> makeFollowLawReconfigure(
+    const ros::NodeHandle& private_nh, const control::VelocityLawParams& initial,
+    std::function<void(const control::VelocityLawParams&)> apply);
 
 }  // namespace radio_follow

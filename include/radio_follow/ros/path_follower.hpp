@@ -6,6 +6,7 @@
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -17,6 +18,8 @@
 #include "radio_follow/ros/target_motion_tracker.hpp"
 
 namespace radio_follow {
+
+class FollowLawTuningConfig;
 
 /// path_follower (thesis Section 4.7): stores the person's path in the odometry frame
 /// and follows it with pure pursuit, keeping follow_distance along the path. Without
@@ -38,6 +41,7 @@ class PathFollowerNode : public ControllerBase {
   };
 
   PathFollowerNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh);
+  ~PathFollowerNode() override;
 
  private:
   Output compute(const ros::Time& now, double dt) override;
@@ -55,6 +59,8 @@ class PathFollowerNode : public ControllerBase {
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;
   TargetMotionTracker motion_;
+  std::unique_ptr<ReconfigureServer<FollowLawTuningConfig, control::VelocityLawParams>>
+      law_reconfigure_;
   TargetEstimate::ConstPtr estimate_;
   bool path_mode_ = false;  // false: the last estimate could not be put into odom
   ros::Publisher path_pub_;

@@ -5,6 +5,7 @@
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -14,6 +15,8 @@
 #include "radio_follow/ros/target_motion_tracker.hpp"
 
 namespace radio_follow {
+
+class FollowLawTuningConfig;
 
 /// Loads the velocity law's parameters (shared by velocity_controller and the
 /// path_follower's straight-line fallback); speed limits come from `common`.
@@ -42,6 +45,7 @@ class VelocityControllerNode : public ControllerBase {
   };
 
   VelocityControllerNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh);
+  ~VelocityControllerNode() override;
 
  private:
   Output compute(const ros::Time& now, double dt) override;
@@ -53,6 +57,8 @@ class VelocityControllerNode : public ControllerBase {
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;
   TargetMotionTracker motion_;
+  std::unique_ptr<ReconfigureServer<FollowLawTuningConfig, control::VelocityLawParams>>
+      law_reconfigure_;
   TargetEstimate::ConstPtr estimate_;
   ros::Subscriber estimate_sub_;
 };

@@ -97,6 +97,28 @@ TEST(PidGains, ValidateRejectsNegativeGainAndZeroLimit) {
   EXPECT_NO_THROW(PidGains().validate("~linear_pid"));
 }
 
+TEST(Pid, NewGainsKeepTheIntegralContributionWithoutAKick) {
+  PidGains gains;
+  gains.kp = 0.0;
+  gains.ki = 0.5;
+  gains.kd = 0.0;
+  gains.integral_limit = 1.0;
+  Pid pid(gains);
+  for (int i = 0; i < 20; ++i) {
+    pid.update(1.0, 0.05);  // integral 1.0, contribution 0.5
+  }
+  const double before = pid.update(0.0, 0.05);
+  gains.ki = 1.0;
+  pid.setGains(gains);
+  EXPECT_NEAR(pid.update(0.0, 0.05), before, 1e-12);  // same output after the change
+  gains.integral_limit = 0.2;
+  pid.setGains(gains);
+  EXPECT_NEAR(pid.update(0.0, 0.05), 0.2, 1e-12);  // clamped to the new limit
+  gains.ki = 0.0;
+  pid.setGains(gains);
+  EXPECT_NEAR(pid.update(0.0, 0.05), 0.0, 1e-12);
+}
+
 }  // namespace
 }  // namespace control
 }  // namespace radio_follow
