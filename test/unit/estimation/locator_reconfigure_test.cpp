@@ -4,24 +4,14 @@
 
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/estimation/locator.hpp"
+#include "../../support/true_ranges.hpp"
 
 namespace radio_follow {
 namespace {
 
-/// The shipped layout without its range calibration: these tests feed true ranges.
-Layout spotTwr() {
-  Layout layout = loadLayoutFile(std::string(RF_CONFIG_DIR) + "/layouts/spot_twr.yaml");
-  for (auto& m : layout.twr_modules) {
-    m.calibration = {0.0, 1.0};
-  }
-  return layout;
-}
-
-void feedRanges(Locator& locator, const Eigen::Vector3d& truth, double t) {
-  for (const auto& m : locator.layout().twr_modules) {
-    ASSERT_TRUE(locator.addRange(m.id, (truth - m.position).norm(), t));
-  }
-}
+using test::feedRanges;
+/// These tests feed true ranges: the layout without its range calibration.
+Layout spotTwr() { return test::uncalibratedLayout("spot_twr.yaml"); }
 
 TEST(LocatorSetConfig, NoiseChangesKeepTheTrack) {
   LocatorConfig config;

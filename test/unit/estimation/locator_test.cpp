@@ -4,24 +4,14 @@
 #include <gtest/gtest.h>
 
 #include "radio_follow/common/param_error.hpp"
+#include "../../support/true_ranges.hpp"
 
 namespace radio_follow {
 namespace {
 
-/// A shipped layout without its modules' range calibration: these tests feed true ranges.
-Layout layoutFile(const std::string& name) {
-  Layout layout = loadLayoutFile(std::string(RF_CONFIG_DIR) + "/layouts/" + name);
-  for (auto& m : layout.twr_modules) {
-    m.calibration = {0.0, 1.0};
-  }
-  return layout;
-}
-
-void feedRanges(Locator& locator, const Eigen::Vector3d& truth, double t) {
-  for (const auto& m : locator.layout().twr_modules) {
-    ASSERT_TRUE(locator.addRange(m.id, (truth - m.position).norm(), t));
-  }
-}
+using test::feedRanges;
+/// These tests feed true ranges: the layouts without their range calibration.
+Layout layoutFile(const std::string& name) { return test::uncalibratedLayout(name); }
 
 void feedBearing(Locator& locator, const AoaBoard& board, const Eigen::Vector3d& from, double rssi,
                  double t) {

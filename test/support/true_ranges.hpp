@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+// For locator unit tests that feed exact (true) ranges: the shipped layouts without their
+// modules' range calibration, and a helper that ranges every module to a point.
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "radio_follow/estimation/locator.hpp"
+
+namespace radio_follow::test {
+
+/// config/layouts/<name> with every module's calibration set to the identity.
+inline Layout uncalibratedLayout(const std::string& name) {
+  Layout layout = loadLayoutFile(std::string(RF_CONFIG_DIR) + "/layouts/" + name);
+  for (auto& m : layout.twr_modules) {
+    m.calibration = {0.0, 1.0};
+  }
+  return layout;
+}
+
+/// Every module of the locator's layout reports its exact range to `truth` at time t.
+inline void feedRanges(Locator& locator, const Eigen::Vector3d& truth, double t) {
+  for (const auto& m : locator.layout().twr_modules) {
+    ASSERT_TRUE(locator.addRange(m.id, (truth - m.position).norm(), t));
+  }
+}
+
+}  // namespace radio_follow::test
