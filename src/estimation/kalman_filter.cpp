@@ -7,8 +7,20 @@
 #include <stdexcept>
 
 #include "radio_follow/common/angles.hpp"
+#include "radio_follow/common/param_error.hpp"
 
 namespace radio_follow {
+
+MotionModel parseMotionModel(const std::string& text, const std::string& parameter) {
+  require(text == "constant_position" || text == "constant_velocity", parameter, text,
+          "constant_position or constant_velocity");
+  return text == "constant_velocity" ? MotionModel::kConstantVelocity
+                                     : MotionModel::kConstantPosition;
+}
+
+std::string toString(MotionModel model) {
+  return model == MotionModel::kConstantVelocity ? "constant_velocity" : "constant_position";
+}
 namespace {
 
 double chiSquareCdf(double x, int dof) {

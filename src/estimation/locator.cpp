@@ -12,6 +12,20 @@
 #include "radio_follow/common/param_error.hpp"
 
 namespace radio_follow {
+
+const char* toString(TargetStatus status) {
+  switch (status) {
+    case TargetStatus::kOk:
+      return "OK";
+    case TargetStatus::kHeadingOnly:
+      return "HEADING_ONLY";
+    case TargetStatus::kDegraded:
+      return "DEGRADED";
+    case TargetStatus::kLost:
+      break;
+  }
+  return "LOST";
+}
 namespace {
 
 void validateLoss(const LossConfig& loss, const std::string& name) {

@@ -8,23 +8,6 @@
 #include <cmath>
 
 namespace radio_follow {
-namespace {
-
-const char* statusName(TargetStatus status) {
-  switch (status) {
-    case TargetStatus::kOk:
-      return "OK";
-    case TargetStatus::kHeadingOnly:
-      return "HEADING_ONLY";
-    case TargetStatus::kDegraded:
-      return "DEGRADED";
-    case TargetStatus::kLost:
-      break;
-  }
-  return "LOST";
-}
-
-}  // namespace
 
 TargetEstimate toMessage(const LocatorEstimate& estimate, const std::string& frame,
                          const ros::Time& stamp) {
@@ -76,8 +59,8 @@ LocatorNode::LocatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
   for (const auto& topic : params_.tdoa_topics) {
     subscribers_.push_back(nh.subscribe(topic, 50, &LocatorNode::onTdoa, this));
   }
-  reconfigure_ = std::make_unique<LocatorReconfigure>(
-      private_nh, params_.locator, [this](const LocatorConfig& config) {
+  reconfigure_ =
+      makeLocatorReconfigure(private_nh, params_.locator, [this](const LocatorConfig& config) {
         if (!locator_->setConfig(config)) {
           ROS_INFO("locator: motion model changed, the filter restarts from the next solve");
         }
@@ -125,7 +108,7 @@ void LocatorNode::onTimer(const ros::TimerEvent& /*event*/) {
     ++solves_seen_;
   }
   if (estimate.status != last_status_) {
-    ROS_INFO("locator: target %s -> %s", statusName(last_status_), statusName(estimate.status));
+    ROS_INFO("locator: target %s -> %s", toString(last_status_), toString(estimate.status));
     last_status_ = estimate.status;
   }
   publish(estimate, now);
@@ -186,9 +169,9 @@ void LocatorNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) 
   } else if (last_status_ == TargetStatus::kLost) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "target lost");
   } else {
-    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, statusName(last_status_));
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, toString(last_status_));
   }
-  status.add("status", statusName(last_status_));
+  status.add("status", toString(last_status_));
   status.add("updates", s.updates);
   status.add("solves", s.solves);
   status.add("solver failures", s.solver_failures);

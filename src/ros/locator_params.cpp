@@ -62,13 +62,9 @@ void LocatorNode::Params::load(const Source& nh) {
   c.aoa.rssi_window = static_cast<std::size_t>(rssi_window);
   c.aoa.vote_window = static_cast<std::size_t>(vote_window);
 
-  std::string model =
-      c.motion_model == MotionModel::kConstantVelocity ? "constant_velocity" : "constant_position";
+  std::string model = toString(c.motion_model);
   nh.param("motion_model", model, model);
-  require(model == "constant_position" || model == "constant_velocity", "~motion_model", model,
-          "constant_position or constant_velocity");
-  c.motion_model = model == "constant_velocity" ? MotionModel::kConstantVelocity
-                                                : MotionModel::kConstantPosition;
+  c.motion_model = parseMotionModel(model, "~motion_model");
   nh.param("process_noise", c.process_noise, c.process_noise);
   std::string r_source = c.filter_uses_solver_covariance ? "solver" : "fixed";
   nh.param("measurement_covariance", r_source, r_source);

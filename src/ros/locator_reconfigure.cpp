@@ -9,21 +9,6 @@
 
 namespace radio_follow {
 
-namespace {
-
-std::string motionModelName(MotionModel model) {
-  return model == MotionModel::kConstantVelocity ? "constant_velocity" : "constant_position";
-}
-
-MotionModel parseMotionModel(const std::string& text) {
-  require(text == "constant_position" || text == "constant_velocity", "~motion_model", text,
-          "constant_position or constant_velocity");
-  return text == "constant_velocity" ? MotionModel::kConstantVelocity
-                                     : MotionModel::kConstantPosition;
-}
-
-}  // namespace
-
 LocatorTuningConfig toTuning(const LocatorConfig& c) {
   LocatorTuningConfig t = LocatorTuningConfig::__getDefault__();
   t.target_height = c.height;
@@ -43,7 +28,7 @@ LocatorTuningConfig toTuning(const LocatorConfig& c) {
   t.aoa_selection = toString(c.aoa.mode);
   t.aoa_rssi_window = static_cast<int>(c.aoa.rssi_window);
   t.aoa_vote_window = static_cast<int>(c.aoa.vote_window);
-  t.motion_model = motionModelName(c.motion_model);
+  t.motion_model = toString(c.motion_model);
   t.process_noise = c.process_noise;
   t.measurement_covariance = c.filter_uses_solver_covariance ? "solver" : "fixed";
   t.measurement_noise = c.measurement_noise;
@@ -73,7 +58,7 @@ LocatorConfig fromTuning(const LocatorTuningConfig& t, LocatorConfig c) {
   require(t.aoa_vote_window >= 1, "aoa_vote_window", t.aoa_vote_window, "at least 1");
   c.aoa.rssi_window = static_cast<std::size_t>(t.aoa_rssi_window);
   c.aoa.vote_window = static_cast<std::size_t>(t.aoa_vote_window);
-  c.motion_model = parseMotionModel(t.motion_model);
+  c.motion_model = parseMotionModel(t.motion_model, "~motion_model");
   c.process_noise = t.process_noise;
   require(t.measurement_covariance == "fixed" || t.measurement_covariance == "solver",
           "~measurement_covariance", t.measurement_covariance, "fixed or solver");
@@ -87,28 +72,11 @@ LocatorConfig fromTuning(const LocatorTuningConfig& t, LocatorConfig c) {
   return c;
 }
 
-LocatorReconfigure::LocatorReconfigure(const ros::NodeHandle& private_nh,
-                                       const LocatorConfig& initial,
-                                       std::function<void(const LocatorConfig&)> apply)
-    : server_(mutex_, private_nh), current_(initial), apply_(std::move(apply)) {
-  // The server read the parameter server (and .cfg defaults for unset names) on
-  // construction; overwrite that with what the node actually loaded before any callback.
-  server_.updateConfig(toTuning(current_));
-  server_.setCallback(
-      [this](LocatorTuningConfig& request, uint32_t level) { onRequest(request, level); });
-}
-
-void LocatorReconfigure::onRequest(LocatorTuningConfig& request, uint32_t /*level*/) {
-  try {
-    const LocatorConfig next = fromTuning(request, current_);
-    next.validate();
-    apply_(next);
-    current_ = next;
-  } catch (const ParamError& e) {
-    ROS_ERROR("locator: reconfigure refused, old values kept: %s", e.what());
-    // The server stores and publishes whatever the callback leaves in `request`.
-    request = toTuning(current_);
-  }
+std::unique_ptr<LocatorReconfigure> makeLocatorReconfigure(
+    const ros::NodeHandle& private_nh, const LocatorConfig& initial,
+    std::function<void(const LocatorConfig&)> apply) {
+  return std::make_unique<LocatorReconfigure>(private_nh, initial, toTuning, fromTuning,
+                                              std::move(apply));
 }
 
 }  // namespace radio_follow

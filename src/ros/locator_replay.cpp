@@ -126,14 +126,13 @@ ReplayResult replay(const BagData& bag, const Layout& layout, const LocatorConfi
 }
 
 std::string toCsv(const ReplayResult& result) {
-  static const char* kStatus[] = {"OK", "HEADING_ONLY", "DEGRADED", "LOST"};
   std::ostringstream out;
   out.precision(9);
   out << "t,status,x,y,z,sigma_x,sigma_y,truth_x,truth_y,error\n";
   for (const ReplayRow& r : result.rows) {
     const LocatorEstimate& e = r.estimate;
     const bool position = e.status == TargetStatus::kOk || e.status == TargetStatus::kDegraded;
-    out << r.t << "," << kStatus[static_cast<int>(e.status)] << ",";
+    out << r.t << "," << toString(e.status) << ",";
     if (position) {
       out << e.position.x() << "," << e.position.y() << "," << e.position.z() << ","
           << std::sqrt(std::max(0.0, e.covariance(0, 0))) << ","

@@ -100,10 +100,6 @@ rf::LocatorNode::Params loadParams(const YAML::Node& yaml, const std::string& la
   return p;
 }
 
-std::string scalarText(const YAML::Node& n) {
-  return YAML::Dump(n);
-}
-
 void writeFile(const std::string& path, const std::string& text) {
   std::ofstream out(path);
   out << text;
@@ -162,7 +158,7 @@ int runSweep(const Options& o, const rf::BagData& bag, const rf::Layout& layout,
     std::ostringstream setting;
     for (std::size_t a = 0; a < axes.size(); ++a) {
       params[axes[a].first] = axes[a].second[index[a]];
-      setting << (a ? " " : "") << axes[a].first << "=" << scalarText(axes[a].second[index[a]]);
+      setting << (a ? " " : "") << axes[a].first << "=" << YAML::Dump(axes[a].second[index[a]]);
     }
     const rf::LocatorNode::Params p = loadParams(params, o.layout);
     const rf::ReplayResult r = rf::replay(bag, layout, p.locator, o.rate > 0 ? o.rate : p.rate);

@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <string>
 
 namespace radio_follow {
 
@@ -13,6 +14,11 @@ enum class MotionModel {
   /// process_noise (m^2/s^3), discretised over the actual time step.
   kConstantVelocity,
 };
+
+/// "constant_position" / "constant_velocity" (the locator's `motion_model` parameter);
+/// parse throws ParamError naming `parameter` for any other text.
+MotionModel parseMotionModel(const std::string& text, const std::string& parameter);
+std::string toString(MotionModel model);
 
 struct KalmanConfig {
   MotionModel model = MotionModel::kConstantPosition;

@@ -19,6 +19,8 @@ namespace radio_follow {
 
 /// Same values as TargetEstimate.STATUS_*.
 enum class TargetStatus : std::uint8_t { kOk = 0, kHeadingOnly = 1, kDegraded = 2, kLost = 3 };
+/// "OK", "HEADING_ONLY", "DEGRADED", "LOST" (the message's constant names).
+const char* toString(TargetStatus status);
 /// Same bits as TargetEstimate.SOURCE_*.
 constexpr std::uint8_t kSourceTwr = 1;
 constexpr std::uint8_t kSourceTdoa = 2;
