@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/control/safety_monitor.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/control/rate_limiter.hpp"
@@ -45,6 +47,16 @@ void SafetyMonitor::onEstimate(double stamp, bool usable) {
     estimate_stamp_ = stamp;
     estimate_usable_ = usable;
   }
+}
+
+double SafetyMonitor::nearestRange(double now) const {
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const auto& [source, sample] : ranges_) {
+    if (now - sample.first <= params_.range_timeout) {
+      nearest = std::min(nearest, sample.second);
+    }
+  }
+  return nearest;
 }
 
 StopReason SafetyMonitor::rawReason(double now) {

@@ -15,6 +15,11 @@ void VelocityLawParams::validate() const {
           follow_distance, "a distance > 0 in metres");
   require(std::isfinite(slowdown_distance) && slowdown_distance > 0.0, "~slowdown_distance",
           slowdown_distance, "a distance > 0 in metres");
+  require(std::isfinite(closing_distance) && closing_distance > 0.0 &&
+              closing_distance < follow_distance,
+          "~closing_distance", closing_distance, "a distance in (0, follow_distance) in metres");
+  require(std::isfinite(stop_margin) && stop_margin >= 0.0, "~stop_margin", stop_margin,
+          "a distance >= 0 in metres");
   require(degraded_speed_factor >= 0.0 && degraded_speed_factor <= 1.0, "~degraded_speed_factor",
           degraded_speed_factor, "a factor in [0, 1]");
   require(std::isfinite(feed_forward) && feed_forward >= 0.0 && feed_forward <= 1.0,
@@ -28,18 +33,27 @@ void VelocityLawParams::validate() const {
   angular.validate("~angular_pid");
 }
 
-double slowdownCap(double gap, double slowdown_distance, double max_speed, double target_speed) {
-  if (!(gap > 0.0)) {
+double slowdownCap(double gap, double slowdown_distance, double closing_distance,
+                   double max_speed, double target_speed) {
+  const double v = std::clamp(std::isfinite(target_speed) ? target_speed : 0.0, 0.0, max_speed);
+  if (std::isnan(gap)) {
     return 0.0;
   }
-  // The ramp's slope grows with the speed it has to take away, so the cap is continuous
-  // at the follow distance and the robot settles just outside it instead of on the edge.
-  const double ramp = std::min(1.0, gap / slowdown_distance);
-  return std::min(max_speed, (std::max(0.0, target_speed) + max_speed) * ramp);
+  if (gap >= 0.0) {
+    return std::min(max_speed, v + (max_speed - v) * gap / slowdown_distance);
+  }
+  return v * std::max(0.0, 1.0 + gap / closing_distance);
 }
 
-bool updateArrived(bool arrived, double gap) {
+bool updateArrived(bool arrived, double gap, double target_speed) {
+  if (target_speed > kWalkingAwaySpeed) {
+    return false;
+  }
   return arrived ? !(gap > kArrivalHysteresis) : !(gap > 0.0);
+}
+
+double governingGap(double gap, double module_gap, const VelocityLawParams& params) {
+  return std::isnan(module_gap) ? gap : std::min(gap, module_gap - params.stop_margin);
 }
 
 double gapSpeed(double gap, double target_speed, double dt, Pid& pid,
@@ -47,8 +61,8 @@ double gapSpeed(double gap, double target_speed, double dt, Pid& pid,
   const double feed_forward =
       std::isfinite(target_speed) ? params.feed_forward * std::max(0.0, target_speed) : 0.0;
   const double speed = std::max(0.0, feed_forward + pid.update(gap, dt));
-  return std::min(speed,
-                  slowdownCap(gap, params.slowdown_distance, params.max_linear, feed_forward));
+  return std::min(speed, slowdownCap(gap, params.slowdown_distance, params.closing_distance,
+                                     params.max_linear, feed_forward));
 }
 
 VelocityLaw::VelocityLaw(const VelocityLawParams& params)
@@ -84,8 +98,9 @@ VelocityCommand VelocityLaw::update(const TargetPolar& target, double dt) {
   VelocityCommand cmd;
   cmd.angular = angular_pid_.update(heading_error, dt);
 
-  const double gap = target.range - params_.follow_distance;
-  arrived_ = target.range_valid && updateArrived(arrived_, gap);
+  const double gap =
+      governingGap(target.range - params_.follow_distance, target.module_gap, params_);
+  arrived_ = target.range_valid && updateArrived(arrived_, gap, target.receding_speed);
   if (!target.range_valid) {
     linear_pid_.reset();
     return cmd;

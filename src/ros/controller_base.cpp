@@ -39,11 +39,17 @@ void ControllerCommonParams::load(const ros::NodeHandle& pnh) {
   pnh.param("rate", rate, rate);
   pnh.param("start_enabled", start_enabled, start_enabled);
   pnh.param("layout_file", layout_file, layout_file);
+  pnh.param("calibrate_ranges", calibrate_ranges, calibrate_ranges);
   if (!layout_file.empty()) {
     // Explicit parameters below still win over what the layout implies.
     const Layout layout = loadLayoutFile(layout_file);
     range_topics = conventionalTopics(layout).uwb;
     target_anchor_id = layout.target_anchor_id;
+    if (calibrate_ranges) {
+      for (const TwrModule& module : layout.twr_modules) {
+        calibrated_modules[upper(module.id)] = module;
+      }
+    }
   }
   loadStringList(pnh, "range_topics", range_topics);
   pnh.param("target_anchor_id", target_anchor_id, target_anchor_id);
@@ -82,6 +88,19 @@ void ControllerCommonParams::validate() const {
     require(!topic.empty(), "~range_topics", topic, "non-empty topic names");
   }
   require(scan_timeout > 0.0, "~scan_timeout", scan_timeout, "a timeout > 0 in seconds");
+  // A calibration that moves the stop threshold far, or turns it around, is more likely a
+  // typo in the layout than a module: the safety stop must not silently depend on it.
+  const double d = safety.safe_distance;
+  for (const auto& [id, module] : calibrated_modules) {
+    const double shift = module.correctRange(d) - d;
+    const double slope = (module.correctRange(d + 0.1) - module.correctRange(d)) / 0.1;
+    require(std::abs(shift) <= kMaxSafetyCalibrationShift && slope > 0.5 && slope < 2.0,
+            "~layout_file twr_modules[" + id + "].calibration",
+            module.correctRange(d),
+            "a corrected range at safe_distance (" + std::to_string(d) + " m) within " +
+                std::to_string(kMaxSafetyCalibrationShift) +
+                " m of it and a slope in (0.5, 2) there (or ~calibrate_ranges: false)");
+  }
   safety.validate();
   limits.validate();
   avoidance.validate();
@@ -144,6 +163,10 @@ void ControllerBase::noteEstimate(const ros::Time& stamp, bool usable) {
   monitor_.onEstimate((stamp.isZero() ? ros::Time::now() : stamp).toSec(), usable);
 }
 
+double ControllerBase::moduleGap(const ros::Time& now) const {
+  return monitor_.nearestRange(now.toSec()) - common_.safety.safe_distance;
+}
+
 void ControllerBase::onRanges(const std::string& topic, const UwbRanges::ConstPtr& msg) {
   const double stamp = (msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp).toSec();
   bool violation = false;
@@ -151,7 +174,11 @@ void ControllerBase::onRanges(const std::string& topic, const UwbRanges::ConstPt
     if (!common_.target_anchor_id.empty() && upper(r.anchor_id) != common_.target_anchor_id) {
       continue;
     }
-    violation |= monitor_.onRange(stamp, topic + "/" + msg->tag_id, r.range);
+    const auto module = common_.calibrated_modules.find(upper(msg->tag_id));
+    const double range = module == common_.calibrated_modules.end()
+                             ? r.range
+                             : module->second.correctRange(r.range);
+    violation |= monitor_.onRange(stamp, topic + "/" + msg->tag_id, range);
   }
   // Do not wait for the next tick: a person stepping in front of the robot must stop
   // it within one range update.

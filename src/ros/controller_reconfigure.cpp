@@ -38,6 +38,8 @@ FollowLawTuningConfig toLawTuning(const control::VelocityLawParams& p) {
   FollowLawTuningConfig t = FollowLawTuningConfig::__getDefault__();
   t.follow_distance = p.follow_distance;
   t.slowdown_distance = p.slowdown_distance;
+  t.closing_distance = p.closing_distance;
+  t.stop_margin = p.stop_margin;
   t.feed_forward = p.feed_forward;
   t.degraded_speed_factor = p.degraded_speed_factor;
   t.linear_pid_kp = p.linear.kp;
@@ -55,6 +57,8 @@ control::VelocityLawParams fromLawTuning(const FollowLawTuningConfig& t,
                                          control::VelocityLawParams p) {
   p.follow_distance = t.follow_distance;
   p.slowdown_distance = t.slowdown_distance;
+  p.closing_distance = t.closing_distance;
+  p.stop_margin = t.stop_margin;
   p.feed_forward = t.feed_forward;
   p.degraded_speed_factor = t.degraded_speed_factor;
   p.linear.kp = t.linear_pid_kp;

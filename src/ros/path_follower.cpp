@@ -121,7 +121,9 @@ ControllerBase::Output PathFollowerNode::compute(const ros::Time& now, double dt
   const std::optional<control::Pose2> robot = path_mode_ ? robotPose() : std::nullopt;
   if (!robot || path_.empty() || heading_only) {
     // Without self-localisation no path can be stored: drive straight at the target.
-    out.command = fallback_law_.update(targetPolar(*estimate_, std::nullopt), dt);
+    control::TargetPolar target = targetPolar(*estimate_, std::nullopt);
+    target.module_gap = moduleGap(now);
+    out.command = fallback_law_.update(target, dt);
     if (heading_only) {
       out.text = "Direction only, turning to the target.";
     } else if (fallback_law_.arrived()) {
@@ -144,11 +146,12 @@ ControllerBase::Output PathFollowerNode::compute(const ros::Time& now, double dt
   // range is never longer than the walk. The smaller of the two keeps the robot from
   // closing in on a person who has stopped because their path looked long.
   const double along = path_.lengthFrom(robot->position());
-  const double gap = std::min(along, estimate_->range) - law_params_.follow_distance;
+  const double gap = control::governingGap(
+      std::min(along, estimate_->range) - law_params_.follow_distance, moduleGap(now), law_params_);
   const double alpha = std::atan2(goal.local.y(), goal.local.x());
   // The person walks the path ahead: the feed-forward is their whole ground speed.
-  double speed =
-      control::gapSpeed(gap, motion_.speed(now).value_or(0.0), dt, speed_pid_, law_params_);
+  const double walking_speed = motion_.speed(now).value_or(0.0);
+  double speed = control::gapSpeed(gap, walking_speed, dt, speed_pid_, law_params_);
   speed *= std::max(0.0, std::cos(alpha));
   if (estimate_->status == TargetEstimate::STATUS_DEGRADED) {
     speed *= law_params_.degraded_speed_factor;
@@ -158,7 +161,7 @@ ControllerBase::Output PathFollowerNode::compute(const ros::Time& now, double dt
   // person walked around it) needs turning in place first.
   out.command.angular =
       std::abs(alpha) > 0.5 * M_PI ? params_.turn_gain * alpha : speed * goal.curvature;
-  arrived_ = control::updateArrived(arrived_, gap);
+  arrived_ = control::updateArrived(arrived_, gap, walking_speed);
   if (arrived_) {
     out.state = control::FollowerState::kArrived;
     out.text = "At follow distance, waiting.";

@@ -13,6 +13,8 @@ control::VelocityLawParams loadVelocityLawParams(const ros::NodeHandle& pnh,
   control::VelocityLawParams p;
   pnh.param("follow_distance", p.follow_distance, p.follow_distance);
   pnh.param("slowdown_distance", p.slowdown_distance, p.slowdown_distance);
+  pnh.param("closing_distance", p.closing_distance, p.closing_distance);
+  pnh.param("stop_margin", p.stop_margin, p.stop_margin);
   pnh.param("feed_forward", p.feed_forward, p.feed_forward);
   pnh.param("degraded_speed_factor", p.degraded_speed_factor, p.degraded_speed_factor);
   pnh.param("allow_backwards", p.allow_backwards, p.allow_backwards);
@@ -86,7 +88,9 @@ ControllerBase::Output VelocityControllerNode::compute(const ros::Time& now, dou
   Output out;
   const std::optional<double> receding =
       params_.odom_frame.empty() ? std::nullopt : motion_.recedingSpeed(now);
-  out.command = law_.update(targetPolar(*estimate_, receding), dt);
+  control::TargetPolar target = targetPolar(*estimate_, receding);
+  target.module_gap = moduleGap(now);
+  out.command = law_.update(target, dt);
   if (estimate_->status == TargetEstimate::STATUS_HEADING_ONLY) {
     out.text = "Direction only, turning to the target.";
   } else if (law_.arrived()) {

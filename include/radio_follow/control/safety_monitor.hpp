@@ -56,6 +56,10 @@ class SafetyMonitor {
   void setEnabled(bool enabled) { enabled_ = enabled; }
   bool enabled() const { return enabled_; }
 
+  /// Smallest range heard within range_timeout before `now` (m), +inf when none. For the
+  /// control laws' clearance from the stop (VelocityLawParams::stop_margin), not a verdict.
+  double nearestRange(double now) const;
+
   /// The verdict at `now`. Blocking conditions latch for `hold_time` after they clear.
   SafetyDecision evaluate(double now);
 

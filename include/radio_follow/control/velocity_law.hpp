@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <limits>
 #include <string>
 
 #include "radio_follow/control/pid.hpp"
@@ -13,9 +14,20 @@ namespace control {
 struct VelocityLawParams {
   /// Desired gap to the target, metres.
   double follow_distance = 1.6;
-  /// The speed cap ramps from 0 at follow_distance to max_linear at
-  /// follow_distance + slowdown_distance, metres: the robot slows smoothly as the gap closes.
+  /// Beyond the follow distance the speed cap ramps from the person's speed at
+  /// follow_distance to max_linear at follow_distance + slowdown_distance, metres: the
+  /// robot slows smoothly as the gap closes (see slowdownCap()).
   double slowdown_distance = 1.0;
+  /// Inside the follow distance the cap falls from the person's speed to zero at
+  /// follow_distance - closing_distance, metres. Keep it at most follow_distance -
+  /// safe_distance, so that the robot has stopped before the safety stop trips.
+  double closing_distance = 0.2;
+  /// The law also holds the nearest UWB module (its calibrated range to the person)
+  /// this far beyond safe_distance, metres: on a robot whose modules sit far from its
+  /// centre (a corner module of the tracked layout is 0.39 m off), a person at the follow
+  /// distance can otherwise be within the safety stop of a corner, and the stop trips
+  /// while following. See governingGap().
+  double stop_margin = 0.15;
   /// Fraction of the target's own speed (TargetPolar::receding_speed, the path follower's
   /// walking speed) added to the command before the PID and to the speed cap; 0 disables.
   /// It lets the robot match a walking person at the follow distance instead of trailing
@@ -47,6 +59,9 @@ struct TargetPolar {
   /// The target's ground speed away from the robot along the line of sight, m/s
   /// (negative: walking towards it); 0 when unknown (no odometry).
   double receding_speed = 0.0;
+  /// Smallest fresh (calibrated) module range minus safe_distance, m; +inf when no
+  /// range is watched.
+  double module_gap = std::numeric_limits<double>::infinity();
 };
 
 /// Feed-forward of the target's receding speed plus PID on (range - follow_distance) for
@@ -80,16 +95,31 @@ class VelocityLaw {
 
 /// Gap (m) beyond the follow distance at which an arrived follower reports following again.
 constexpr double kArrivalHysteresis = 0.1;
+/// A person moving away faster than this (m/s) is being followed, not waited for.
+constexpr double kWalkingAwaySpeed = 0.2;
 
-/// Arrived-state with hysteresis: true from gap <= 0 until gap > kArrivalHysteresis.
-bool updateArrived(bool arrived, double gap);
+/// Arrived-state with hysteresis: true from gap <= 0 until gap > kArrivalHysteresis,
+/// and never while the person walks away faster than kWalkingAwaySpeed (the robot then
+/// holds the follow distance while moving; that is following, not waiting).
+bool updateArrived(bool arrived, double gap, double target_speed);
 
-/// Speed cap as the gap (distance beyond the follow distance) closes:
-/// min(max_speed, (target_speed + max_speed) * min(1, gap / slowdown_distance)), with
-/// `target_speed` < 0 counted as 0; 0 once the gap is closed (the robot never drives
-/// inside the follow distance). With target_speed = 0 it falls linearly from max_speed.
-double slowdownCap(double gap, double slowdown_distance, double max_speed,
-                   double target_speed = 0.0);
+/// Speed cap as the gap (distance beyond the follow distance, m) closes, with v the
+/// person's speed away from the robot (`target_speed` < 0 counted as 0):
+///   gap >= 0:  min(max_speed, v + (max_speed - v) * gap / slowdown_distance)
+///   gap <  0:  v * max(0, 1 + gap / closing_distance)
+/// Continuous, and equal to the person's speed at the follow distance, so a robot
+/// matching a walking person can hold the gap there (the PID settles it) instead of
+/// trailing by the distance a cap that is zero at the follow distance would need. It
+/// reaches zero at closing_distance inside the follow distance; with v = 0 it is zero at
+/// and inside the follow distance, so the robot never drives towards a standing person
+/// closer than follow_distance.
+double slowdownCap(double gap, double slowdown_distance, double closing_distance,
+                   double max_speed, double target_speed = 0.0);
+
+/// The gap the speed law regulates: min(gap, module_gap - stop_margin), where `gap` is
+/// the distance beyond the follow distance (from the robot's centre) and `module_gap` the
+/// nearest module's range beyond safe_distance. Whichever is closer to its limit governs.
+double governingGap(double gap, double module_gap, const VelocityLawParams& params);
 
 /// Forward speed that holds the gap: feed_forward * target_speed plus the PID on `gap`,
 /// within [0, slowdownCap()]. Shared by the velocity law and the path follower.

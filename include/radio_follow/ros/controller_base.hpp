@@ -9,6 +9,7 @@
 
 #include <memory>
 #include <optional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,7 @@
 #include "radio_follow/control/obstacle_avoidance.hpp"
 #include "radio_follow/control/pid.hpp"
 #include "radio_follow/control/rate_limiter.hpp"
+#include "radio_follow/config/layout.hpp"
 #include "radio_follow/control/safety_monitor.hpp"
 
 namespace radio_follow {
@@ -24,6 +26,9 @@ namespace radio_follow {
 template <typename Tuning, typename Params>
 class ReconfigureServer;
 class ControllerTuningConfig;
+
+/// Largest change a module's calibration may make to a range at safe_distance, m.
+constexpr double kMaxSafetyCalibrationShift = 0.3;
 
 /// Parameters every controller shares (doc/nodes/velocity_controller.md lists them).
 struct ControllerCommonParams {
@@ -37,6 +42,12 @@ struct ControllerCommonParams {
   std::vector<std::string> range_topics{"uwb_ranges"};
   /// Anchor carried by the target; empty = every anchor counts.
   std::string target_anchor_id;
+  /// Apply each module's range calibration from the layout to its raw ranges before the
+  /// safe_distance check (a sensor correction; the estimator is still not involved).
+  bool calibrate_ranges = true;
+  /// Range calibration per module ID (upper case), from the layout when calibrate_ranges.
+  /// Ranges of a module not listed are compared raw.
+  std::map<std::string, TwrModule> calibrated_modules;
   bool use_scan = false;
   double scan_timeout = 0.5;  ///< s
   control::SafetyParams safety;
@@ -90,6 +101,10 @@ class ControllerBase {
   void noteEstimate(const ros::Time& stamp, bool usable);
 
   const ControllerCommonParams& common() const { return common_; }
+
+  /// Nearest fresh (calibrated) module range minus safe_distance at `now`, m; +inf when
+  /// ranges are not watched or none is fresh (the safety layer stops the robot then).
+  double moduleGap(const ros::Time& now) const;
 
   ros::NodeHandle nh_;
   ros::NodeHandle private_nh_;

@@ -47,6 +47,8 @@ TEST(ConfigDefaults, VelocityControllerYamlMatchesLaw) {
   const VelocityLawParams law;
   EXPECT_DOUBLE_EQ(y["follow_distance"].as<double>(), law.follow_distance);
   EXPECT_DOUBLE_EQ(y["slowdown_distance"].as<double>(), law.slowdown_distance);
+  EXPECT_DOUBLE_EQ(y["closing_distance"].as<double>(), law.closing_distance);
+  EXPECT_DOUBLE_EQ(y["stop_margin"].as<double>(), law.stop_margin);
   EXPECT_DOUBLE_EQ(y["feed_forward"].as<double>(), law.feed_forward);
   EXPECT_DOUBLE_EQ(y["degraded_speed_factor"].as<double>(), law.degraded_speed_factor);
   EXPECT_EQ(y["allow_backwards"].as<bool>(), law.allow_backwards);

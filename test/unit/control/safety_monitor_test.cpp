@@ -121,6 +121,16 @@ TEST(SafetyMonitor, WithoutRangeWatchOnlyTheEstimateCounts) {
   EXPECT_TRUE(monitor.evaluate(0.1).may_move);
 }
 
+TEST(SafetyMonitor, NearestRangeIsTheSmallestFreshOne) {
+  SafetyMonitor monitor = enabledMonitor();  // range_timeout 1 s
+  EXPECT_EQ(monitor.nearestRange(0.0), std::numeric_limits<double>::infinity());
+  monitor.onRange(0.0, "a", 1.5);
+  monitor.onRange(0.5, "b", 2.0);
+  EXPECT_EQ(monitor.nearestRange(0.6), 1.5);
+  EXPECT_EQ(monitor.nearestRange(1.2), 2.0);  // "a" is older than range_timeout
+  EXPECT_EQ(monitor.nearestRange(2.0), std::numeric_limits<double>::infinity());
+}
+
 TEST(SafetyParams, ValidateRejectsNegativeSafeDistance) {
   SafetyParams params;
   params.safe_distance = -1.0;

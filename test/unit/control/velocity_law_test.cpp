@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
 
@@ -39,23 +42,37 @@ TEST(VelocityLaw, SlowsDownAsGapCloses) {
   const double far = far_law.update(target(3.0, 0.0), 0.05).linear;
   const double near = near_law.update(target(1.8, 0.0), 0.05).linear;
   EXPECT_GT(far, near);
-  EXPECT_LE(near, slowdownCap(0.2, 1.0, 1.0) + 1e-12);
+  EXPECT_LE(near, slowdownCap(0.2, 1.0, 0.2, 1.0) + 1e-12);
 }
 
-TEST(SlowdownCap, ContinuousAtTheFollowDistanceAndScaledByTheTargetSpeed) {
-  EXPECT_EQ(slowdownCap(0.0, 0.3, 1.5, 1.0), 0.0);
-  EXPECT_EQ(slowdownCap(-0.1, 0.3, 1.5, 1.0), 0.0);
-  EXPECT_NEAR(slowdownCap(1e-6, 0.3, 1.5, 1.0), 0.0, 1e-4);
-  EXPECT_NEAR(slowdownCap(0.06, 0.3, 1.5, 1.0), 0.5, 1e-12);   // (1 + 1.5) * 0.2
-  EXPECT_NEAR(slowdownCap(0.06, 0.3, 1.5, 0.0), 0.3, 1e-12);   // no target speed: 1.5 * 0.2
-  EXPECT_NEAR(slowdownCap(0.06, 0.3, 1.5, -1.0), 0.3, 1e-12);  // walking towards: as 0
-  EXPECT_EQ(slowdownCap(5.0, 0.3, 1.5, 1.0), 1.5);
+TEST(SlowdownCap, PassesThroughTheTargetSpeedAtTheFollowDistance) {
+  // slowdown 0.3 m beyond, closing 0.2 m inside, max 1.5 m/s.
+  EXPECT_EQ(slowdownCap(0.0, 0.3, 0.2, 1.5, 1.0), 1.0);
+  EXPECT_NEAR(slowdownCap(1e-9, 0.3, 0.2, 1.5, 1.0), 1.0, 1e-6);   // continuous from above
+  EXPECT_NEAR(slowdownCap(-1e-9, 0.3, 0.2, 1.5, 1.0), 1.0, 1e-6);  // and from below
+  EXPECT_NEAR(slowdownCap(0.15, 0.3, 0.2, 1.5, 1.0), 1.25, 1e-12);  // 1 + 0.5 * 0.5
+  EXPECT_EQ(slowdownCap(0.3, 0.3, 0.2, 1.5, 1.0), 1.5);
+  EXPECT_EQ(slowdownCap(5.0, 0.3, 0.2, 1.5, 1.0), 1.5);
+  EXPECT_NEAR(slowdownCap(-0.1, 0.3, 0.2, 1.5, 1.0), 0.5, 1e-12);  // halfway in: half speed
+  EXPECT_EQ(slowdownCap(-0.2, 0.3, 0.2, 1.5, 1.0), 0.0);           // stopped 0.2 m inside
+  EXPECT_EQ(slowdownCap(-1.0, 0.3, 0.2, 1.5, 1.0), 0.0);
 }
 
-TEST(VelocityLaw, FeedForwardHoldsAWalkingPersonNearTheFollowDistance) {
+TEST(SlowdownCap, AStandingPersonIsNeverApproachedInsideTheFollowDistance) {
+  EXPECT_EQ(slowdownCap(0.0, 0.3, 0.2, 1.5, 0.0), 0.0);
+  EXPECT_EQ(slowdownCap(-0.1, 0.3, 0.2, 1.5, 0.0), 0.0);
+  EXPECT_NEAR(slowdownCap(0.06, 0.3, 0.2, 1.5, 0.0), 0.3, 1e-12);   // 1.5 * 0.2
+  EXPECT_NEAR(slowdownCap(0.06, 0.3, 0.2, 1.5, -1.0), 0.3, 1e-12);  // walking towards: as 0
+  EXPECT_EQ(slowdownCap(-0.1, 0.3, 0.2, 1.5, -1.0), 0.0);
+  EXPECT_EQ(slowdownCap(std::nan(""), 0.3, 0.2, 1.5, 1.0), 0.0);
+  // A target speed above the robot's own cannot lift the cap above max_speed.
+  EXPECT_EQ(slowdownCap(0.0, 0.3, 0.2, 1.5, 3.0), 1.5);
+}
+
+TEST(VelocityLaw, FeedForwardHoldsAWalkingPersonAtTheFollowDistance) {
   // A person walking away at 1 m/s, a robot that tracks its command, P only: with the
-  // feed-forward the gap settles just outside the follow distance (where the cap allows
-  // 1 m/s: gap = 0.3 * 1 / 2.5 = 0.12 m); without it the law cannot keep up.
+  // feed-forward the gap settles at the follow distance (the cap lets the robot match the
+  // person's speed there); without it the law cannot keep up.
   VelocityLawParams p;
   p.max_linear = 1.5;
   p.slowdown_distance = 0.3;
@@ -70,18 +87,62 @@ TEST(VelocityLaw, FeedForwardHoldsAWalkingPersonNearTheFollowDistance) {
       range += (1.0 - law.update(t, 0.05).linear) * 0.05;
     }
     if (feed_forward > 0.0) {
-      EXPECT_NEAR(range, p.follow_distance + 0.12, 0.01);
+      EXPECT_NEAR(range, p.follow_distance, 0.01);
     } else {
       EXPECT_GT(range, p.follow_distance + 0.3);
     }
   }
 }
 
-TEST(VelocityLaw, FeedForwardNeverDrivesInsideTheFollowDistance) {
-  VelocityLaw law{VelocityLawParams()};
-  TargetPolar t = target(1.5, 0.0);
+TEST(VelocityLaw, InsideTheFollowDistanceSpeedFallsToZeroOverTheClosingDistance) {
+  VelocityLawParams p;
+  const double d = p.follow_distance;
+  for (const double inside : {0.05, 0.1, p.closing_distance, 0.4}) {
+    VelocityLaw law{p};
+    TargetPolar t = target(d - inside, 0.0);
+    t.receding_speed = 1.0;
+    const double cap = std::max(0.0, 1.0 - inside / p.closing_distance);
+    EXPECT_LE(law.update(t, 0.05).linear, cap + 1e-12) << inside;
+  }
+  VelocityLaw standing{p};
+  EXPECT_EQ(standing.update(target(d - 0.05, 0.0), 0.05).linear, 0.0);
+}
+
+TEST(GoverningGap, TheNearestModuleGovernsWhenItIsCloserToTheStop) {
+  VelocityLawParams p;  // stop_margin 0.15
+  EXPECT_EQ(governingGap(0.4, std::numeric_limits<double>::infinity(), p), 0.4);
+  EXPECT_EQ(governingGap(0.4, 1.0, p), 0.4);
+  EXPECT_NEAR(governingGap(0.4, 0.25, p), 0.1, 1e-12);
+  EXPECT_NEAR(governingGap(0.0, 0.05, p), -0.1, 1e-12);
+  EXPECT_EQ(governingGap(0.4, std::nan(""), p), 0.4);
+}
+
+TEST(VelocityLaw, HangsBackWhenACornerModuleNearsTheStop) {
+  // The centre is at the follow distance with the person walking away, but a corner
+  // module is only 0.05 m beyond safe_distance: slower than the person (the cap falls
+  // inside the follow distance), so the gap at the corner grows.
+  VelocityLawParams p;
+  TargetPolar t = target(p.follow_distance, 0.0);
   t.receding_speed = 1.0;
-  EXPECT_EQ(law.update(t, 0.05).linear, 0.0);
+  VelocityLaw free_law{p};
+  const double free_speed = free_law.update(t, 0.05).linear;
+  t.module_gap = 0.05;
+  VelocityLaw law{p};
+  const double speed = law.update(t, 0.05).linear;
+  EXPECT_NEAR(free_speed, 1.0, 1e-9);
+  EXPECT_LT(speed, 0.5 + 1e-9);  // cap 1 * (1 - 0.1 / 0.2)
+}
+
+TEST(VelocityLaw, NotArrivedWhileThePersonWalksAway) {
+  VelocityLaw law{VelocityLawParams()};
+  const double d = VelocityLawParams().follow_distance;
+  TargetPolar t = target(d - 0.01, 0.0);
+  t.receding_speed = 1.0;
+  law.update(t, 0.05);
+  EXPECT_FALSE(law.arrived());
+  t.receding_speed = 0.0;
+  law.update(t, 0.05);
+  EXPECT_TRUE(law.arrived());
 }
 
 TEST(VelocityLaw, ArrivalHasHysteresis) {
@@ -169,6 +230,19 @@ TEST(VelocityLawParams, ValidateRejectsBadFollowDistance) {
   params.follow_distance = 0.0;
   EXPECT_THROW(params.validate(), ParamError);
   EXPECT_NO_THROW(VelocityLawParams().validate());
+}
+
+TEST(VelocityLawParams, ValidateRejectsAClosingDistanceOutsideTheFollowDistance) {
+  for (const double closing : {0.0, -0.1, 1.6, 2.0, std::nan("")}) {
+    VelocityLawParams params;
+    params.closing_distance = closing;
+    try {
+      params.validate();
+      ADD_FAILURE() << closing << " accepted";
+    } catch (const ParamError& e) {
+      EXPECT_EQ(e.name(), "~closing_distance");
+    }
+  }
 }
 
 }  // namespace
