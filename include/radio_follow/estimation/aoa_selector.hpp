@@ -34,6 +34,10 @@ struct AoaSelectorConfig {
   std::size_t vote_window = 5;
 };
 
+/// Without an estimate, boards are compared by RSSI only once every board with a fresh
+/// bearing has this many RSSI values (or rssi_window, if smaller).
+constexpr std::size_t kMinRssiToChoose = 10;
+
 /// One board with a fresh bearing.
 struct AoaCandidate {
   std::size_t board = 0;  ///< board index in the layout
@@ -50,8 +54,11 @@ bool inFieldOfView(const AoaCandidate& board, const Eigen::Vector3d& point);
 ///
 /// A board with the tag behind it still reports a bearing inside its own field of view
 /// (plausible garbage), so whenever an estimate exists every mode drops the boards whose
-/// field of view does not contain it. Without an estimate the rssi score decides (the
-/// strongest signal is the board facing the tag), and only one board is used.
+/// field of view does not contain it. Without an estimate the highest mean RSSI decides
+/// (the strongest signal is the board facing the tag), and only one board is used, once
+/// every reporting board has kMinRssiToChoose RSSI values: the first board to report is not
+/// the one facing the tag more often than chance, and a wrong first choice keeps itself
+/// (later estimates only admit the boards facing it).
 class AoaSelector {
  public:
   AoaSelector(std::size_t board_count, const AoaSelectorConfig& config);
@@ -63,6 +70,8 @@ class AoaSelector {
   std::vector<std::size_t> select(const std::vector<AoaCandidate>& fresh,
                                   const std::optional<Eigen::Vector3d>& estimate);
 
+  /// Mean of the board's recent RSSI, dBm; -inf without values.
+  double meanRssi(std::size_t board) const;
   /// Thesis score mean - 2 std of the board's recent RSSI; -inf without values.
   double score(std::size_t board) const;
   /// Forgets the vote history (target lost).

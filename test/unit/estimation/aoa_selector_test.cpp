@@ -49,14 +49,15 @@ TEST(AoaSelector, RssiModeUsesMeanMinusTwoStdAndMajority) {
   EXPECT_NEAR(selector.score(0), -60.0, 1e-12);
   EXPECT_NEAR(selector.score(1), -75.0, 1e-12);
   std::vector<AoaCandidate> fresh{boards[0], boards[1]};
+  const Eigen::Vector3d both(3.0, 2.5, 0.0);  // in both boards' fields of view
   for (int i = 0; i < 3; ++i) {
-    EXPECT_EQ(selector.select(fresh, std::nullopt), std::vector<std::size_t>{0});
+    EXPECT_EQ(selector.select(fresh, both), std::vector<std::size_t>{0});
   }
   // Board 1 becomes best once; the majority of the last three selections keeps board 0.
   for (double v : {-50.0, -50.0, -50.0, -50.0})
     selector.recordRssi(1, v);
-  EXPECT_EQ(selector.select(fresh, std::nullopt), std::vector<std::size_t>{0});
-  EXPECT_EQ(selector.select(fresh, std::nullopt), std::vector<std::size_t>{1});
+  EXPECT_EQ(selector.select(fresh, both), std::vector<std::size_t>{0});
+  EXPECT_EQ(selector.select(fresh, both), std::vector<std::size_t>{1});
 }
 
 TEST(AoaSelector, ExternalModePicksTheBoardFacingTheEstimate) {
@@ -84,6 +85,43 @@ TEST(AoaSelector, AllInFovUsesEveryBoardFacingTheEstimateAndNoOther) {
 TEST(AoaSelector, ParsesModes) {
   EXPECT_EQ(parseAoaSelectionMode("external", "m"), AoaSelectionMode::kExternal);
   EXPECT_THROW(parseAoaSelectionMode("loudest", "aoa_selection"), ParamError);
+}
+
+TEST(AoaSelector, WithoutAnEstimateWaitsUntilEveryReportingBoardWasHeardEnough) {
+  AoaSelector selector(4, AoaSelectorConfig());
+  const auto boards = cube();
+  const std::vector<AoaCandidate> fresh{boards[0], boards[2]};
+  // The back board (tag behind it, 6 dB weaker) happens to report first.
+  selector.recordRssi(2, -66.0);
+  EXPECT_TRUE(selector.select(fresh, std::nullopt).empty());
+  for (std::size_t k = 1; k < kMinRssiToChoose; ++k) {
+    selector.recordRssi(0, -60.0);
+    selector.recordRssi(2, -66.0);
+    EXPECT_TRUE(selector.select(fresh, std::nullopt).empty()) << k;
+  }
+  selector.recordRssi(0, -60.0);  // now both have kMinRssiToChoose values
+  EXPECT_EQ(selector.select(fresh, std::nullopt), std::vector<std::size_t>{0});
+  // With an estimate the field of view decides at once.
+  AoaSelector fresh_start(4, AoaSelectorConfig());
+  EXPECT_EQ(fresh_start.select(fresh, Eigen::Vector3d(3.0, 0.0, 0.0)), std::vector<std::size_t>{0});
+}
+
+TEST(AoaSelector, AtStartUpTheLouderBoardWinsNotTheSteadierOne) {
+  // The thesis score (mean - 2 std) would prefer the steady back board (-61 vs about
+  // -63); the board facing the tag is louder on average, and that is what decides.
+  for (const AoaSelectionMode mode :
+       {AoaSelectionMode::kRssi, AoaSelectionMode::kExternal, AoaSelectionMode::kAllInFov}) {
+    AoaSelectorConfig config;
+    config.mode = mode;
+    AoaSelector selector(4, config);
+    const auto boards = cube();
+    for (std::size_t k = 0; k < kMinRssiToChoose; ++k) {
+      selector.recordRssi(0, k % 2 ? -51.0 : -59.0);  // mean -55, std 4
+      selector.recordRssi(2, k % 2 ? -60.5 : -61.5);  // mean -61, std 0.5
+    }
+    ASSERT_LT(selector.score(0), selector.score(2));
+    EXPECT_EQ(selector.select({boards[0], boards[2]}, std::nullopt), std::vector<std::size_t>{0});
+  }
 }
 
 }  // namespace

@@ -60,12 +60,19 @@ TEST(Locator, CubeWithOneRangeIgnoresTheBoardBehind) {
   // "front" faces the target; "back" hears a reflection and reports a plausible bearing
   // towards a point 4 m behind-left of the robot.
   const Eigen::Vector3d ghost(-3.0, 3.0, config.height);
-  for (int k = 0; k < 6; ++k) {
+  // Until both boards were heard kMinRssiToChoose times no board is chosen, and one range
+  // alone is no position.
+  const int first = static_cast<int>(kMinRssiToChoose) - 1;
+  for (int k = 0; k < first + 6; ++k) {
     const double t = 0.05 * k;
     feedRanges(locator, truth, t);
     feedBearing(locator, layout.aoa_boards[0], truth, -55.0, t);
     feedBearing(locator, layout.aoa_boards[2], ghost, -62.0, t);
     const LocatorEstimate e = locator.update(t);
+    if (k < first) {
+      EXPECT_EQ(e.status, TargetStatus::kLost) << "epoch " << k;
+      continue;
+    }
     ASSERT_EQ(e.status, TargetStatus::kOk) << "epoch " << k;
     EXPECT_LT((e.position - truth).norm(), 0.02) << "epoch " << k;
     EXPECT_EQ(e.bearings_used, std::vector<std::size_t>{0});
@@ -77,8 +84,14 @@ TEST(Locator, BearingOnlyIsHeadingOnly) {
   const Layout layout = layoutFile("cube.yaml");
   Locator locator(layout, LocatorConfig{});
   const Eigen::Vector3d truth(1.0, 5.0, 1.0);
-  feedBearing(locator, layout.aoa_boards[1], truth, -60.0, 0.0);
-  const LocatorEstimate e = locator.update(0.01);
+  LocatorEstimate e;
+  for (std::size_t k = 0; k < kMinRssiToChoose; ++k) {
+    feedBearing(locator, layout.aoa_boards[1], truth, -60.0, 0.1 * k);
+    e = locator.update(0.1 * k + 0.01);
+    if (k + 1 < kMinRssiToChoose) {
+      EXPECT_EQ(e.status, TargetStatus::kLost) << k;  // still comparing the boards' RSSI
+    }
+  }
   ASSERT_EQ(e.status, TargetStatus::kHeadingOnly);
   EXPECT_LT(headingError(e.position, truth), 0.02);
   EXPECT_EQ(e.sources, kSourceAoa);
