@@ -38,6 +38,9 @@ visualization_msgs::Marker baseMarker(const Layout& layout, const std::string& n
   m.action = visualization_msgs::Marker::ADD;
   m.pose.orientation.w = 1.0;
   m.color.a = 1.0;
+  // Latched once, in the robot's frame: without this rviz places the markers with the
+  // transform of their arrival and leaves them behind when the robot drives off.
+  m.frame_locked = true;
   return m;
 }
 

@@ -20,6 +20,7 @@ TEST(LayoutPublisher, PublishesLatchedSensorMarkers) {
   int arrows = 0;
   for (const auto& m : markers->markers) {
     EXPECT_EQ(m.header.frame_id, "base_link");
+    EXPECT_TRUE(m.frame_locked) << m.ns;  // rviz moves them with the robot
     spheres += m.type == visualization_msgs::Marker::SPHERE;
     arrows += m.type == visualization_msgs::Marker::ARROW;
   }
