@@ -93,6 +93,8 @@ FollowReport FollowMetrics::report() const {
     return r;
   }
   r.duration = samples_.back().t - samples_.front().t;
+  r.final_gap = std::hypot(samples_.back().target_x - samples_.back().robot_x,
+                           samples_.back().target_y - samples_.back().robot_y);
   std::vector<double> gaps_in_window;
   std::vector<double> errors;
   int within = 0;
@@ -183,6 +185,7 @@ std::string FollowReport::toJson() const {
       << "  \"target_distance_m\": " << jsonNumber(target_distance) << ",\n"
       << "  \"min_gap_m\": " << jsonNumber(min_gap) << ",\n"
       << "  \"min_gap_while_moving_m\": " << jsonNumber(min_gap_while_moving) << ",\n"
+      << "  \"final_gap_m\": " << jsonNumber(final_gap) << ",\n"
       << "  \"gap_mean_m\": " << jsonNumber(gap_mean) << ",\n"
       << "  \"gap_within_tolerance\": " << jsonNumber(gap_within_tolerance) << ",\n"
       << "  \"gap_samples\": " << gap_samples << ",\n"

@@ -53,6 +53,7 @@ struct FollowReport {
   double target_distance = 0.0;        ///< m walked
   double min_gap_while_moving = 0.0;   ///< m; +inf when never commanded to move
   double min_gap = 0.0;                ///< m
+  double final_gap = 0.0;              ///< m, robot to target at the last sample (homing)
   double gap_within_tolerance = 0.0;   ///< fraction of gap samples
   int gap_samples = 0;                 ///< samples the gap fraction is over
   double gap_window_start = 0.0;       ///< s after the first sample; NaN if never caught up

@@ -4,6 +4,8 @@
 // private parameters set; optionally watches cmd_vel for a stop-and-resume window and a
 // topic that must publish again after a fault. Every threshold is optional (absent: not
 // checked), so each experiment states exactly what it claims.
+#include <geometry_msgs/PointStamped.h>
+#include <geometry_msgs/PoseStamped.h>
 #include <geometry_msgs/Twist.h>
 #include <gtest/gtest.h>
 #include <radio_follow/UwbRanges.h>
@@ -75,6 +77,20 @@ TEST(Experiment, MeetsItsThresholds) {
         [&](const radio_follow::UwbRangesConstPtr&) { last_on_topic = ros::Time::now().toSec(); });
   }
 
+  // A homing goal (PoseStamped in the odometry frame) compared with the true target.
+  std::string goal_topic;
+  ros::param::get("~goal_topic", goal_topic);
+  geometry_msgs::PoseStampedConstPtr goal;
+  geometry_msgs::PointStampedConstPtr truth;
+  ros::Subscriber goal_sub, truth_sub;
+  if (!goal_topic.empty()) {
+    goal_sub = nh.subscribe<geometry_msgs::PoseStamped>(
+        goal_topic, 10, [&](const geometry_msgs::PoseStampedConstPtr& msg) { goal = msg; });
+    truth_sub = nh.subscribe<geometry_msgs::PointStamped>(
+        "ground_truth/target", 10,
+        [&](const geometry_msgs::PointStampedConstPtr& msg) { truth = msg; });
+  }
+
   ASSERT_TRUE(radio_follow::test::spinUntil([&] { return !report_text.empty(); }, timeout))
       << "no evaluation/report within " << timeout << " s of wall time";
   std::cout << "experiment report: " << report_text << std::endl;
@@ -92,6 +108,20 @@ TEST(Experiment, MeetsItsThresholds) {
   const double max_error = threshold("max_estimate_error_median");
   if (std::isfinite(max_error)) {
     EXPECT_LE(metric(report, "estimate_error_median_m"), max_error);
+  }
+  const double max_final_gap = threshold("max_final_gap");
+  if (std::isfinite(max_final_gap)) {
+    EXPECT_LE(metric(report, "final_gap_m"), max_final_gap) << "the robot ended this far away";
+  }
+  const double max_goal_error = threshold("max_goal_error");
+  if (!goal_topic.empty()) {
+    ASSERT_TRUE(goal && truth) << "no goal on " << goal_topic << " or no ground truth";
+    const double error =
+        std::hypot(goal->pose.position.x - truth->point.x, goal->pose.position.y - truth->point.y);
+    std::cout << "goal error: " << error << " m" << std::endl;
+    if (std::isfinite(max_goal_error)) {
+      EXPECT_LE(error, max_goal_error) << "last goal on " << goal_topic;
+    }
   }
   const double max_deviation = threshold("max_path_deviation");
   if (std::isfinite(max_deviation)) {

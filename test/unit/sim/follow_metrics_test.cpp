@@ -122,6 +122,21 @@ TEST(FollowMetrics, StandingStillIsNotMoving) {
   EXPECT_NE(r.toJson().find("\"min_gap_while_moving_m\": null"), std::string::npos);
 }
 
+TEST(FollowMetrics, FinalGapIsTheLastSamplesDistance) {
+  FollowMetrics metrics{FollowSettings{}};
+  FollowSample s;
+  s.target_x = 6.0;
+  s.target_y = -4.0;
+  metrics.add(s);  // start: 7.2 m away
+  s.t = 20.0;
+  s.robot_x = 5.8;
+  s.robot_y = -3.9;
+  metrics.add(s);
+  const FollowReport r = metrics.report();
+  EXPECT_NEAR(r.final_gap, std::hypot(0.2, 0.1), 1e-12);
+  EXPECT_NE(r.toJson().find("\"final_gap_m\": 0.2236"), std::string::npos);
+}
+
 TEST(FollowMetrics, CsvHasAHeaderAndOneRowPerSample) {
   const FollowMetrics metrics = straightRun(1.6, 0.0, 0.0);
   const std::string csv = metrics.toCsv();
