@@ -67,15 +67,14 @@ HomingResult runHomingTrial(const HomingController& controller, double target_x,
 HomingController hybridHomingController(const control::HomingParams& params, double search_speed) {
   auto homing = std::make_shared<control::HybridHoming>(params);
   return [homing, params, search_speed](const HomingMeasurement& m) {
-    const Eigen::Vector2d robot(m.odom.x, m.odom.y);
+    const Eigen::Vector2d robot = m.odom.position();
     homing->update(robot, m.odom.yaw + m.bearing, m.distance);
     HomingCommand c;
     if (const auto& goal = homing->goal()) {
       c.goal_x = goal->x();
       c.goal_y = goal->y();
       c.arrived = homing->arrived(robot);
-      const auto v =
-          control::homingVelocity(control::Pose2{m.odom.x, m.odom.y, m.odom.yaw}, *goal, params);
+      const auto v = control::homingVelocity(m.odom, *goal, params);
       c.linear = v.linear;
       c.angular = v.angular;
     } else {

@@ -4,17 +4,12 @@
 #include <Eigen/Core>
 #include <deque>
 
+#include "radio_follow/common/pose2.hpp"
+
 namespace radio_follow {
 namespace control {
 
-/// Planar pose in the odometry frame.
-struct Pose2 {
-  double x = 0.0;
-  double y = 0.0;
-  double yaw = 0.0;  ///< rad
-
-  Eigen::Vector2d position() const { return {x, y}; }
-};
+using radio_follow::Pose2;  ///< in the odometry frame here
 
 /// The human's path in a fixed (odometry) frame (thesis Section 4.7): points at least
 /// `min_spacing` apart, oldest first, pruned as the robot passes them.

@@ -1,15 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include "radio_follow/common/pose2.hpp"
+
 namespace radio_follow {
 namespace sim {
 
-/// Planar pose: x, y in metres, yaw in radians (REP-103).
-struct Pose2 {
-  double x = 0.0;
-  double y = 0.0;
-  double yaw = 0.0;
-};
+using radio_follow::Pose2;
 
 /// Speed and acceleration limits of the simulated base. The commanded velocity is
 /// clamped to the speed limits and approached at no more than the accelerations.
