@@ -71,10 +71,7 @@ double AoaSelector::score(std::size_t board) const {
     return -std::numeric_limits<double>::infinity();
   }
   const auto& w = rssi_[board];
-  double mean = 0.0;
-  for (double v : w)
-    mean += v;
-  mean /= static_cast<double>(w.size());
+  const double mean = meanRssi(board);
   double var = 0.0;
   for (double v : w)
     var += (v - mean) * (v - mean);
@@ -131,7 +128,7 @@ std::vector<std::size_t> AoaSelector::select(const std::vector<AoaCandidate>& fr
     // thesis's mean - 2 std: the question here is which board faces the tag, and a board
     // with the tag behind it is only some 6 dB weaker while the boards' spreads differ by
     // up to 2-3 dB with the angle (Tables 3.2-3.7), so the spread penalty picked the back
-    // board of the cube in 4 of 6 simulated start-ups.
+    // board of the cube at start-up in the simulated outdoor loop (seeds 2 and 3).
     const std::size_t needed = std::min(kMinRssiToChoose, config_.rssi_window);
     for (std::size_t i : eligible) {
       const std::size_t heard = fresh[i].board < rssi_.size() ? rssi_[fresh[i].board].size() : 0;

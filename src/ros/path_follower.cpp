@@ -121,9 +121,7 @@ ControllerBase::Output PathFollowerNode::compute(const ros::Time& now, double dt
   const std::optional<control::Pose2> robot = path_mode_ ? robotPose() : std::nullopt;
   if (!robot || path_.empty() || heading_only) {
     // Without self-localisation no path can be stored: drive straight at the target.
-    control::TargetPolar target = targetPolar(*estimate_, std::nullopt);
-    target.module_gap = moduleGap(now);
-    out.command = fallback_law_.update(target, dt);
+    out.command = fallback_law_.update(targetPolar(*estimate_, std::nullopt, moduleGap(now)), dt);
     if (heading_only) {
       out.text = "Direction only, turning to the target.";
     } else if (fallback_law_.arrived()) {

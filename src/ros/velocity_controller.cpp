@@ -32,9 +32,10 @@ control::VelocityLawParams loadVelocityLawParams(const ros::NodeHandle& pnh,
 }
 
 control::TargetPolar targetPolar(const TargetEstimate& estimate,
-                                 std::optional<double> receding_speed) {
+                                 std::optional<double> receding_speed, double module_gap) {
   control::TargetPolar t;
   t.receding_speed = receding_speed.value_or(0.0);
+  t.module_gap = module_gap;
   t.range = estimate.range;
   t.bearing = estimate.bearing;
   t.range_valid = estimate.status == TargetEstimate::STATUS_OK ||
@@ -88,9 +89,7 @@ ControllerBase::Output VelocityControllerNode::compute(const ros::Time& now, dou
   Output out;
   const std::optional<double> receding =
       params_.odom_frame.empty() ? std::nullopt : motion_.recedingSpeed(now);
-  control::TargetPolar target = targetPolar(*estimate_, receding);
-  target.module_gap = moduleGap(now);
-  out.command = law_.update(target, dt);
+  out.command = law_.update(targetPolar(*estimate_, receding, moduleGap(now)), dt);
   if (estimate_->status == TargetEstimate::STATUS_HEADING_ONLY) {
     out.text = "Direction only, turning to the target.";
   } else if (law_.arrived()) {

@@ -7,18 +7,18 @@
 #include <std_msgs/Bool.h>
 #include <std_srvs/SetBool.h>
 
+#include <map>
 #include <memory>
 #include <optional>
-#include <map>
 #include <string>
 #include <vector>
 
 #include "radio_follow/UwbRanges.h"
+#include "radio_follow/config/layout.hpp"
 #include "radio_follow/control/follower_state.hpp"
 #include "radio_follow/control/obstacle_avoidance.hpp"
 #include "radio_follow/control/pid.hpp"
 #include "radio_follow/control/rate_limiter.hpp"
-#include "radio_follow/config/layout.hpp"
 #include "radio_follow/control/safety_monitor.hpp"
 
 namespace radio_follow {

@@ -24,9 +24,10 @@ control::VelocityLawParams loadVelocityLawParams(const ros::NodeHandle& private_
                                                  const ControllerCommonParams& common);
 
 /// Converts an estimate into the law's input (HEADING_ONLY -> no range, DEGRADED flag,
-/// the target's receding speed when known).
+/// the target's receding speed when known, the nearest module's gap to the stop:
+/// ControllerBase::moduleGap()).
 control::TargetPolar targetPolar(const TargetEstimate& estimate,
-                                 std::optional<double> receding_speed);
+                                 std::optional<double> receding_speed, double module_gap);
 
 /// True for estimates the safety layer may accept (everything but LOST).
 bool estimateUsable(const TargetEstimate& estimate);
