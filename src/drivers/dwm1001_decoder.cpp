@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/drivers/dwm1001_decoder.hpp"
 
+#include "radio_follow/drivers/plausibility.hpp"
 #include "radio_follow/drivers/text_fields.hpp"
 
 namespace radio_follow::drivers {
@@ -8,10 +9,16 @@ namespace {
 
 constexpr std::string_view kPrompt = "dwm>";
 
-bool parseQuality(std::string_view field, std::uint8_t& out) {
-  unsigned value = 0;
-  if (!parseInteger(field, value) || value > 100) {
+// An integer is a well-formed quality field; one outside 0..100 is a device fault, which
+// sets `implausible` (the line is then rejected as such, not as malformed).
+bool parseQuality(std::string_view field, std::uint8_t& out, bool& implausible) {
+  long value = 0;
+  if (!parseInteger(field, value)) {
     return false;
+  }
+  if (!plausibleQuality(value)) {
+    implausible = true;
+    value = 0;
   }
   out = static_cast<std::uint8_t>(value);
   return true;
@@ -19,21 +26,21 @@ bool parseQuality(std::string_view field, std::uint8_t& out) {
 
 // Parses "x,y,z" (or "x,y,z,q" when `quality` is given) as found inside les brackets.
 bool parseBracketNumbers(std::string_view inner, double& x, double& y, double& z,
-                         std::uint8_t* quality) {
+                         std::uint8_t* quality, bool& implausible) {
   FieldCursor cursor(inner, ',');
   std::string_view f;
   if (!cursor.next(f) || !parseFiniteDouble(f, x) || !cursor.next(f) || !parseFiniteDouble(f, y) ||
       !cursor.next(f) || !parseFiniteDouble(f, z)) {
     return false;
   }
-  if (quality != nullptr && (!cursor.next(f) || !parseQuality(f, *quality))) {
+  if (quality != nullptr && (!cursor.next(f) || !parseQuality(f, *quality, implausible))) {
     return false;
   }
   return cursor.done();
 }
 
-// "ID[x,y,z]=range"
-bool parseLesAnchor(std::string_view token, DwmAnchorRange& anchor) {
+// "ID[x,y,z]=range". A negative range is well-formed but implausible (checked later).
+bool parseLesAnchor(std::string_view token, DwmAnchorRange& anchor, bool& implausible) {
   const std::size_t open = token.find('[');
   const std::size_t close = token.find("]=");
   if (open != 4 || close == std::string_view::npos || close < open ||
@@ -42,11 +49,11 @@ bool parseLesAnchor(std::string_view token, DwmAnchorRange& anchor) {
   }
   assignUpperHex(token.substr(0, 4), anchor.id);
   return parseBracketNumbers(token.substr(open + 1, close - open - 1), anchor.x, anchor.y, anchor.z,
-                             nullptr) &&
-         parseFiniteDouble(token.substr(close + 2), anchor.range) && anchor.range >= 0.0;
+                             nullptr, implausible) &&
+         parseFiniteDouble(token.substr(close + 2), anchor.range);
 }
 
-DwmLineStatus decodeLes(std::string_view line, DwmMeasurement& out) {
+DwmLineStatus decodeLes(std::string_view line, DwmMeasurement& out, bool& implausible) {
   FieldCursor tokens(line, ' ');
   std::string_view token;
   bool seen_le_us = false;
@@ -65,7 +72,7 @@ DwmLineStatus decodeLes(std::string_view line, DwmMeasurement& out) {
     } else if (startsWith(token, "est[")) {
       if (token.back() != ']' ||
           !parseBracketNumbers(token.substr(4, token.size() - 5), out.position.x, out.position.y,
-                               out.position.z, &out.position.quality)) {
+                               out.position.z, &out.position.quality, implausible)) {
         return DwmLineStatus::kMalformed;
       }
       out.has_position = true;
@@ -74,7 +81,7 @@ DwmLineStatus decodeLes(std::string_view line, DwmMeasurement& out) {
         return DwmLineStatus::kMalformed;  // anchors come first
       }
       out.ranges.emplace_back();
-      if (!parseLesAnchor(token, out.ranges.back())) {
+      if (!parseLesAnchor(token, out.ranges.back(), implausible)) {
         return DwmLineStatus::kMalformed;
       }
     }
@@ -85,11 +92,11 @@ DwmLineStatus decodeLes(std::string_view line, DwmMeasurement& out) {
   return DwmLineStatus::kMeasurement;
 }
 
-bool parsePosFields(FieldCursor& cursor, DwmPosition& position) {
+bool parsePosFields(FieldCursor& cursor, DwmPosition& position, bool& implausible) {
   std::string_view f;
   return cursor.next(f) && parseFiniteDouble(f, position.x) && cursor.next(f) &&
          parseFiniteDouble(f, position.y) && cursor.next(f) && parseFiniteDouble(f, position.z) &&
-         cursor.next(f) && parseQuality(f, position.quality) && cursor.done();
+         cursor.next(f) && parseQuality(f, position.quality, implausible) && cursor.done();
 }
 
 // "AN<k>" with k == expected index.
@@ -98,7 +105,7 @@ bool isAnchorLabel(std::string_view field, std::size_t index) {
   return startsWith(field, "AN") && parseInteger(field.substr(2), k) && k == index;
 }
 
-DwmLineStatus decodeLec(std::string_view line, DwmMeasurement& out) {
+DwmLineStatus decodeLec(std::string_view line, DwmMeasurement& out, bool& implausible) {
   FieldCursor cursor(line, ',');
   std::string_view f;
   cursor.next(f);  // "DIST"
@@ -108,7 +115,7 @@ DwmLineStatus decodeLec(std::string_view line, DwmMeasurement& out) {
   }
   while (cursor.next(f)) {
     if (f == "POS") {
-      if (!parsePosFields(cursor, out.position)) {
+      if (!parsePosFields(cursor, out.position, implausible)) {
         return DwmLineStatus::kMalformed;
       }
       out.has_position = true;
@@ -124,8 +131,7 @@ DwmLineStatus decodeLec(std::string_view line, DwmMeasurement& out) {
     std::string_view id;
     if (!cursor.next(id) || !isHexId(id, 4) || !cursor.next(f) || !parseFiniteDouble(f, a.x) ||
         !cursor.next(f) || !parseFiniteDouble(f, a.y) || !cursor.next(f) ||
-        !parseFiniteDouble(f, a.z) || !cursor.next(f) || !parseFiniteDouble(f, a.range) ||
-        a.range < 0.0) {
+        !parseFiniteDouble(f, a.z) || !cursor.next(f) || !parseFiniteDouble(f, a.range)) {
       return DwmLineStatus::kMalformed;
     }
     assignUpperHex(id, a.id);
@@ -150,6 +156,27 @@ bool looksLikeData(std::string_view line) {
          (line.size() > 4 && line[4] == '[' && isHexId(line.substr(0, 4), 4));
 }
 
+// Every range and coordinate within the physical limits of plausibility.hpp.
+bool plausibleValues(const DwmMeasurement& m) {
+  for (const DwmAnchorRange& a : m.ranges) {
+    if (!plausibleRange(a.range) || !plausibleCoordinate(a.x) || !plausibleCoordinate(a.y) ||
+        !plausibleCoordinate(a.z)) {
+      return false;
+    }
+  }
+  return !m.has_position ||
+         (plausibleCoordinate(m.position.x) && plausibleCoordinate(m.position.y) &&
+          plausibleCoordinate(m.position.z));
+}
+
+// A line that decoded whole is still rejected when a value is physically impossible.
+DwmLineStatus checkValues(DwmLineStatus status, const DwmMeasurement& m, bool implausible) {
+  if (status != DwmLineStatus::kMeasurement) {
+    return status;
+  }
+  return implausible || !plausibleValues(m) ? DwmLineStatus::kImplausible : status;
+}
+
 std::string_view trimSpaces(std::string_view s) {
   while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) {
     s.remove_prefix(1);
@@ -172,6 +199,8 @@ const char* toString(DwmLineStatus status) {
       return "malformed";
     case DwmLineStatus::kCountMismatch:
       return "anchor count mismatch";
+    case DwmLineStatus::kImplausible:
+      return "implausible value";
   }
   return "unknown";
 }
@@ -186,21 +215,24 @@ DwmLineStatus decodeDwmLine(std::string_view line, DwmMeasurement& out) {
   if (line.empty() || line.front() == '[') {
     return DwmLineStatus::kIgnored;  // blank or "[000123.450 INF] ..." log line
   }
+  bool implausible = false;
   if (startsWith(line, "DIST,")) {
-    return decodeLec(line, out);
+    const DwmLineStatus status = decodeLec(line, out, implausible);
+    return checkValues(status, out, implausible);
   }
   if (startsWith(line, "POS,")) {
     FieldCursor cursor(line.substr(4), ',');
-    if (!parsePosFields(cursor, out.position)) {
+    if (!parsePosFields(cursor, out.position, implausible)) {
       return DwmLineStatus::kMalformed;
     }
     out.has_position = true;
-    return DwmLineStatus::kMeasurement;
+    return checkValues(DwmLineStatus::kMeasurement, out, implausible);
   }
   const bool les_start = (line.size() > 4 && line[4] == '[' && isHexId(line.substr(0, 4), 4)) ||
                          startsWith(line, "le_us=") || startsWith(line, "est[");
   if (les_start) {
-    return decodeLes(line, out);
+    const DwmLineStatus status = decodeLes(line, out, implausible);
+    return checkValues(status, out, implausible);
   }
   if (line == "les" || line == "lec" || line == "lep" || line == "si" || line == "quit") {
     return DwmLineStatus::kIgnored;  // command echo without its prompt

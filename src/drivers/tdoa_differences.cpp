@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/drivers/plausibility.hpp"
 #include "radio_follow/drivers/tdoa_packet.hpp"
 
 namespace radio_follow {
@@ -26,13 +27,17 @@ void TdoaDifferenceConfig::validate() const {
     require(ids.insert(anchors[i].id).second, name + ".id", anchors[i].id, "a unique name");
     require(addresses.insert(anchors[i].address).second, name + ".address", anchors[i].address,
             "a unique address");
-    require(anchors[i].position.allFinite(), name + ".position", "non-finite",
-            "three finite coordinates");
+    const Eigen::Vector3d& p = anchors[i].position;
+    require(drivers::plausibleCoordinate(p.x()) && drivers::plausibleCoordinate(p.y()) &&
+                drivers::plausibleCoordinate(p.z()),
+            name + ".position",
+            std::to_string(p.x()) + ", " + std::to_string(p.y()) + ", " + std::to_string(p.z()),
+            "three finite coordinates within 10 km, m");
   }
   require(master < anchors.size(), "~master", master, "one of the anchors");
   require(reference < anchors.size(), "~reference", reference, "one of the anchors");
-  require(std::isfinite(distance_variance) && distance_variance > 0.0, "~distance_variance",
-          distance_variance, "a positive variance in m^2");
+  require(drivers::plausibleVariance(distance_variance), "~distance_variance", distance_variance,
+          "a positive variance in m^2");
   require(std::isfinite(plausibility_margin) && plausibility_margin >= 0.0, "~plausibility_margin",
           plausibility_margin, "a non-negative distance in metres");
   require(min_anchors >= 2 && min_anchors <= anchors.size(), "~min_anchors", min_anchors,
@@ -81,7 +86,10 @@ TdoaDifferenceCalculator::Outcome TdoaDifferenceCalculator::compute(
         static_cast<double>(tickDifference(r.rx_ticks, ref->rx_ticks)) / kTdoaTickFrequency +
         (sync_delay_[r.anchor] - sync_delay_[config_.reference]);
     const double d = kSpeedOfLight * dt;
-    if (std::abs(d) > baseline_[r.anchor] + config_.plausibility_margin) {
+    // Bounded by the anchors' baseline, and in any case by the physical limit of a UWB
+    // link (anchors further apart than that cannot both hear one blink).
+    if (!drivers::plausibleDistanceDifference(d) ||
+        std::abs(d) > baseline_[r.anchor] + config_.plausibility_margin) {
       if (implausible != nullptr) {
         ++*implausible;
       }

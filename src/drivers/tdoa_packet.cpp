@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "radio_follow/drivers/plausibility.hpp"
+
 namespace radio_follow {
 namespace {
 
@@ -101,6 +103,8 @@ const char* toString(TdoaDecodeError error) {
       return "tlv_too_short";
     case TdoaDecodeError::kLengthMismatch:
       return "length_mismatch";
+    case TdoaDecodeError::kImplausible:
+      return "implausible_value";
     case TdoaDecodeError::kCount:
       break;
   }
@@ -157,6 +161,11 @@ TdoaDecodeError decodeTdoaPacket(const std::uint8_t* data, std::size_t size, Tdo
   }
   if (remaining != 0) {
     return TdoaDecodeError::kLengthMismatch;
+  }
+  // Values are judged once the structure is known to be whole.
+  if (r.has_quality &&
+      !(drivers::plausibleRssi(r.rssi_dbm) && drivers::plausibleRssi(r.first_path_dbm))) {
+    return TdoaDecodeError::kImplausible;
   }
   return TdoaDecodeError::kOk;
 }

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "radio_follow/common/angles.hpp"
+#include "radio_follow/drivers/plausibility.hpp"
 #include "radio_follow/drivers/text_fields.hpp"
 
 namespace radio_follow::drivers {
@@ -35,13 +36,11 @@ bool takePlain(std::string_view& rest, std::string_view& field) {
   return true;
 }
 
-bool parseAngle(std::string_view field, double& out) {
-  double degrees = 0.0;
-  if (!parseFiniteDouble(field, degrees) || degrees < -180.0 || degrees > 180.0) {
-    return false;
-  }
-  out = deg2rad(degrees);
-  return true;
+// Whether the decoded values are ones the board can report (plausibility.hpp). Angles
+// are checked in degrees, as sent; `rssi2` as sent (0 = reserved).
+bool plausibleValues(const UudfEvent& e, double azimuth_deg, double elevation_deg, double rssi2) {
+  return plausibleRssi(e.rssi) && plausibleAoaAngleDeg(azimuth_deg) &&
+         plausibleAoaAngleDeg(elevation_deg) && plausibleRssi(rssi2);
 }
 
 }  // namespace
@@ -54,6 +53,8 @@ const char* toString(UudfLineStatus status) {
       return "ignored";
     case UudfLineStatus::kMalformed:
       return "malformed";
+    case UudfLineStatus::kImplausible:
+      return "implausible value";
   }
   return "unknown";
 }
@@ -75,6 +76,8 @@ UudfLineStatus decodeUudfLine(std::string_view line, UudfEvent& out) {
   }
   std::string_view rest = line.substr(kEventPrefix.size());
   std::string_view f;
+  double azimuth_deg = 0.0;
+  double elevation_deg = 0.0;
   double rssi2 = 0.0;  // stays 0 (= reserved) when the field is empty
   unsigned channel = 0;
   if (!takePlain(rest, f) || !isHexId(f, 12)) {
@@ -82,12 +85,15 @@ UudfLineStatus decodeUudfLine(std::string_view line, UudfEvent& out) {
   }
   assignUpperHex(f, out.tag_id);
   if (!takePlain(rest, f) || !parseFiniteDouble(f, out.rssi) || !takePlain(rest, f) ||
-      !parseAngle(f, out.azimuth) || !takePlain(rest, f) || !parseAngle(f, out.elevation) ||
-      !takePlain(rest, f) || !(f.empty() || parseFiniteDouble(f, rssi2)) || !takePlain(rest, f) ||
+      !parseFiniteDouble(f, azimuth_deg) || !takePlain(rest, f) ||
+      !parseFiniteDouble(f, elevation_deg) || !takePlain(rest, f) ||
+      !(f.empty() || parseFiniteDouble(f, rssi2)) || !takePlain(rest, f) ||
       !parseInteger(f, channel) || channel > 39 || !takeQuoted(rest, out.anchor_id) ||
       !takeQuoted(rest, out.user_string)) {
     return UudfLineStatus::kMalformed;
   }
+  out.azimuth = deg2rad(azimuth_deg);
+  out.elevation = deg2rad(elevation_deg);
   // Older firmware sends a reserved 0 where newer sends the second polarisation's RSSI;
   // a real RSSI is always negative.
   out.rssi_second = rssi2 < 0.0 ? rssi2 : std::numeric_limits<double>::quiet_NaN();
@@ -100,7 +106,12 @@ UudfLineStatus decodeUudfLine(std::string_view line, UudfEvent& out) {
   if (tail.next(f) && (!parseInteger(f, out.event_counter) || out.event_counter < 0)) {
     return UudfLineStatus::kMalformed;
   }
-  return tail.done() ? UudfLineStatus::kEvent : UudfLineStatus::kMalformed;
+  if (!tail.done()) {
+    return UudfLineStatus::kMalformed;
+  }
+  // Only a line that decoded whole is judged on its values: a cut line stays malformed.
+  return plausibleValues(out, azimuth_deg, elevation_deg, rssi2) ? UudfLineStatus::kEvent
+                                                                 : UudfLineStatus::kImplausible;
 }
 
 }  // namespace radio_follow::drivers

@@ -45,6 +45,8 @@ enum class DwmLineStatus {
   kIgnored,        ///< blank, prompt/command echo, banner, `[INF]` log line, `DIST,0`
   kMalformed,      ///< looks like data but a field does not parse (cut or merged line)
   kCountMismatch,  ///< lec: DIST count differs from the anchors listed
+  kImplausible,    ///< decodes, but a range, coordinate or quality is outside the physical
+                   ///< limits of plausibility.hpp (a corrupted or faulty device)
 };
 
 /// Short name of a status, for logs and diagnostics.
@@ -55,7 +57,9 @@ const char* toString(DwmLineStatus status);
 /// (`DIST,4,AN0,1151,5.00,8.00,2.25,6.48,...,POS,2.57,1.98,1.68,100`) or `lep`
 /// (`POS,2.57,1.98,1.68,100`). A leading shell prompt is skipped. A line that is
 /// anything but fully consistent is rejected whole: `out` is then unspecified and must
-/// not be published. `out` is reused to avoid allocations at high line rates.
+/// not be published. So is a well-formed line with a value no device can report (a range
+/// outside [0, 300] m, a coordinate beyond 10 km, a quality outside 0..100):
+/// kImplausible. `out` is reused to avoid allocations at high line rates.
 DwmLineStatus decodeDwmLine(std::string_view line, DwmMeasurement& out);
 
 }  // namespace radio_follow::drivers

@@ -31,6 +31,8 @@ struct TdoaDifferenceConfig {
   double distance_variance = 0.0225;
   /// A difference is physically bounded by the anchors' baseline; one exceeding it by
   /// more than this is discarded (a mis-grouped blink or a multipath outlier), metres.
+  /// Whatever the baseline, a difference beyond kMaxDistanceDifference (300 m,
+  /// plausibility.hpp) is discarded too.
   double plausibility_margin = 0.5;
   /// Fewest anchors (reference included) a blink needs to be published.
   std::size_t min_anchors = 2;
@@ -67,7 +69,9 @@ class TdoaDifferenceCalculator {
   };
 
   /// Appends the group's differences to `out` (cleared first); `implausible` (if given)
-  /// is increased by the number of discarded differences.
+  /// is increased by the number of discarded differences. Every difference appended is
+  /// finite, within the bounds above, and carries a finite positive variance (the
+  /// configured one, checked by validate()).
   Outcome compute(const TdoaBlinkGroup& group, std::vector<TdoaDistanceDifference>* out,
                   std::uint64_t* implausible = nullptr) const;
 

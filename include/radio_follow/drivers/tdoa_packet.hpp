@@ -37,6 +37,8 @@ enum class TdoaDecodeError : std::uint8_t {
   kTlvOverrun,          ///< A TLV's length runs past the declared length.
   kTlvTooShort,     ///< A known TLV is shorter than its fixed fields, or a MAC is not 5..16 bytes.
   kLengthMismatch,  ///< Bytes are left over after the declared TLV count.
+  kImplausible,     ///< Decodes, but the quality TLV's RSSI or first-path power is outside
+                    ///< [-127, 0] dBm (plausibility.hpp): a corrupted or faulty report.
   kCount,
 };
 

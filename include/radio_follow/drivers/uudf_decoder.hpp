@@ -24,9 +24,11 @@ struct UudfEvent {
 
 /// What a line turned out to be.
 enum class UudfLineStatus {
-  kEvent,      ///< `out` holds a decoded event
-  kIgnored,    ///< blank, `OK`, AT echo, `+UUDFP:` advertising data, other URCs
-  kMalformed,  ///< starts like `+UUDF:` but does not decode (cut, merged, bad field)
+  kEvent,        ///< `out` holds a decoded event
+  kIgnored,      ///< blank, `OK`, AT echo, `+UUDFP:` advertising data, other URCs
+  kMalformed,    ///< starts like `+UUDF:` but does not decode (cut, merged, bad field)
+  kImplausible,  ///< decodes, but an RSSI or angle is outside what the board can report
+                 ///< (plausibility.hpp): a corrupted line or a faulty device
 };
 
 /// Short name of a status, for logs and diagnostics.
@@ -34,8 +36,10 @@ const char* toString(UudfLineStatus status);
 
 /// Decodes `+UUDF:<tag>,<rssi>,<azimuth>,<elevation>,<rssi2 or reserved>,<channel>,
 /// "<anchor>","<user string>",<timestamp_ms>[,<event counter>]` (degrees in, radians
-/// out). Quoted fields end at the next quote, so they may contain commas. A rejected
-/// line leaves `out` unspecified. `out` is reused to avoid allocations.
+/// out). Quoted fields end at the next quote, so they may contain commas. RSSI must be
+/// in [-127, 0] dBm (the second one may be the reserved 0), azimuth and elevation in
+/// [-90, 90] deg, else kImplausible. A rejected line leaves `out` unspecified. `out` is
+/// reused to avoid allocations.
 UudfLineStatus decodeUudfLine(std::string_view line, UudfEvent& out);
 
 }  // namespace radio_follow::drivers

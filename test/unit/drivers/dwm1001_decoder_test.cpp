@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "radio_follow/drivers/line_framer.hpp"
@@ -120,9 +121,7 @@ TEST(Dwm1001Decoder, RejectsTruncatedMergedAndInconsistentLines) {
       "DIST,2,AN0,1151,5.00,8.00,2.25,6.48,AN2,0CA8,0.00,8.00,2.25,6.51",  // AN index gap
       "DIST,1,AN0,1151,5.00,8.00,2.25,6.48,",                              // trailing empty field
       "POS,2.57,1.98,1.68",                                                // lep without quality
-      "POS,2.57,1.98,1.68,101",                                            // quality out of range
       "POS,nan,1.98,1.68,100",                                             // not finite
-      "1151[5.00,8.00,2.25]=-6.48",                                        // negative range
       "1151[5.00,8.00]=6.48",                                              // two coordinates
       "115[5.00,8.00,2.25]=6.48",                                          // 3-digit ID
       "le_us=2576 1151[5.00,8.00,2.25]=6.48",                              // anchors after le_us
@@ -135,6 +134,70 @@ TEST(Dwm1001Decoder, RejectsTruncatedMergedAndInconsistentLines) {
         << line << " -> " << toString(status);
   }
   EXPECT_EQ(decodeDwmLine("DIST,3,AN0,1151,5.00,8.00,2.25,6.48", m), DwmLineStatus::kCountMismatch);
+}
+
+// A long plain number as a device may print it: `digits` digits, then ".00".
+std::string plainNumber(std::size_t digits) {
+  return "1" + std::string(digits - 1, '0') + ".00";
+}
+
+// Well-formed lines carrying a value no module can report: each is rejected as
+// implausible (not malformed), and the next good line on the same output still decodes.
+TEST(Dwm1001Decoder, RejectsImplausibleValuesAndRecovers) {
+  const std::string lec_head = "DIST,2,AN0,1151,5.00,8.00,2.25,";
+  const std::string lec_tail = ",AN1,0CA8,0.00,8.00,2.25,6.51,POS,2.57,1.98,1.68,100";
+  const std::vector<std::pair<std::string, std::string>> implausible = {
+      {lec_head + plainNumber(155) + lec_tail, "range 1e154 as 155 plain digits"},
+      {lec_head + "300.01" + lec_tail, "range just beyond 300 m"},
+      {lec_head + "-6.48" + lec_tail, "negative range"},
+      {lec_head + "-0.01" + lec_tail, "slightly negative range"},
+      {"DIST,1,AN0,1151,10000.01,8.00,2.25,6.48", "anchor x beyond 10 km"},
+      {"DIST,1,AN0,1151,5.00,-25000.00,2.25,6.48", "anchor y beyond -10 km"},
+      {"DIST,1,AN0,1151,5.00,8.00," + plainNumber(40) + ",6.48", "anchor z 1e39"},
+      {"DIST,1,AN0,1151,5.00,8.00,2.25,6.48,POS,12000.00,1.98,1.68,100", "position x"},
+      {"DIST,1,AN0,1151,5.00,8.00,2.25,6.48,POS,2.57,1.98,1.68,101", "lec quality 101"},
+      {"POS,2.57,1.98,1.68,101", "lep quality 101"},
+      {"POS,2.57,1.98,1.68,-1", "lep quality -1"},
+      {"POS,2.57,-" + plainNumber(20) + ",1.68,100", "lep position y -1e19"},
+      {"1151[5.00,8.00,2.25]=" + plainNumber(155) + " le_us=2576 est[2.57,1.98,1.68,100]",
+       "les range 1e154"},
+      {"1151[5.00,8.00,2.25]=-6.48", "les negative range"},
+      {"1151[5.00,8.00,2.25]=512.00 le_us=2576", "les range 512 m"},
+      {"1151[5.00,8.00,99999.00]=6.48", "les anchor z 100 km"},
+      {"1151[5.00,8.00,2.25]=6.48 le_us=2576 est[2.57,1.98,1.68,255]", "les quality 255"},
+      {"1151[5.00,8.00,2.25]=6.48 le_us=2576 est[2.57,1.98,-10000.50,100]", "les est z"},
+  };
+  DwmMeasurement m;
+  for (const auto& [line, what] : implausible) {
+    EXPECT_EQ(decodeDwmLine(line, m), DwmLineStatus::kImplausible) << what << ": " << line;
+    ASSERT_EQ(decodeDwmLine(kLec, m), DwmLineStatus::kMeasurement) << "after " << what;
+    expectThesisRanges(m);
+  }
+  EXPECT_STREQ(toString(DwmLineStatus::kImplausible), "implausible value");
+}
+
+TEST(Dwm1001Decoder, AcceptsValuesAtThePlausibilityBounds) {
+  DwmMeasurement m;
+  ASSERT_EQ(decodeDwmLine("DIST,2,AN0,1151,10000.00,-10000.00,0.00,300.00,AN1,0CA8,0.00,8.00,"
+                          "2.25,0.00,POS,-10000.00,10000.00,0.00,0",
+                          m),
+            DwmLineStatus::kMeasurement);
+  EXPECT_DOUBLE_EQ(m.ranges[0].range, 300.0);
+  EXPECT_DOUBLE_EQ(m.ranges[1].range, 0.0);
+  EXPECT_DOUBLE_EQ(m.ranges[0].y, -10000.0);
+  EXPECT_EQ(m.position.quality, 0);
+}
+
+// A cut line stays malformed even when the part that survived holds an absurd value:
+// structure is judged first.
+TEST(Dwm1001Decoder, StructureIsJudgedBeforeValues) {
+  DwmMeasurement m;
+  EXPECT_EQ(decodeDwmLine("DIST,3,AN0,1151,5.00,8.00,2.25,-6.48", m),
+            DwmLineStatus::kCountMismatch);
+  EXPECT_EQ(decodeDwmLine("POS,2.57,1.98,1.68,101,", m), DwmLineStatus::kMalformed);
+  EXPECT_EQ(decodeDwmLine("POS,2.57,1.98,1.68,+5", m), DwmLineStatus::kMalformed);
+  EXPECT_EQ(decodeDwmLine("POS,2.57,1.98,1.68," + std::string(30, '9'), m),
+            DwmLineStatus::kMalformed);  // does not even fit an integer
 }
 
 // Every real line, split into two chunks at every byte boundary, must come out of the

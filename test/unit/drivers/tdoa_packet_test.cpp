@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "radio_follow/drivers/tdoa_packet_builder.hpp"
@@ -203,6 +204,33 @@ TEST(TdoaPacket, RejectsBytesLeftOverAfterTheTlvs) {
   TdoaReport r;
   EXPECT_EQ(decode(TdoaPacketBuilder(1, 0).timestamp(5).tlvCountField(0).build(), &r),
             TdoaDecodeError::kLengthMismatch);
+}
+
+// The quality TLV's powers must be ones a DW1000 can report (plausibility.hpp); a report
+// with an impossible one is rejected whole, and the next good report still decodes.
+TEST(TdoaPacket, RejectsImplausibleQualityAndRecovers) {
+  const auto withQuality = [](double rssi, double first_path) {
+    return TdoaPacketBuilder(0x2001, 42)
+        .mac(0x5A84)
+        .timestamp(0x1234567890ULL)
+        .quality(rssi, first_path, 3, 36.5)
+        .build();
+  };
+  TdoaReport r;
+  for (const auto& [rssi, first_path] : std::vector<std::pair<double, double>>{
+           {12.5, -90.5}, {-81.25, 0.01}, {-127.01, -90.5}, {-81.25, -327.68}, {327.67, -1.0}}) {
+    EXPECT_EQ(decode(withQuality(rssi, first_path), &r), TdoaDecodeError::kImplausible)
+        << rssi << " / " << first_path << " dBm";
+    ASSERT_EQ(decode(fullPacket(), &r), TdoaDecodeError::kOk);
+    EXPECT_DOUBLE_EQ(r.rssi_dbm, -81.25);
+    EXPECT_EQ(r.tag, 0x5A84);
+  }
+  EXPECT_EQ(decode(withQuality(-127.0, 0.0), &r), TdoaDecodeError::kOk);  // the bounds
+  EXPECT_STREQ(toString(TdoaDecodeError::kImplausible), "implausible_value");
+  // Structure first: a truncated packet with an absurd power is truncated, not implausible.
+  Bytes cut = withQuality(12.5, -90.5);
+  cut.resize(cut.size() - 1);
+  EXPECT_EQ(decode(cut, &r), TdoaDecodeError::kLengthBeyondPacket);
 }
 
 TEST(TdoaPacket, ErrorNamesAreDistinct) {

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "radio_follow/common/param_error.hpp"
@@ -135,6 +136,52 @@ TEST(TdoaReceiver, DiscardsPhysicallyImpossibleDifference) {
   EXPECT_EQ(receiver.stats().implausible_differences, 1u);
 }
 
+// However far apart the anchors are configured, a difference beyond 300 m (two anchors
+// that cannot both be within UWB range of the tag) is discarded and counted, and the
+// blink's other difference is still published.
+TEST(TdoaReceiver, DiscardsDifferenceBeyondThePhysicalBound) {
+  TdoaDifferenceConfig c;
+  c.anchors = {{"origin", 0x2000, {0.0, 0.0, 0.0}},
+               {"far", 0x2001, {1000.0, 0.0, 0.0}},
+               {"near", 0x2002, {0.0, 200.0, 0.0}}};
+  TdoaReceiver receiver(c, 0.05);
+  const Eigen::Vector3d tag(150.0, 0.0, 0.0);  // "far": 850 - 150 = 700 m; "near": 100 m
+  std::vector<TdoaBlink> out;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const auto bytes = report(c, i, 1, 1, rxTicks(c, i, tag, 3.0));
+    receiver.onDatagram(bytes.data(), bytes.size(), 1.0, &out);
+  }
+  ASSERT_EQ(out.size(), 1u);
+  ASSERT_EQ(out[0].differences.size(), 1u);
+  EXPECT_EQ(out[0].differences[0].anchor_a, 2u);
+  EXPECT_NEAR(out[0].differences[0].distance_difference, 100.0, kTickMetres);
+  EXPECT_EQ(receiver.stats().implausible_differences, 1u);
+}
+
+// Reports with an impossible quality TLV are counted under their own decode error, and
+// the blink is still formed from the good ones.
+TEST(TdoaReceiver, CountsImplausibleReportsAndKeepsGoing) {
+  const TdoaDifferenceConfig c = layout();
+  TdoaReceiver receiver(c, 0.05);
+  const Eigen::Vector3d tag(1.0, 1.0, 0.0);
+  std::vector<TdoaBlink> out;
+  const auto bad = TdoaPacketBuilder(c.anchors[1].address, 1)
+                       .mac(1)
+                       .timestamp(rxTicks(c, 1, tag, 2.0))
+                       .quality(25.0, -90.0, 0, 30.0)
+                       .build();
+  EXPECT_EQ(receiver.onDatagram(bad.data(), bad.size(), 1.0, &out), TdoaDecodeError::kImplausible);
+  for (std::size_t i = 0; i < 3; ++i) {
+    const auto bytes = report(c, i, 1, 1, rxTicks(c, i, tag, 2.0));
+    receiver.onDatagram(bytes.data(), bytes.size(), 1.0, &out);
+  }
+  ASSERT_EQ(out.size(), 1u);
+  checkBlink(c, out[0], tag);
+  EXPECT_EQ(receiver.stats().decode_errors[static_cast<std::size_t>(TdoaDecodeError::kImplausible)],
+            1u);
+  EXPECT_EQ(receiver.stats().rejected(), 1u);
+}
+
 TEST(TdoaReceiver, CountsEveryRejectionAndKeepsGoing) {
   const TdoaDifferenceConfig c = layout();
   TdoaReceiver receiver(c, 0.05);
@@ -175,6 +222,13 @@ TEST(TdoaReceiver, ConfigurationIsValidated) {
   EXPECT_THROW(TdoaReceiver(c, 0.05), ParamError);
   c = layout();
   c.distance_variance = 0.0;
+  EXPECT_THROW(TdoaReceiver(c, 0.05), ParamError);
+  c.distance_variance = std::nan("");
+  EXPECT_THROW(TdoaReceiver(c, 0.05), ParamError);
+  c = layout();
+  c.anchors[1].position.y() = -20000.0;  // beyond 10 km: not a UWB network
+  EXPECT_THROW(TdoaReceiver(c, 0.05), ParamError);
+  c.anchors[1].position.y() = std::numeric_limits<double>::infinity();
   EXPECT_THROW(TdoaReceiver(c, 0.05), ParamError);
   c = layout();
   c.min_anchors = 4;

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "radio_follow/common/angles.hpp"
@@ -77,7 +78,6 @@ TEST(UudfDecoder, RejectsBrokenEvents) {
       "+UUDF:CCF9578E0D8A,-42,20,0,-43,37,\"CCF9578E0D89\",\"\"",       // no timestamp
       "+UUDF:CCF9578E0D8,-42,20,0,-43,37,\"CCF9578E0D89\",\"\",15869",  // 11-digit tag
       "+UUDF:CCF9578E0D8A,-42,x,0,-43,37,\"CCF9578E0D89\",\"\",15869",  // bad azimuth
-      "+UUDF:CCF9578E0D8A,-42,200,0,-43,37,\"A\",\"\",15869",           // azimuth > 180
       "+UUDF:CCF9578E0D8A,-42,20,0,-43,40,\"A\",\"\",15869",            // channel 40
       "+UUDF:CCF9578E0D8A,-42,20,0,-43,37,CCF9578E0D89,\"\",15869",     // unquoted anchor
       "+UUDF:CCF9578E0D8A,-42,20,0,-43,37,\"CCF9578E0D89,\"\",15869",   // quote lost
@@ -89,6 +89,66 @@ TEST(UudfDecoder, RejectsBrokenEvents) {
   for (const std::string& line : bad) {
     EXPECT_EQ(decodeUudfLine(line, e), UudfLineStatus::kMalformed) << line;
   }
+}
+
+// The thesis line with one field replaced (0-based index after the prefix: 1 = RSSI,
+// 2 = azimuth, 3 = elevation, 4 = second RSSI).
+std::string thesisWith(std::size_t field, const std::string& value) {
+  std::vector<std::string> fields = {"CCF9578E0D8A", "-42", "20", "0", "-43", "37"};
+  fields[field] = value;
+  std::string line = "+UUDF:";
+  for (const std::string& f : fields) {
+    line += f + ",";
+  }
+  return line + "\"CCF9578E0D89\",\",\",15869,23";
+}
+
+// Well-formed events carrying values the board cannot report are rejected as implausible,
+// and the next good event still decodes.
+TEST(UudfDecoder, RejectsImplausibleValuesAndRecovers) {
+  const std::vector<std::pair<std::string, std::string>> implausible = {
+      {thesisWith(1, "-128"), "RSSI below -127 dBm"},
+      {thesisWith(1, "3"), "positive RSSI"},
+      {thesisWith(1, "-1" + std::string(154, '0')), "RSSI -1e154 as plain digits"},
+      {thesisWith(2, "91"), "azimuth 91 deg"},
+      {thesisWith(2, "-90.5"), "azimuth -90.5 deg"},
+      {thesisWith(2, "200"), "azimuth 200 deg"},
+      {thesisWith(3, "95"), "elevation 95 deg"},
+      {thesisWith(3, "-180"), "elevation -180 deg"},
+      {thesisWith(4, "-300"), "second RSSI -300 dBm"},
+      {thesisWith(4, "12"), "positive second RSSI"},
+  };
+  UudfEvent e;
+  for (const auto& [line, what] : implausible) {
+    EXPECT_EQ(decodeUudfLine(line, e), UudfLineStatus::kImplausible) << what << ": " << line;
+    ASSERT_EQ(decodeUudfLine(kThesis, e), UudfLineStatus::kEvent) << "after " << what;
+    EXPECT_DOUBLE_EQ(e.azimuth, deg2rad(20.0));
+    EXPECT_DOUBLE_EQ(e.rssi, -42.0);
+  }
+  EXPECT_STREQ(toString(UudfLineStatus::kImplausible), "implausible value");
+}
+
+TEST(UudfDecoder, AcceptsValuesAtThePlausibilityBounds) {
+  UudfEvent e;
+  ASSERT_EQ(decodeUudfLine("+UUDF:CCF9578E0D8A,-127,90,-90,0,37,\"A\",\"\",15869,23", e),
+            UudfLineStatus::kEvent);
+  EXPECT_DOUBLE_EQ(e.rssi, -127.0);
+  EXPECT_DOUBLE_EQ(e.azimuth, deg2rad(90.0));
+  EXPECT_DOUBLE_EQ(e.elevation, deg2rad(-90.0));
+  EXPECT_TRUE(std::isnan(e.rssi_second));  // 0 is the reserved field, not a reading
+  ASSERT_EQ(decodeUudfLine("+UUDF:CCF9578E0D8A,0,-90,90,-127,37,\"A\",\"\",15869,23", e),
+            UudfLineStatus::kEvent);
+  EXPECT_DOUBLE_EQ(e.rssi_second, -127.0);
+}
+
+// A cut or merged line stays malformed even if a surviving field is absurd.
+TEST(UudfDecoder, StructureIsJudgedBeforeValues) {
+  UudfEvent e;
+  const std::string bad = thesisWith(2, "500");
+  // Without its counter it is still a whole (nine-field) event: judged on its values.
+  EXPECT_EQ(decodeUudfLine(bad.substr(0, bad.size() - 3), e), UudfLineStatus::kImplausible);
+  EXPECT_EQ(decodeUudfLine(bad + ",7", e), UudfLineStatus::kMalformed);
+  EXPECT_EQ(decodeUudfLine(bad.substr(0, 30), e), UudfLineStatus::kMalformed);
 }
 
 TEST(UudfDecoder, SplitAtEveryByteThroughFramer) {
