@@ -50,10 +50,10 @@ void BM_SafetyEvaluate(benchmark::State& state) {
   double t = 0.0;
   for (auto _ : state) {
     t += 0.01;
-    monitor.onRange(t, "uwb_ranges/a", 3.0);
-    monitor.onRange(t, "uwb_ranges/b", 3.1);
-    monitor.onRange(t, "uwb_ranges/c", 2.9);
-    monitor.onEstimate(t, true);
+    monitor.onRange(t, t, "uwb_ranges/a", 3.0);
+    monitor.onRange(t, t, "uwb_ranges/b", 3.1);
+    monitor.onRange(t, t, "uwb_ranges/c", 2.9);
+    monitor.onEstimate(t, t, true);
     benchmark::DoNotOptimize(monitor.evaluate(t));
   }
 }

@@ -17,7 +17,10 @@ FollowerState stateFor(StopReason reason) {
     case StopReason::kEstimateStale:
     case StopReason::kTargetLost:
     case StopReason::kRangesSilent:
+    case StopReason::kFutureStamp:
       return FollowerState::kTargetLost;
+    case StopReason::kClockJumped:
+      return FollowerState::kWaitingForTarget;
   }
   return FollowerState::kTargetLost;
 }
@@ -38,6 +41,10 @@ std::string stopText(StopReason reason) {
       return "Target lost, stopping.";
     case StopReason::kRangesSilent:
       return "No range to the target, stopping.";
+    case StopReason::kFutureStamp:
+      return "Clock mismatch, a message from the future, stopping.";
+    case StopReason::kClockJumped:
+      return "Clock jumped back, starting over.";
   }
   return "Stopping.";
 }

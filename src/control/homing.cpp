@@ -154,6 +154,10 @@ double homingErrorMetric(const Eigen::Vector2d& parallax, const Eigen::Vector2d&
 }
 
 void HybridHoming::update(const Eigen::Vector2d& robot, double bearing, double distance) {
+  if (!robot.allFinite() || !std::isfinite(bearing)) {
+    ++refused_;  // one NaN would stay in the parallax estimate and every goal after it
+    return;
+  }
   bool vector_outlier = true;
   if (std::isfinite(distance) && distance > 0.0) {
     const Eigen::Vector2d raw = VectorEstimator::rawGoal(robot, bearing, distance);

@@ -12,14 +12,24 @@ namespace radio_follow {
 namespace control {
 
 void SafetyParams::validate() const {
-  require(std::isfinite(safe_distance) && safe_distance >= 0.0, "~safe_distance", safe_distance,
-          "a distance >= 0 in metres");
-  require(std::isfinite(estimate_timeout) && estimate_timeout > 0.0, "~estimate_timeout",
-          estimate_timeout, "a timeout > 0 in seconds");
-  require(std::isfinite(range_timeout) && range_timeout > 0.0, "~range_timeout", range_timeout,
-          "a timeout > 0 in seconds");
-  require(std::isfinite(hold_time) && hold_time >= 0.0, "~hold_time", hold_time,
-          "a time >= 0 in seconds");
+  // Physical bounds, not just signs: a stop distance below a UWB module's own error (a
+  // few cm, Table 3.1) is no stop at all, and a freshness timeout of minutes means a
+  // dead sensor keeps the robot driving on its last word.
+  require(std::isfinite(safe_distance) && safe_distance >= kMinSafeDistance &&
+              safe_distance <= kMaxSafeDistance,
+          "~safe_distance", safe_distance,
+          "a distance in [" + paramValueString(kMinSafeDistance) + ", " +
+              paramValueString(kMaxSafeDistance) + "] m");
+  require(std::isfinite(estimate_timeout) && estimate_timeout > 0.0 &&
+              estimate_timeout <= kMaxFreshnessTimeout,
+          "~estimate_timeout", estimate_timeout,
+          "a timeout in (0, " + paramValueString(kMaxFreshnessTimeout) + "] s");
+  require(
+      std::isfinite(range_timeout) && range_timeout > 0.0 && range_timeout <= kMaxFreshnessTimeout,
+      "~range_timeout", range_timeout,
+      "a timeout in (0, " + paramValueString(kMaxFreshnessTimeout) + "] s");
+  require(std::isfinite(hold_time) && hold_time >= 0.0 && hold_time <= kMaxHoldTime, "~hold_time",
+          hold_time, "a time in [0, " + paramValueString(kMaxHoldTime) + "] s");
 }
 
 SafetyMonitor::SafetyMonitor(const SafetyParams& params) : params_(params) {}
@@ -29,24 +39,57 @@ void SafetyMonitor::setParams(const SafetyParams& params) {
   params_ = params;
 }
 
-bool SafetyMonitor::onRange(double time, const std::string& source, double range) {
-  // A NaN range cannot prove the target is far away: it counts as a violation.
+void SafetyMonitor::block(double now, StopReason reason) {
+  blocked_once_ = true;
+  last_block_time_ = std::max(last_block_time_, now);
+  last_block_reason_ = reason;
+}
+
+void SafetyMonitor::observe(double now) {
+  if (!time_.jumpedBack(now)) {
+    return;
+  }
+  // Every stored stamp is now "in the future" of the new clock: keeping them would freeze
+  // the monitor (nothing newer ever arrives) or trust them for as long as they lead.
+  ranges_.clear();
+  has_estimate_ = false;
+  estimate_usable_ = false;
+  last_block_time_ = now;
+  blocked_once_ = true;
+  last_block_reason_ = StopReason::kClockJumped;
+}
+
+bool SafetyMonitor::onRange(double stamp, double now, const std::string& source, double range) {
+  observe(now);
+  if (time_.check(stamp, now) == TimePolicy::Verdict::kFuture) {
+    block(now, StopReason::kFutureStamp);
+    return true;
+  }
+  // A NaN range cannot prove the target is far away: it counts as a violation. A stale
+  // one too: it says the person was close, and the hold runs from when we heard it.
   const bool violation = !(range >= params_.safe_distance);
-  ranges_[source] = {time, range};
   if (violation) {
-    blocked_once_ = true;
-    last_block_time_ = std::max(last_block_time_, time);
-    last_block_reason_ = StopReason::kTooClose;
+    block(now, StopReason::kTooClose);
+  }
+  const auto it = ranges_.find(source);
+  if (it == ranges_.end() || stamp >= it->second.first) {
+    ranges_[source] = {stamp, range};
   }
   return violation;
 }
 
-void SafetyMonitor::onEstimate(double stamp, bool usable) {
+bool SafetyMonitor::onEstimate(double stamp, double now, bool usable) {
+  observe(now);
+  if (time_.check(stamp, now) == TimePolicy::Verdict::kFuture) {
+    block(now, StopReason::kFutureStamp);
+    return false;
+  }
   if (!has_estimate_ || stamp >= estimate_stamp_) {
     has_estimate_ = true;
     estimate_stamp_ = stamp;
     estimate_usable_ = usable;
   }
+  return true;
 }
 
 double SafetyMonitor::nearestRange(double now) const {
@@ -91,6 +134,7 @@ StopReason SafetyMonitor::rawReason(double now) {
 }
 
 SafetyDecision SafetyMonitor::evaluate(double now) {
+  observe(now);
   if (!enabled_) {
     return {false, StopReason::kDisabled};
   }
@@ -98,9 +142,7 @@ SafetyDecision SafetyMonitor::evaluate(double now) {
   if (reason != StopReason::kNone) {
     // Waiting for a first estimate is not a hazard that needs a hold afterwards.
     if (reason != StopReason::kNoEstimateYet) {
-      blocked_once_ = true;
-      last_block_time_ = std::max(last_block_time_, now);
-      last_block_reason_ = reason;
+      block(now, reason);
     }
     return {false, reason};
   }

@@ -18,6 +18,10 @@ void VelocityLawParams::validate() const {
   require(std::isfinite(closing_distance) && closing_distance > 0.0 &&
               closing_distance < follow_distance,
           "~closing_distance", closing_distance, "a distance in (0, follow_distance) in metres");
+  require(follow_distance - closing_distance >= safe_distance, "~follow_distance", follow_distance,
+          "at least safe_distance + closing_distance (" + paramValueString(safe_distance) + " + " +
+              paramValueString(closing_distance) +
+              " m): the law must stop the robot before the safety stop trips");
   require(std::isfinite(stop_margin) && stop_margin >= 0.0, "~stop_margin", stop_margin,
           "a distance >= 0 in metres");
   require(degraded_speed_factor >= 0.0 && degraded_speed_factor <= 1.0, "~degraded_speed_factor",
@@ -33,8 +37,8 @@ void VelocityLawParams::validate() const {
   angular.validate("~angular_pid");
 }
 
-double slowdownCap(double gap, double slowdown_distance, double closing_distance,
-                   double max_speed, double target_speed) {
+double slowdownCap(double gap, double slowdown_distance, double closing_distance, double max_speed,
+                   double target_speed) {
   const double v = std::clamp(std::isfinite(target_speed) ? target_speed : 0.0, 0.0, max_speed);
   if (std::isnan(gap)) {
     return 0.0;

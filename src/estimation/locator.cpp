@@ -128,7 +128,8 @@ bool Locator::setConfig(const LocatorConfig& config) {
 
 bool Locator::addRange(const std::string& module_id, double raw_range, double t) {
   const TwrModule* module = layout_.findTwrModule(module_id);
-  if (module == nullptr || !std::isfinite(raw_range) || raw_range <= 0.0 || !std::isfinite(t)) {
+  if (module == nullptr || !std::isfinite(raw_range) || raw_range <= 0.0 ||
+      raw_range > kMaxPlausibleRange || !std::isfinite(t)) {
     ++stats_.invalid_measurements;
     return false;
   }
@@ -162,7 +163,8 @@ bool Locator::addTdoa(const std::string& anchor_a, const std::string& anchor_b, 
                       double variance, double t) {
   const TdoaAnchor* a = layout_.findTdoaAnchor(anchor_a);
   const TdoaAnchor* b = layout_.findTdoaAnchor(anchor_b);
-  if (a == nullptr || b == nullptr || a == b || !std::isfinite(difference) || !std::isfinite(t)) {
+  if (a == nullptr || b == nullptr || a == b || !std::isfinite(difference) ||
+      std::abs(difference) > kMaxPlausibleRange || !std::isfinite(t)) {
     ++stats_.invalid_measurements;
     return false;
   }
@@ -196,6 +198,13 @@ bool Locator::fresh(Stamped& slot, double now) {
     ++stats_.stale_dropped;
     return false;
   }
+  if (time_.check(slot.t, now) == TimePolicy::Verdict::kFuture) {
+    // It would stay "fresh" for as long as it leads the clock (the estimate kept OK with
+    // no input at all); a clock mismatch must show as lost data, not as a frozen target.
+    slot.valid = false;
+    ++stats_.future_dropped;
+    return false;
+  }
   return true;
 }
 
@@ -210,6 +219,18 @@ LocatorEstimate Locator::lose(LocatorEstimate estimate) {
 
 LocatorEstimate Locator::update(double now) {
   ++stats_.updates;
+  if (time_.jumpedBack(now)) {
+    // Every slot and the filter's time are in the old clock's future: start over.
+    for (auto& slot : ranges_) {
+      slot.valid = false;
+    }
+    for (auto& slot : bearings_) {
+      slot.valid = false;
+    }
+    tdoas_.clear();
+    warm_.reset();
+    filter_.reset();
+  }
   LocatorEstimate out;
   out.solver_cost = std::numeric_limits<double>::quiet_NaN();
   ObservationSet obs;
@@ -303,7 +324,7 @@ LocatorEstimate Locator::update(double now) {
   stats_.last_solve_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   ++stats_.solves;
-  if (!result.success) {
+  if (!result.success || !result.position.allFinite()) {
     ++stats_.solver_failures;
     return lose(out);
   }
@@ -351,6 +372,10 @@ LocatorEstimate Locator::update(double now) {
   out.covariance.topLeftCorner(d, d) = filter_.positionCovariance();
   if (config_.planar) {
     out.position.z() = config_.height;
+  }
+  if (!out.position.allFinite() || !out.velocity.allFinite() || !out.covariance.allFinite()) {
+    ++stats_.non_finite;  // never hand a NaN to a controller; the next epoch starts cold
+    return lose(out);
   }
   return out;
 }

@@ -33,7 +33,7 @@ std::string findExecutable(const std::string& command) {
   return std::string();
 }
 
-void AnnouncerNode::Params::load(const ros::NodeHandle& pnh) {
+void AnnouncerNode::Params::load(const ParamReader& pnh) {
   loadStringList(pnh, "status_topics", status_topics);
   pnh.param("command", command, command);
   pnh.param("voice", voice, voice);
@@ -53,7 +53,7 @@ void AnnouncerNode::Params::validate() const {
 }
 
 AnnouncerNode::AnnouncerNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
-    : params_(loadValidated<Params>(private_nh)),
+    : params_(loadStrict<Params>(private_nh)),
       queue_(params_.repeat_interval, static_cast<std::size_t>(params_.max_queued)),
       executable_(findExecutable(params_.command)) {
   if (executable_.empty()) {

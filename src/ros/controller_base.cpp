@@ -10,6 +10,7 @@
 
 #include "radio_follow/FollowerStatus.h"
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/common/param_keys.hpp"
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/ros/controller_reconfigure.hpp"
 #include "radio_follow/ros/params.hpp"
@@ -26,15 +27,9 @@ void requestStop(int /*signal*/) {
   stop_requested = true;
 }
 
-std::string upper(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-  return s;
-}
-
 }  // namespace
 
-void ControllerCommonParams::load(const ros::NodeHandle& pnh) {
+void ControllerCommonParams::load(const ParamReader& pnh) {
   pnh.param("cmd_vel_topic", cmd_vel_topic, cmd_vel_topic);
   pnh.param("rate", rate, rate);
   pnh.param("start_enabled", start_enabled, start_enabled);
@@ -47,13 +42,13 @@ void ControllerCommonParams::load(const ros::NodeHandle& pnh) {
     target_anchor_id = layout.target_anchor_id;
     if (calibrate_ranges) {
       for (const TwrModule& module : layout.twr_modules) {
-        calibrated_modules[upper(module.id)] = module;
+        calibrated_modules[module.id] = module;  // normalised by the parser
       }
     }
   }
   loadStringList(pnh, "range_topics", range_topics);
   pnh.param("target_anchor_id", target_anchor_id, target_anchor_id);
-  target_anchor_id = upper(target_anchor_id);
+  target_anchor_id = normalizeId(target_anchor_id);
   pnh.param("use_scan", use_scan, use_scan);
   pnh.param("scan_timeout", scan_timeout, scan_timeout);
   pnh.param("safe_distance", safety.safe_distance, safety.safe_distance);
@@ -72,7 +67,7 @@ void ControllerCommonParams::load(const ros::NodeHandle& pnh) {
   pnh.param("avoidance/turn_rate", avoidance.turn_rate, avoidance.turn_rate);
 }
 
-void loadPidGains(const ros::NodeHandle& pnh, const std::string& ns, control::PidGains& gains) {
+void loadPidGains(const ParamReader& pnh, const std::string& ns, control::PidGains& gains) {
   pnh.param(ns + "/kp", gains.kp, gains.kp);
   pnh.param(ns + "/ki", gains.ki, gains.ki);
   pnh.param(ns + "/kd", gains.kd, gains.kd);
@@ -82,10 +77,10 @@ void loadPidGains(const ros::NodeHandle& pnh, const std::string& ns, control::Pi
 }
 
 void ControllerCommonParams::validate() const {
-  require(!cmd_vel_topic.empty(), "~cmd_vel_topic", cmd_vel_topic, "a topic name");
+  requireGraphName("~cmd_vel_topic", cmd_vel_topic);
   require(rate >= 1.0 && rate <= 200.0, "~rate", rate, "a rate in [1, 200] Hz");
   for (const auto& topic : range_topics) {
-    require(!topic.empty(), "~range_topics", topic, "non-empty topic names");
+    requireGraphName("~range_topics", topic);
   }
   require(scan_timeout > 0.0, "~scan_timeout", scan_timeout, "a timeout > 0 in seconds");
   // A calibration that moves the stop threshold far, or turns it around, is more likely a
@@ -95,8 +90,7 @@ void ControllerCommonParams::validate() const {
     const double shift = module.correctRange(d) - d;
     const double slope = (module.correctRange(d + 0.1) - module.correctRange(d)) / 0.1;
     require(std::abs(shift) <= kMaxSafetyCalibrationShift && slope > 0.5 && slope < 2.0,
-            "~layout_file twr_modules[" + id + "].calibration",
-            module.correctRange(d),
+            "~layout_file twr_modules[" + id + "].calibration", module.correctRange(d),
             "a corrected range at safe_distance (" + std::to_string(d) + " m) within " +
                 std::to_string(kMaxSafetyCalibrationShift) +
                 " m of it and a slope in (0.5, 2) there (or ~calibrate_ranges: false)");
@@ -110,12 +104,15 @@ ControllerBase::ControllerBase(ros::NodeHandle& nh, ros::NodeHandle& private_nh,
                                bool watch_ranges_default)
     : nh_(nh),
       private_nh_(private_nh),
+      params_in_(private_nh),
       common_([&] {
         ControllerCommonParams p;
         if (!watch_ranges_default) {
           p.range_topics.clear();
         }
-        p.load(private_nh);
+        allowTuning<ControllerTuningConfig>(params_in_);
+        params_in_.own("law");  // the follow law's live-tuning server (doc/live_tuning.md)
+        p.load(params_in_);
         p.safety.watch_ranges = !p.range_topics.empty();
         p.validate();
         return p;
@@ -123,14 +120,38 @@ ControllerBase::ControllerBase(ros::NodeHandle& nh, ros::NodeHandle& private_nh,
       monitor_(common_.safety),
       limiter_(common_.limits) {}
 
-ControllerBase::~ControllerBase() = default;
+ControllerBase::~ControllerBase() {
+  // The safety thread calls into this object: end it before any member goes.
+  range_subs_.clear();
+  if (safety_spinner_) {
+    safety_spinner_->stop();
+  }
+}
+
+void ControllerBase::requireKnownParams() {
+  params_in_.requireAllKnown();
+  params_checked_ = true;
+}
 
 void ControllerBase::start() {
+  if (!params_checked_) {
+    throw std::logic_error("ControllerBase::start() before requireKnownParams()");
+  }
   cmd_pub_ = nh_.advertise<geometry_msgs::Twist>(common_.cmd_vel_topic, 1);
   status_pub_ = private_nh_.advertise<FollowerStatus>("status", 10, true);
+  // The safety path has its own queue and thread: a range below safe_distance stops the
+  // robot however long an estimate callback or a TF lookup takes on the main queue.
   for (const auto& topic : common_.range_topics) {
-    range_subs_.push_back(nh_.subscribe<UwbRanges>(
-        topic, 10, [this, topic](const UwbRanges::ConstPtr& msg) { onRanges(topic, msg); }));
+    ros::SubscribeOptions options = ros::SubscribeOptions::create<UwbRanges>(
+        topic, kRangeQueueSize,
+        [this, topic](const UwbRanges::ConstPtr& msg) { onRanges(topic, msg); }, ros::VoidPtr(),
+        &safety_queue_);
+    options.transport_hints = ros::TransportHints().tcpNoDelay();
+    range_subs_.push_back(nh_.subscribe(options));
+  }
+  if (!range_subs_.empty()) {
+    safety_spinner_ = std::make_unique<ros::AsyncSpinner>(1, &safety_queue_);
+    safety_spinner_->start();
   }
   if (common_.use_scan) {
     scan_sub_ = nh_.subscribe("scan", 1, &ControllerBase::onScan, this);
@@ -146,6 +167,8 @@ void ControllerBase::start() {
 
   reconfigure_ =
       makeControllerReconfigure(private_nh_, common_, [this](const ControllerCommonParams& params) {
+        onCommonChange(params);  // the law checks the new limits first; throws to refuse
+        const std::lock_guard<std::mutex> lock(safety_mutex_);
         monitor_.setParams(params.safety);  // both validated by the caller: no partial update
         limiter_.setLimits(params.limits);
         common_ = params;
@@ -159,31 +182,48 @@ void ControllerBase::start() {
       nh_.createWallTimer(ros::WallDuration(0.05), &ControllerBase::onStopCheck, this);
 }
 
-void ControllerBase::noteEstimate(const ros::Time& stamp, bool usable) {
-  monitor_.onEstimate((stamp.isZero() ? ros::Time::now() : stamp).toSec(), usable);
+bool ControllerBase::noteEstimate(const ros::Time& stamp, bool usable) {
+  const ros::Time now = ros::Time::now();
+  const std::lock_guard<std::mutex> lock(safety_mutex_);
+  if (monitor_.onEstimate((stamp.isZero() ? now : stamp).toSec(), now.toSec(), usable)) {
+    return true;
+  }
+  ROS_WARN_THROTTLE(2.0, "%s: estimate stamped %.3f s ahead of this node's clock refused; stopping",
+                    ros::this_node::getName().c_str(), (stamp - now).toSec());
+  return false;
 }
 
 double ControllerBase::moduleGap(const ros::Time& now) const {
-  return monitor_.nearestRange(now.toSec()) - common_.safety.safe_distance;
+  const std::lock_guard<std::mutex> lock(safety_mutex_);
+  return monitor_.nearestRange(now.toSec()) - monitor_.params().safe_distance;
 }
 
 void ControllerBase::onRanges(const std::string& topic, const UwbRanges::ConstPtr& msg) {
-  const double stamp = (msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp).toSec();
+  // Safety thread. Time is read before the lock: the receive time of this message.
+  const ros::Time now = ros::Time::now();
+  const double stamp = (msg->header.stamp.isZero() ? now : msg->header.stamp).toSec();
+  const std::lock_guard<std::mutex> lock(safety_mutex_);
+  const std::uint64_t future_before = monitor_.time().futureRefused();
   bool violation = false;
   for (const auto& r : msg->ranges) {
-    if (!common_.target_anchor_id.empty() && upper(r.anchor_id) != common_.target_anchor_id) {
+    if (!common_.target_anchor_id.empty() && normalizeId(r.anchor_id) != common_.target_anchor_id) {
       continue;
     }
-    const auto module = common_.calibrated_modules.find(upper(msg->tag_id));
-    const double range = module == common_.calibrated_modules.end()
-                             ? r.range
-                             : module->second.correctRange(r.range);
-    violation |= monitor_.onRange(stamp, topic + "/" + msg->tag_id, range);
+    const auto module = common_.calibrated_modules.find(normalizeId(msg->tag_id));
+    const double range =
+        module == common_.calibrated_modules.end() ? r.range : module->second.correctRange(r.range);
+    violation |= monitor_.onRange(stamp, now.toSec(), topic + "/" + msg->tag_id, range);
+  }
+  const bool future = monitor_.time().futureRefused() != future_before;
+  if (future) {
+    ROS_WARN_THROTTLE(2.0, "%s: range on %s stamped %.3f s ahead of this node's clock refused",
+                      ros::this_node::getName().c_str(), topic.c_str(), stamp - now.toSec());
   }
   // Do not wait for the next tick: a person stepping in front of the robot must stop
-  // it within one range update.
-  if (violation && state_ != control::FollowerState::kDisabled) {
-    stopNow(control::StopReason::kTooClose);
+  // it within one range update. The law's own reset (onStopped) follows on the main
+  // thread at the next tick, which sees the same verdict.
+  if (violation && monitor_.enabled()) {
+    publishStopLocked(future ? control::StopReason::kFutureStamp : control::StopReason::kTooClose);
   }
 }
 
@@ -206,7 +246,10 @@ bool ControllerBase::onEnableService(std_srvs::SetBool::Request& req,
 }
 
 void ControllerBase::setEnabled(bool enabled) {
-  monitor_.setEnabled(enabled);
+  {
+    const std::lock_guard<std::mutex> lock(safety_mutex_);
+    monitor_.setEnabled(enabled);
+  }
   if (!enabled) {
     stopNow(control::StopReason::kDisabled);
   } else {
@@ -215,8 +258,13 @@ void ControllerBase::setEnabled(bool enabled) {
 }
 
 void ControllerBase::stopNow(control::StopReason reason) {
-  limiter_.reset();
   onStopped();
+  const std::lock_guard<std::mutex> lock(safety_mutex_);
+  publishStopLocked(reason);
+}
+
+void ControllerBase::publishStopLocked(control::StopReason reason) {
+  limiter_.reset();
   publishCommand(control::VelocityCommand{});
   publishStatus(control::stateFor(reason), control::stopText(reason));
 }
@@ -228,8 +276,7 @@ void ControllerBase::onStopCheck(const ros::WallTimerEvent& /*event*/) {
   shutting_down_ = true;
   timer_.stop();
   stop_check_timer_.stop();
-  monitor_.setEnabled(false);
-  stopNow(control::StopReason::kDisabled);
+  setEnabled(false);
   // Give the zero command time to leave the process before the connections close.
   ros::WallDuration(0.2).sleep();
   ros::shutdown();
@@ -245,7 +292,11 @@ void ControllerBase::onTick(const ros::TimerEvent& event) {
     dt = 1.0 / common_.rate;
   }
 
-  const control::SafetyDecision decision = monitor_.evaluate(now.toSec());
+  control::SafetyDecision decision;
+  {
+    const std::lock_guard<std::mutex> lock(safety_mutex_);
+    decision = monitor_.evaluate(now.toSec());
+  }
   if (!decision.may_move) {
     stopNow(decision.reason);
     ++stopped_ticks_;
@@ -267,9 +318,18 @@ void ControllerBase::onTick(const ros::TimerEvent& event) {
                         ros::this_node::getName().c_str(), common_.scan_timeout);
     }
   }
-  const control::VelocityCommand cmd = control::gateCommand(decision, limiter_.update(request, dt));
-  publishCommand(cmd);
-  publishStatus(out.state, out.text.empty() ? control::defaultText(out.state) : out.text);
+  {
+    // The law ran without the lock; a range that arrived meanwhile may have stopped the
+    // robot, so the verdict is taken again, at the time of publishing.
+    const std::lock_guard<std::mutex> lock(safety_mutex_);
+    decision = monitor_.evaluate(ros::Time::now().toSec());
+    if (decision.may_move) {
+      publishCommand(control::gateCommand(decision, limiter_.update(request, dt)));
+      publishStatus(out.state, out.text.empty() ? control::defaultText(out.state) : out.text);
+    } else {
+      publishStopLocked(decision.reason);
+    }
+  }
   diagnostics_.update();
 }
 
@@ -296,6 +356,7 @@ void ControllerBase::publishStatus(control::FollowerState state, const std::stri
 
 void ControllerBase::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
   using diagnostic_msgs::DiagnosticStatus;
+  const std::lock_guard<std::mutex> lock(safety_mutex_);
   const bool moving = state_ == control::FollowerState::kFollowing;
   status.summary(moving || state_ == control::FollowerState::kDisabled ||
                          state_ == control::FollowerState::kArrived
@@ -304,6 +365,8 @@ void ControllerBase::diagnose(diagnostic_updater::DiagnosticStatusWrapper& statu
                  status_text_);
   status.add("state", static_cast<int>(state_));
   status.add("stopped ticks", stopped_ticks_);
+  status.add("stamps from the future refused", monitor_.time().futureRefused());
+  status.add("clock jumps back", monitor_.time().clockJumps());
 }
 
 }  // namespace radio_follow

@@ -26,6 +26,12 @@ void DriverDiagnostics::tick(const ros::TimerEvent&) {
   if (previous_time_ > 0.0 && now > previous_time_) {
     rate_ = static_cast<double>(now_stats.messages - previous_.messages) / (now - previous_time_);
   }
+  dropping_ = now_stats.dropped > previous_.dropped;
+  if (dropping_) {
+    ROS_WARN_THROTTLE(5.0, "%s: publish queue full, %llu measurements dropped so far",
+                      ros::this_node::getName().c_str(),
+                      static_cast<unsigned long long>(now_stats.dropped));
+  }
   previous_ = now_stats;
   previous_time_ = now;
   if (now_stats.connected && now_stats.last_data_time > 0.0 &&
@@ -46,12 +52,17 @@ void DriverDiagnostics::produce(diagnostic_updater::DiagnosticStatusWrapper& sta
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "no data from the device");
   } else if (rate_ <= 0.0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "connected, no measurements");
+  } else if (dropping_) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "dropping measurements");
   } else {
     status.summary(diagnostic_msgs::DiagnosticStatus::OK, "streaming");
   }
   status.add("message rate (Hz)", rate_);
   status.add("messages published", s.messages);
+  status.add("messages dropped", s.dropped);
+  status.add("publish queue peak", s.queue_peak);
   status.add("lines rejected", s.rejected);
+  status.add("lines implausible", s.implausible);
   status.add("lines ignored", s.ignored);
   status.add("lines too long", s.overflows);
   status.add("measurements filtered", s.filtered);

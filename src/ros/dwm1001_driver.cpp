@@ -2,14 +2,26 @@
 #include "radio_follow/ros/dwm1001_driver.hpp"
 
 #include <cmath>
+#include <utility>
 
-#include "radio_follow/UwbRanges.h"
-#include "radio_follow/UwbTagLocation.h"
 #include "radio_follow/common/param_error.hpp"
 
 namespace radio_follow {
+namespace {
 
-void Dwm1001DriverNode::Params::load(const ros::NodeHandle& private_nh) {
+// Depth of the publish queue and of the roscpp publisher queue behind it (one burst has
+// to fit in each; a roscpp queue that overflows drops its oldest message without telling
+// anyone). The module sends at most 10 lines/s, its top update rate, with up to 15
+// anchors each; but a backlog arrives at once: whatever piled up in the host's tty buffers
+// (up to 640 KiB) while the reader or a subscriber was held up, or what a replugged
+// module had queued. 4096 lines are 400 s of the module's output; in the rostest
+// driver_burst (doc/nodes/dwm1001_driver.md) they absorb 200,000 lines at 20,000 lines/s
+// and bursts of 30 without a loss.
+constexpr std::size_t kQueueDepth = 4096;
+
+}  // namespace
+
+void Dwm1001DriverNode::Params::load(const ParamReader& private_nh) {
   private_nh.param("port", port, port);
   private_nh.param("baud", baud, baud);
   private_nh.param("configure", configure, configure);
@@ -40,13 +52,14 @@ void Dwm1001DriverNode::Params::validate() const {
 
 Dwm1001DriverNode::Dwm1001DriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
     : framer_(1024), shell_("lec", 2.0) {
-  params_.load(private_nh);
-  params_.validate();
+  params_ = loadStrict<Params>(private_nh);
   framer_ = drivers::LineFramer(static_cast<std::size_t>(params_.max_line_length));
   shell_ = drivers::Dwm1001Shell(params_.output_mode, params_.shell_timeout);
 
-  ranges_pub_ = nh.advertise<UwbRanges>("ranges", 20);
-  location_pub_ = nh.advertise<UwbTagLocation>("tag_location", 20);
+  ranges_pub_ = nh.advertise<UwbRanges>("ranges", kQueueDepth);
+  location_pub_ = nh.advertise<UwbTagLocation>("tag_location", kQueueDepth);
+  queue_ = std::make_unique<drivers::DeliveryQueue<Outgoing>>(
+      kQueueDepth, [this](Outgoing& out) { publish(out); });
   diagnostics_ = std::make_unique<DriverDiagnostics>(
       nh, private_nh, "dwm1001 " + params_.port, params_.port, stats_, params_.silence_timeout,
       [this](diagnostic_updater::DiagnosticStatusWrapper& status) {
@@ -82,6 +95,7 @@ Dwm1001DriverNode::~Dwm1001DriverNode() {
     transport_->write(stop);
   }
   transport_->stop();
+  queue_->stop();  // publishes what the I/O thread queued last
 }
 
 std::string Dwm1001DriverNode::frameId() const {
@@ -150,7 +164,7 @@ void Dwm1001DriverNode::onLine(std::string_view line, double stamp) {
       if (params_.configure && shell_.state() != drivers::Dwm1001Shell::State::kStreaming) {
         ++stats_.filtered;  // a stream left running from before; frame unknown yet
       } else {
-        publish(stamp);
+        enqueue(stamp);
       }
       break;
     case drivers::DwmLineStatus::kIgnored:
@@ -158,6 +172,9 @@ void Dwm1001DriverNode::onLine(std::string_view line, double stamp) {
       break;
     default:
       ++stats_.rejected;
+      if (status == drivers::DwmLineStatus::kImplausible) {
+        ++stats_.implausible;
+      }
       ROS_WARN_THROTTLE(5.0, "%s: rejected line (%s, %lu so far): '%.*s'",
                         ros::this_node::getName().c_str(), drivers::toString(status),
                         static_cast<unsigned long>(stats_.rejected.load()),
@@ -165,14 +182,15 @@ void Dwm1001DriverNode::onLine(std::string_view line, double stamp) {
   }
 }
 
-void Dwm1001DriverNode::publish(double stamp) {
+void Dwm1001DriverNode::enqueue(double stamp) {
   const ros::Time time(stamp);
-  const std::string tag_id = params_.configure ? shell_.tagId() : params_.tag_id;
-  if (!measurement_.ranges.empty()) {
-    UwbRanges msg;
+  Outgoing out;
+  out.has_ranges = !measurement_.ranges.empty();
+  if (out.has_ranges) {
+    UwbRanges& msg = out.ranges;
     msg.header.stamp = time;
     msg.header.frame_id = frameId();
-    msg.tag_id = tag_id;
+    msg.tag_id = params_.configure ? shell_.tagId() : params_.tag_id;
     msg.ranges.reserve(measurement_.ranges.size());
     for (const drivers::DwmAnchorRange& a : measurement_.ranges) {
       UwbRange r;
@@ -183,10 +201,10 @@ void Dwm1001DriverNode::publish(double stamp) {
       r.range = a.range;
       msg.ranges.push_back(r);
     }
-    ranges_pub_.publish(msg);
   }
-  if (measurement_.has_position) {
-    UwbTagLocation msg;
+  out.has_location = measurement_.has_position;
+  if (out.has_location) {
+    UwbTagLocation& msg = out.location;
     msg.header.stamp = time;
     msg.header.frame_id = params_.network_frame_id;
     msg.position.x = measurement_.position.x;
@@ -194,7 +212,19 @@ void Dwm1001DriverNode::publish(double stamp) {
     msg.position.z = measurement_.position.z;
     msg.quality = measurement_.position.quality;
     msg.computation_time_us = measurement_.computation_time_us;
-    location_pub_.publish(msg);
+  }
+  if (!queue_->push(std::move(out))) {
+    ++stats_.dropped;
+  }
+  stats_.queue_peak = queue_->peak();
+}
+
+void Dwm1001DriverNode::publish(Outgoing& out) {
+  if (out.has_ranges) {
+    ranges_pub_.publish(out.ranges);
+  }
+  if (out.has_location) {
+    location_pub_.publish(out.location);
   }
   ++stats_.messages;
 }

@@ -11,6 +11,7 @@
 #include <system_error>
 
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/ros/params.hpp"
 
 namespace radio_follow {
 namespace {
@@ -53,15 +54,17 @@ void FollowEvaluatorNode::Params::validate() const {
 
 FollowEvaluatorNode::FollowEvaluatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
     : metrics_(sim::FollowSettings{}) {
-  private_nh.param("report_dir", params_.report_dir, params_.report_dir);
-  private_nh.param("rate", params_.rate, params_.rate);
-  private_nh.param("write_period", params_.write_period, params_.write_period);
+  const ParamReader reader(private_nh);
+  reader.param("report_dir", params_.report_dir, params_.report_dir);
+  reader.param("rate", params_.rate, params_.rate);
+  reader.param("write_period", params_.write_period, params_.write_period);
   sim::FollowSettings& s = params_.settings;
-  private_nh.param("follow_distance", s.follow_distance, s.follow_distance);
-  private_nh.param("safe_distance", s.safe_distance, s.safe_distance);
-  private_nh.param("gap_tolerance", s.gap_tolerance, s.gap_tolerance);
-  private_nh.param("robot_max_speed", s.robot_max_speed, s.robot_max_speed);
-  private_nh.param("settle_time", s.settle_time, s.settle_time);
+  reader.param("follow_distance", s.follow_distance, s.follow_distance);
+  reader.param("safe_distance", s.safe_distance, s.safe_distance);
+  reader.param("gap_tolerance", s.gap_tolerance, s.gap_tolerance);
+  reader.param("robot_max_speed", s.robot_max_speed, s.robot_max_speed);
+  reader.param("settle_time", s.settle_time, s.settle_time);
+  reader.requireAllKnown();
   params_.validate();
   if (!params_.report_dir.empty()) {
     std::error_code error;

@@ -11,21 +11,13 @@
 
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/common/param_keys.hpp"
 
 namespace radio_follow {
-namespace {
 
-bool sameId(const std::string& a, const std::string& b) {
-  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-           return std::toupper(static_cast<unsigned char>(x)) ==
-                  std::toupper(static_cast<unsigned char>(y));
-         });
-}
-
-}  // namespace
-
-void HomingControllerNode::Params::load(const ros::NodeHandle& pnh) {
+void HomingControllerNode::Params::load(const ParamReader& pnh) {
   pnh.param("tag_id", tag_id, tag_id);
+  tag_id = normalizeId(tag_id);
   pnh.param("board_x", board_x, board_x);
   pnh.param("board_y", board_y, board_y);
   pnh.param("board_yaw", board_yaw, board_yaw);
@@ -55,8 +47,7 @@ void HomingControllerNode::Params::validate() const {
   require(std::isfinite(board_yaw), "~board_yaw", board_yaw, "a finite angle in rad");
   require(distance_source == "rssi" || distance_source == "uwb", "~distance_source",
           distance_source, "'rssi' or 'uwb'");
-  require(!distance_range_topic.empty(), "~distance_range_topic", distance_range_topic,
-          "a topic name");
+  requireGraphName("~distance_range_topic", distance_range_topic);
   require(distance_max_age > 0.0, "~distance_max_age", distance_max_age, "seconds > 0");
   require(odom_timeout > 0.0, "~odom_timeout", odom_timeout, "seconds > 0");
   require(search_speed >= 0.0, "~search_speed", search_speed, "a speed >= 0 in m/s");
@@ -68,13 +59,14 @@ HomingControllerNode::HomingControllerNode(ros::NodeHandle& nh, ros::NodeHandle&
     : ControllerBase(nh, private_nh, false),
       params_([&] {
         Params p;
-        p.load(private_nh);
+        p.load(params());
         p.homing.max_linear = common().limits.max_linear;
         p.homing.max_angular = common().limits.max_angular;
         p.validate();
         return p;
       }()),
       homing_(params_.homing) {
+  requireKnownParams();
   goal_pub_ = private_nh_.advertise<geometry_msgs::PoseStamped>("goal", 1, true);
   odom_sub_ = nh_.subscribe("odom", 10, &HomingControllerNode::onOdom, this);
   bearing_sub_ = nh_.subscribe("aoa_bearing", 20, &HomingControllerNode::onBearing, this);
@@ -86,18 +78,41 @@ HomingControllerNode::HomingControllerNode(ros::NodeHandle& nh, ros::NodeHandle&
 }
 
 void HomingControllerNode::onOdom(const nav_msgs::Odometry::ConstPtr& msg) {
+  const ros::Time now = ros::Time::now();
+  const ros::Time stamp = msg->header.stamp.isZero() ? now : msg->header.stamp;
   control::Pose2 pose;
   pose.x = msg->pose.pose.position.x;
   pose.y = msg->pose.pose.position.y;
   pose.yaw = tf2::getYaw(msg->pose.pose.orientation);
+  if (time_.jumpedBack(now.toSec())) {
+    resetTrack("the clock jumped back");
+  }
+  // One NaN pose would otherwise enter every later goal through the parallax estimate.
+  if (!std::isfinite(pose.x) || !std::isfinite(pose.y) || !std::isfinite(pose.yaw) ||
+      time_.check(stamp.toSec(), now.toSec()) == TimePolicy::Verdict::kFuture) {
+    ++odom_refused_;
+    ROS_WARN_THROTTLE(5.0, "%s: odometry refused (non-finite pose or stamp from the future)",
+                      ros::this_node::getName().c_str());
+    return;
+  }
   robot_ = pose;
-  odom_stamp_ = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;
+  odom_stamp_ = stamp;
   odom_frame_ = msg->header.frame_id;
+}
+
+void HomingControllerNode::resetTrack(const char* why) {
+  ROS_WARN("%s: %s, homing starts over", ros::this_node::getName().c_str(), why);
+  robot_.reset();
+  last_bearing_.reset();
+  uwb_stamp_ = ros::Time();
+  homing_ = control::HybridHoming(params_.homing);
 }
 
 void HomingControllerNode::onDistanceRanges(const UwbRanges::ConstPtr& msg) {
   for (const auto& r : msg->ranges) {
-    if (common().target_anchor_id.empty() || sameId(r.anchor_id, common().target_anchor_id)) {
+    if ((common().target_anchor_id.empty() ||
+         normalizeId(r.anchor_id) == common().target_anchor_id) &&
+        std::isfinite(r.range) && r.range >= 0.0) {
       uwb_distance_ = r.range;
       uwb_stamp_ = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;
     }
@@ -105,7 +120,7 @@ void HomingControllerNode::onDistanceRanges(const UwbRanges::ConstPtr& msg) {
 }
 
 void HomingControllerNode::onBearing(const AoaBearing::ConstPtr& msg) {
-  if (!params_.tag_id.empty() && !sameId(msg->tag_id, params_.tag_id)) {
+  if (!params_.tag_id.empty() && normalizeId(msg->tag_id) != params_.tag_id) {
     return;
   }
   const ros::Time stamp = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;

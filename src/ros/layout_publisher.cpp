@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/ros/params.hpp"
 
 namespace radio_follow {
 namespace {
@@ -116,8 +117,10 @@ visualization_msgs::MarkerArray layoutMarkers(const Layout& layout, double size,
 }
 
 LayoutPublisherNode::LayoutPublisherNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh) {
-  private_nh.param("layout_file", params_.layout_file, params_.layout_file);
-  private_nh.param("marker_size", params_.marker_size, params_.marker_size);
+  const ParamReader reader(private_nh);
+  reader.param("layout_file", params_.layout_file, params_.layout_file);
+  reader.param("marker_size", params_.marker_size, params_.marker_size);
+  reader.requireAllKnown();
   params_.validate();
   layout_ = loadLayoutFile(params_.layout_file);
 

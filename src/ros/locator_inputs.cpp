@@ -1,16 +1,23 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/ros/locator_inputs.hpp"
 
+#include "radio_follow/common/param_keys.hpp"
+
 namespace radio_follow {
 
 std::size_t LocatorInputs::add(const UwbRanges& msg) {
   // The module is named by its ID; drivers started without one still set their frame.
-  const std::string& module = msg.tag_id.empty() ? msg.header.frame_id : msg.tag_id;
+  // IDs compare normalised (upper case), as the layout parser stores them: a layout
+  // saying "da12" and a driver printing "DA12" mean the same anchor.
+  const std::string module = msg.tag_id.empty() ? msg.header.frame_id : normalizeId(msg.tag_id);
   std::size_t refused = 0;
   for (const auto& range : msg.ranges) {
-    if (range.anchor_id != locator_.layout().target_anchor_id) {
-      continue;  // another anchor of the UWB network, not the target
+    const std::string anchor = normalizeId(range.anchor_id);
+    if (anchor != locator_.layout().target_anchor_id) {
+      ++other_anchors_[anchor];  // another anchor of the UWB network, or a wrong layout
+      continue;
     }
+    ++target_ranges_;
     refused += !locator_.addRange(module, range.range, msg.header.stamp.toSec());
   }
   return refused;
@@ -18,7 +25,7 @@ std::size_t LocatorInputs::add(const UwbRanges& msg) {
 
 std::size_t LocatorInputs::add(const AoaBearing& msg) {
   const std::string& tag = locator_.layout().target_tag_id;
-  if (!tag.empty() && msg.tag_id != tag) {
+  if (!tag.empty() && normalizeId(msg.tag_id) != tag) {
     return 0;
   }
   return !locator_.addBearing(msg.header.frame_id, msg.azimuth, msg.elevation, msg.rssi,

@@ -35,8 +35,13 @@ TargetEstimate toMessage(const LocatorEstimate& estimate, const std::string& fra
 
 LocatorNode::LocatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
     : diagnostics_(nh, private_nh) {
-  params_.load(private_nh);
-  params_.validate();
+  {
+    const ParamReader params(private_nh);
+    allowTuning<LocatorTuningConfig>(params);  // the live-tuning server's own copies
+    params_.load(params);
+    params.requireAllKnown();
+    params_.validate();
+  }
   layout_ = loadLayoutFile(params_.layout_file);  // validated: target anchor set with TWR
   locator_ = std::make_unique<Locator>(layout_, params_.locator);
   inputs_ = std::make_unique<LocatorInputs>(*locator_);
@@ -79,6 +84,18 @@ void LocatorNode::onRanges(const UwbRanges::ConstPtr& msg) {
     ignored_messages_ += refused;
     ROS_WARN_THROTTLE(5.0, "locator: ignoring range from unknown module '%s' or invalid value",
                       (msg->tag_id.empty() ? msg->header.frame_id : msg->tag_id).c_str());
+  }
+  if (inputs_->targetRanges() == 0 && !inputs_->otherAnchors().empty()) {
+    // Ranges arrive, none to the target: a wrong target.uwb_anchor_id leaves the
+    // estimate LOST for good, so say which anchors are heard.
+    std::string heard;
+    for (const auto& [anchor, count] : inputs_->otherAnchors()) {
+      heard += (heard.empty() ? "" : ", ") + anchor;
+    }
+    ROS_WARN_THROTTLE(5.0,
+                      "locator: ranges to anchor(s) %s but none to the layout's target "
+                      "'%s' (target.uwb_anchor_id in %s)",
+                      heard.c_str(), layout_.target_anchor_id.c_str(), params_.layout_file.c_str());
   }
 }
 
@@ -176,6 +193,8 @@ void LocatorNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) 
   status.add("solves", s.solves);
   status.add("solver failures", s.solver_failures);
   status.add("stale measurements dropped", s.stale_dropped);
+  status.add("future-stamped measurements dropped", s.future_dropped);
+  status.add("non-finite epochs", s.non_finite);
   status.add("invalid measurements", s.invalid_measurements);
   status.add("bearings not selected", s.bearings_rejected_fov);
   status.add("filter gated", f.gatedCount());
@@ -183,6 +202,12 @@ void LocatorNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) 
   status.add("filter resets", f.resetCount());
   status.add("lost epochs", s.lost);
   status.add("ignored messages", ignored_messages_);
+  std::size_t other = 0;
+  for (const auto& entry : inputs_->otherAnchors()) {
+    other += entry.second;
+  }
+  status.add("ranges to the target anchor", inputs_->targetRanges());
+  status.add("ranges to other anchors", other);
   status.add("solve time mean (us)",
              solves_seen_ > 0 ? 1e6 * solve_seconds_sum_ / static_cast<double>(solves_seen_) : 0.0);
   status.add("solve time max (us)", 1e6 * solve_seconds_max_);

@@ -81,7 +81,7 @@ void LocatorNode::Params::load(const Source& nh) {
   nh.param("default_range", c.default_range, c.default_range);
 }
 
-template void LocatorNode::Params::load(const ros::NodeHandle&);
+template void LocatorNode::Params::load(const ParamReader&);
 template void LocatorNode::Params::load(const YamlParams&);
 
 void LocatorNode::Params::validate() const {

@@ -14,7 +14,7 @@
 
 namespace radio_follow {
 
-void PathFollowerNode::Params::load(const ros::NodeHandle& pnh) {
+void PathFollowerNode::Params::load(const ParamReader& pnh) {
   pnh.param("odom_frame", odom_frame, odom_frame);
   pnh.param("base_frame", base_frame, base_frame);
   pnh.param("path_spacing", path_spacing, path_spacing);
@@ -39,13 +39,14 @@ void PathFollowerNode::Params::validate() const {
 
 PathFollowerNode::PathFollowerNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
     : ControllerBase(nh, private_nh, true),
-      params_(loadValidated<Params>(private_nh)),
-      law_params_(loadVelocityLawParams(private_nh, common())),
+      params_(loadValidated<Params>(params())),
+      law_params_(loadVelocityLawParams(params(), common())),
       fallback_law_(law_params_),
       speed_pid_(law_params_.linear),
       path_(params_.path_spacing, static_cast<std::size_t>(params_.max_path_points)),
       tf_listener_(tf_buffer_),
       motion_(tf_buffer_, params_.odom_frame, params_.tf_timeout) {
+  requireKnownParams();
   path_pub_ = private_nh_.advertise<nav_msgs::Path>("path", 1, true);
   estimate_sub_ = nh_.subscribe("target", 5, &PathFollowerNode::onEstimate, this);
   law_reconfigure_ = makeFollowLawReconfigure(private_nh, law_params_,
@@ -58,6 +59,15 @@ PathFollowerNode::PathFollowerNode(ros::NodeHandle& nh, ros::NodeHandle& private
 }
 
 PathFollowerNode::~PathFollowerNode() = default;
+
+void PathFollowerNode::onCommonChange(const ControllerCommonParams& next) {
+  const control::VelocityLawParams p = control::VelocityLaw::withCommon(
+      law_params_, next.safety.safe_distance, next.limits.max_linear);
+  p.validate();
+  law_params_ = p;
+  fallback_law_.setParams(p);
+  speed_pid_.setGains(p.linear);
+}
 
 void PathFollowerNode::onStopped() {
   fallback_law_.reset();

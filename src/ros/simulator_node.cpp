@@ -35,7 +35,12 @@ geometry_msgs::Quaternion yawQuaternion(double yaw) {
 
 SimulatorNode::SimulatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
     : nh_(nh),
-      params_(loadSimulatorParams(private_nh)),
+      params_([&] {
+        const ParamReader params(private_nh);
+        SimulatorNode::Params p = loadSimulatorParams(params);
+        params.requireAllKnown();
+        return p;
+      }()),
       min_clearance_(std::numeric_limits<double>::infinity()),
       scan_rng_(params_.world.seed + 1) {
   layout_ = loadLayoutFile(params_.layout_file);

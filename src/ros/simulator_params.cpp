@@ -4,6 +4,8 @@
 
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/common/param_keys.hpp"
+#include "radio_follow/ros/params.hpp"
 #include "radio_follow/ros/simulator_node.hpp"
 
 namespace radio_follow {
@@ -21,10 +23,10 @@ double xmlNumber(XmlRpc::XmlRpcValue& v, const std::string& name) {
 
 /// `~twr_occlusions`: a list of {module, bearing_min_deg, bearing_max_deg, extra_range,
 /// probability}; see config/simulator.yaml.
-std::vector<sim::OcclusionSector> loadOcclusions(ros::NodeHandle& pnh) {
+std::vector<sim::OcclusionSector> loadOcclusions(const ParamReader& pnh) {
   std::vector<sim::OcclusionSector> sectors;
   XmlRpc::XmlRpcValue list;
-  if (!pnh.getParam("twr_occlusions", list)) {
+  if (!pnh.getRaw("twr_occlusions", list)) {
     return sectors;
   }
   if (list.getType() != XmlRpc::XmlRpcValue::TypeArray) {
@@ -38,6 +40,8 @@ std::vector<sim::OcclusionSector> loadOcclusions(ros::NodeHandle& pnh) {
       throw ParamError(name, item.toXml(),
                        "{module, bearing_min_deg, bearing_max_deg, extra_range, probability}");
     }
+    requireMembers(
+        item, {"module", "bearing_min_deg", "bearing_max_deg", "extra_range", "probability"}, name);
     sim::OcclusionSector s;
     if (item.hasMember("module")) {
       if (item["module"].getType() != XmlRpc::XmlRpcValue::TypeString) {
@@ -59,10 +63,10 @@ std::vector<sim::OcclusionSector> loadOcclusions(ros::NodeHandle& pnh) {
 }
 
 /// `~unplug`: a list of {device, at, duration} (serial mode only).
-std::vector<sim::UnplugFault> loadUnplugFaults(ros::NodeHandle& pnh) {
+std::vector<sim::UnplugFault> loadUnplugFaults(const ParamReader& pnh) {
   std::vector<sim::UnplugFault> faults;
   XmlRpc::XmlRpcValue list;
-  if (!pnh.getParam("unplug", list)) {
+  if (!pnh.getRaw("unplug", list)) {
     return faults;
   }
   if (list.getType() != XmlRpc::XmlRpcValue::TypeArray) {
@@ -76,6 +80,7 @@ std::vector<sim::UnplugFault> loadUnplugFaults(ros::NodeHandle& pnh) {
         !item.hasMember("duration")) {
       throw ParamError(name, item.toXml(), "{device: uwb_<id> | aoa_<id>, at: s, duration: s}");
     }
+    requireMembers(item, {"device", "at", "duration"}, name);
     faults.push_back(sim::UnplugFault{static_cast<std::string>(item["device"]),
                                       xmlNumber(item["at"], name + ".at"),
                                       xmlNumber(item["duration"], name + ".duration")});
@@ -107,7 +112,7 @@ void SimulatorNode::Params::validate() const {
           scan_rate, "a rate in (0, 100] Hz");
 }
 
-SimulatorNode::Params loadSimulatorParams(ros::NodeHandle& pnh) {
+SimulatorNode::Params loadSimulatorParams(const ParamReader& pnh) {
   SimulatorNode::Params p;
   pnh.param("layout_file", p.layout_file, p.layout_file);
   pnh.param("scenario_file", p.scenario_file, p.scenario_file);

@@ -4,6 +4,8 @@
 #include <tf2/exceptions.h>
 #include <tf2_geometry_msgs/tf2_geometry_msgs.h>
 
+#include <cmath>
+#include <string>
 #include <utility>
 
 namespace radio_follow {
@@ -19,8 +21,21 @@ std::optional<Eigen::Vector2d> TargetMotionTracker::add(const TargetEstimate& es
     return std::nullopt;  // a HEADING_ONLY position is a guess along the bearing
   }
   try {
-    const geometry_msgs::TransformStamped t = buffer_.lookupTransform(
-        odom_frame_, estimate.header.frame_id, estimate.header.stamp, tf_timeout_);
+    // Never wait (timeout 0): this runs in a callback. The transform at the stamp when
+    // TF has it, else the newest one if it is at most tf_timeout away from the stamp
+    // (odometry usually lags the estimate by a few ms).
+    geometry_msgs::TransformStamped t;
+    if (buffer_.canTransform(odom_frame_, estimate.header.frame_id, estimate.header.stamp)) {
+      t = buffer_.lookupTransform(odom_frame_, estimate.header.frame_id, estimate.header.stamp);
+    } else {
+      t = buffer_.lookupTransform(odom_frame_, estimate.header.frame_id, ros::Time(0));
+      const ros::Duration offset = t.header.stamp - estimate.header.stamp;
+      if (!(std::abs(offset.toSec()) <= tf_timeout_.toSec())) {
+        last_error_ = "newest transform " + std::to_string(offset.toSec()) +
+                      " s from the estimate, more than tf_timeout";
+        return std::nullopt;
+      }
+    }
     geometry_msgs::Point target;
     tf2::doTransform(estimate.position, target, t);
     robot_ = {t.transform.translation.x, t.transform.translation.y};

@@ -1,19 +1,33 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/ros/tdoa_driver.hpp"
 
-#include <radio_follow/TdoaMeasurements.h>
-
 #include <algorithm>
 #include <functional>
+#include <utility>
 
 namespace radio_follow {
+namespace {
+
+// Depth of the publish queue and of the roscpp publisher queue behind it (a roscpp queue
+// that overflows drops its oldest message without telling anyone). One message per blink:
+// a tag blinks at up to 10 Hz, a few tags share the anchors; a burst is what the socket's
+// receive buffer (212 KiB by default, a few hundred reports) or the grouper (64 open
+// blinks, emitted at once when their window passes) hands over at once. 1024 blinks are
+// 10 s of ten tags at 10 Hz.
+constexpr std::size_t kQueueDepth = 1024;
+
+}  // namespace
 
 TdoaDriverNode::TdoaDriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh) {
-  params_.load(private_nh);
-  params_.validate();
+  params_ = loadStrict<Params>(private_nh);
   receiver_ = std::make_unique<TdoaReceiver>(params_.differenceConfig(), params_.group_window);
 
-  pub_ = nh.advertise<TdoaMeasurements>("measurements", 10);
+  pub_ = nh.advertise<TdoaMeasurements>("measurements", kQueueDepth);
+  queue_ = std::make_unique<drivers::DeliveryQueue<TdoaMeasurements>>(
+      kQueueDepth, [this](TdoaMeasurements& msg) {
+        pub_.publish(msg);
+        ++blinks_published_;
+      });
   diagnostics_.setHardwareIDf("tdoa udp %s:%d", params_.address.c_str(), params_.port);
   diagnostics_.add("TDoA anchors", this, &TdoaDriverNode::diagnose);
   last_datagram_ = last_diagnosis_ = ros::WallTime::now();
@@ -39,6 +53,8 @@ TdoaDriverNode::~TdoaDriverNode() {
   if (transport_) {
     transport_->stop();
   }
+  timer_.stop();
+  queue_->stop();  // publishes what was queued last
 }
 
 void TdoaDriverNode::onDatagram(const std::uint8_t* data, std::size_t size) {
@@ -94,7 +110,9 @@ void TdoaDriverNode::publish(const std::vector<TdoaBlink>& blinks) {
       out.variance = d.variance;
       msg.differences.push_back(out);
     }
-    pub_.publish(msg);
+    if (!queue_->push(std::move(msg))) {
+      ++blinks_unpublished_;
+    }
   }
 }
 
@@ -110,9 +128,12 @@ void TdoaDriverNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& statu
   blinks_at_last_diagnosis_ = s.blinks;
   last_diagnosis_ = now;
   status.add("datagrams", s.packets);
-  status.add("blinks published", s.blinks);
+  status.add("blinks formed", s.blinks);
+  status.add("blinks published", blinks_published_.load());
   status.add("blinks published incomplete", s.blinks_incomplete);
   status.add("blinks dropped", s.blinks_dropped);
+  status.add("blinks dropped: publish queue full", blinks_unpublished_);
+  status.add("publish queue peak", queue_->peak());
   status.add("implausible differences", s.implausible_differences);
   status.add("rejected", s.rejected());
   for (std::size_t i = 1; i < kTdoaDecodeErrorCount; ++i) {
@@ -131,9 +152,12 @@ void TdoaDriverNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& statu
     status.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "socket not bound, retrying");
   } else if (silence > params_.data_timeout) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "no data from the anchors");
+  } else if (blinks_unpublished_ > unpublished_at_last_diagnosis_) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "dropping blinks: publish queue full");
   } else {
     status.summary(diagnostic_msgs::DiagnosticStatus::OK, "receiving");
   }
+  unpublished_at_last_diagnosis_ = blinks_unpublished_;
 }
 
 }  // namespace radio_follow

@@ -7,6 +7,8 @@
 #include <string>
 
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/common/param_keys.hpp"
+#include "radio_follow/ros/params.hpp"
 #include "radio_follow/ros/tdoa_driver.hpp"
 
 namespace radio_follow {
@@ -47,8 +49,9 @@ TdoaAnchorConfig parseAnchor(XmlRpc::XmlRpcValue& v, const std::string& name) {
       !v.hasMember("address") || !v.hasMember("position")) {
     throw ParamError(name, v.toXml(), "a map with id, address and position");
   }
+  requireMembers(v, {"id", "address", "position"}, name);
   TdoaAnchorConfig anchor;
-  anchor.id = text(v["id"], name + ".id", "a string");
+  anchor.id = normalizeId(text(v["id"], name + ".id", "a string"));
   anchor.address =
       parseAddress(text(v["address"], name + ".address", "a hex string"), name + ".address");
   XmlRpc::XmlRpcValue& p = v["position"];
@@ -71,7 +74,7 @@ std::size_t indexOf(const std::vector<TdoaAnchorConfig>& anchors, const std::str
 
 }  // namespace
 
-void TdoaDriverNode::Params::load(const ros::NodeHandle& nh) {
+void TdoaDriverNode::Params::load(const ParamReader& nh) {
   nh.param("address", address, address);
   nh.param("port", port, port);
   nh.param("frame_id", frame_id, frame_id);
@@ -86,7 +89,7 @@ void TdoaDriverNode::Params::load(const ros::NodeHandle& nh) {
   nh.param("max_backoff", max_backoff, max_backoff);
   anchors.clear();
   XmlRpc::XmlRpcValue list;
-  if (nh.getParam("anchors", list)) {
+  if (nh.getRaw("anchors", list)) {
     if (list.getType() != XmlRpc::XmlRpcValue::TypeArray) {
       throw ParamError("~anchors", list.toXml(), "a list of anchors");
     }

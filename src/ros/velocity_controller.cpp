@@ -8,7 +8,7 @@
 
 namespace radio_follow {
 
-control::VelocityLawParams loadVelocityLawParams(const ros::NodeHandle& pnh,
+control::VelocityLawParams loadVelocityLawParams(const ParamReader& pnh,
                                                  const ControllerCommonParams& common) {
   control::VelocityLawParams p;
   pnh.param("follow_distance", p.follow_distance, p.follow_distance);
@@ -25,6 +25,7 @@ control::VelocityLawParams loadVelocityLawParams(const ros::NodeHandle& pnh,
   loadPidGains(pnh, "linear_pid", p.linear);
   loadPidGains(pnh, "angular_pid", p.angular);
   p.max_linear = common.limits.max_linear;
+  p.safe_distance = common.safety.safe_distance;
   p.linear.output_limit = common.limits.max_linear;
   p.angular.output_limit = common.limits.max_angular;
   p.validate();
@@ -49,7 +50,7 @@ bool estimateUsable(const TargetEstimate& estimate) {
          std::isfinite(estimate.range);
 }
 
-void VelocityControllerNode::Params::load(const ros::NodeHandle& pnh) {
+void VelocityControllerNode::Params::load(const ParamReader& pnh) {
   pnh.param("odom_frame", odom_frame, odom_frame);
   pnh.param("tf_timeout", tf_timeout, tf_timeout);
 }
@@ -61,10 +62,11 @@ void VelocityControllerNode::Params::validate() const {
 
 VelocityControllerNode::VelocityControllerNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
     : ControllerBase(nh, private_nh, true),
-      params_(loadValidated<Params>(private_nh)),
-      law_(loadVelocityLawParams(private_nh, common())),
+      params_(loadValidated<Params>(params())),
+      law_(loadVelocityLawParams(params(), common())),
       tf_listener_(tf_buffer_),
       motion_(tf_buffer_, params_.odom_frame, params_.tf_timeout) {
+  requireKnownParams();
   estimate_sub_ = nh_.subscribe("target", 5, &VelocityControllerNode::onEstimate, this);
   // Speed caps come from the common limits; the law's own fields are tuned on ~law.
   law_reconfigure_ =
@@ -74,6 +76,13 @@ VelocityControllerNode::VelocityControllerNode(ros::NodeHandle& nh, ros::NodeHan
 }
 
 VelocityControllerNode::~VelocityControllerNode() = default;
+
+void VelocityControllerNode::onCommonChange(const ControllerCommonParams& next) {
+  const control::VelocityLawParams p = control::VelocityLaw::withCommon(
+      law_.params(), next.safety.safe_distance, next.limits.max_linear);
+  p.validate();  // e.g. a safe_distance the follow distance no longer clears
+  law_.setParams(p);
+}
 
 void VelocityControllerNode::onEstimate(const TargetEstimate::ConstPtr& msg) {
   estimate_ = msg;

@@ -230,7 +230,7 @@ class TdoaDriverParams : public ::testing::Test {
 
   TdoaDriverNode::Params load() {
     TdoaDriverNode::Params p;
-    p.load(nh_);
+    p.load(ParamReader(nh_));
     p.validate();
     return p;
   }

@@ -26,6 +26,10 @@ enum class StopReason {
   kEstimateStale,
   kTargetLost,
   kRangesSilent,
+  /// A range or estimate stamped ahead of this node's clock (TimePolicy).
+  kFutureStamp,
+  /// This node's clock ran backwards (bag loop, simulator restart): state was reset.
+  kClockJumped,
 };
 
 /// The state a stop reason is reported as (kNone maps to kFollowing).

@@ -102,7 +102,9 @@ class HybridHoming {
 
   /// One reading at robot position `robot` with world bearing `bearing` and an
   /// estimated distance (NaN when none: the vector estimate then skips this reading).
+  /// A non-finite position or bearing is refused (counted) and changes nothing.
   void update(const Eigen::Vector2d& robot, double bearing, double distance);
+  std::size_t refused() const { return refused_; }
 
   const std::optional<Eigen::Vector2d>& goal() const { return goal_; }
   HomingSource source() const { return source_; }
@@ -120,6 +122,7 @@ class HybridHoming {
   ParallaxEstimator parallax_;
   std::optional<Eigen::Vector2d> goal_;
   HomingSource source_ = HomingSource::kNone;
+  std::size_t refused_ = 0;
 };
 
 /// Eq 14: distance between the parallax and vector goals over the mean of their

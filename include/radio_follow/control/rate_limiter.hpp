@@ -17,10 +17,10 @@ struct VelocityCommand {
 /// Limits of the commanded motion. Deceleration has its own (usually larger) limit
 /// so the robot still stops promptly when the gap closes.
 struct MotionLimits {
-  double max_linear = 1.0;         ///< m/s
+  double max_linear = 1.5;         ///< m/s
   double max_angular = 1.0;        ///< rad/s
   double max_linear_accel = 0.5;   ///< m/s^2, speeding up
-  double max_linear_decel = 1.0;   ///< m/s^2, slowing down
+  double max_linear_decel = 2.0;   ///< m/s^2, slowing down
   double max_angular_accel = 2.0;  ///< rad/s^2, both ways
 
   /// Throws ParamError naming the first unusable field.

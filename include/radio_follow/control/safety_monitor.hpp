@@ -4,11 +4,18 @@
 #include <map>
 #include <string>
 
+#include "radio_follow/common/time_policy.hpp"
 #include "radio_follow/control/follower_state.hpp"
 #include "radio_follow/control/rate_limiter.hpp"
 
 namespace radio_follow {
 namespace control {
+
+/// Bounds of the safety parameters, enforced at start and in live tuning.
+constexpr double kMinSafeDistance = 0.3;      ///< m: several times a range's error
+constexpr double kMaxSafeDistance = 10.0;     ///< m: beyond that no follow law works
+constexpr double kMaxFreshnessTimeout = 3.0;  ///< s: estimate_timeout, range_timeout
+constexpr double kMaxHoldTime = 30.0;         ///< s
 
 /// Parameters of the safety layer shared by all controllers.
 struct SafetyParams {
@@ -34,24 +41,31 @@ struct SafetyDecision {
 };
 
 /// Decides "may the robot move?" from raw events only, never from what a controller
-/// computed. Pure and clock-free: every call carries its time (seconds, one clock).
+/// computed. Pure and clock-free: every call carries its times (seconds, one clock).
 /// It does not trust the estimator: a raw range below safe_distance blocks motion even
-/// when the estimate says the target is far away.
+/// when the estimate says the target is far away. Time follows TimePolicy: freshness is
+/// judged by stamp on the receiver's clock, a stamp from the future blocks motion and
+/// never counts as fresh, the hold after a violation runs from its receive time (a
+/// stale short range keeps the robot stopped for hold_time instead of flapping), and a
+/// clock that runs backwards resets the state (motion resumes only after a new estimate,
+/// new ranges and hold_time).
 class SafetyMonitor {
  public:
   explicit SafetyMonitor(const SafetyParams& params);
 
-  /// A raw range from source `source` (e.g. "<topic>/<module>") measured at `time`.
-  /// Returns true when this range alone is a violation (the node then publishes zero
-  /// at once, before the next control tick).
-  bool onRange(double time, const std::string& source, double range);
+  /// A raw range from `source` (e.g. "<topic>/<module>") stamped `stamp`, received at
+  /// `now`. Returns true when this range alone blocks motion (too close, NaN or from the
+  /// future); the node then publishes zero at once, before the next control tick.
+  bool onRange(double stamp, double now, const std::string& source, double range);
 
-  /// An estimate stamped `stamp`; `usable` is false for a LOST estimate.
-  void onEstimate(double stamp, bool usable);
+  /// An estimate stamped `stamp` received at `now`; `usable` is false for a LOST one.
+  /// Returns false when it was refused (from the future; motion is then blocked).
+  bool onEstimate(double stamp, double now, bool usable);
 
   /// New thresholds at runtime (live tuning). Throws ParamError and keeps the old ones
   /// when `params` fails validate(); the latched state and the last ranges are kept.
   void setParams(const SafetyParams& params);
+  const SafetyParams& params() const { return params_; }
 
   void setEnabled(bool enabled) { enabled_ = enabled; }
   bool enabled() const { return enabled_; }
@@ -63,12 +77,19 @@ class SafetyMonitor {
   /// The verdict at `now`. Blocking conditions latch for `hold_time` after they clear.
   SafetyDecision evaluate(double now);
 
+  /// Stamps refused as from the future, clock jumps seen.
+  const TimePolicy& time() const { return time_; }
+
  private:
   StopReason rawReason(double now);
+  void block(double now, StopReason reason);
+  /// Resets the time-dependent state when the clock ran backwards.
+  void observe(double now);
 
   SafetyParams params_;
+  TimePolicy time_;
   bool enabled_ = false;
-  std::map<std::string, std::pair<double, double>> ranges_;  // source -> (time, range)
+  std::map<std::string, std::pair<double, double>> ranges_;  // source -> (stamp, range)
   bool has_estimate_ = false;
   double estimate_stamp_ = 0.0;
   bool estimate_usable_ = false;

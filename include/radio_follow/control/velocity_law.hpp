@@ -17,7 +17,7 @@ struct VelocityLawParams {
   /// Beyond the follow distance the speed cap ramps from the person's speed at
   /// follow_distance to max_linear at follow_distance + slowdown_distance, metres: the
   /// robot slows smoothly as the gap closes (see slowdownCap()).
-  double slowdown_distance = 1.0;
+  double slowdown_distance = 0.2;
   /// Inside the follow distance the cap falls from the person's speed to zero at
   /// follow_distance - closing_distance, metres. Keep it at most follow_distance -
   /// safe_distance, so that the robot has stopped before the safety stop trips.
@@ -36,14 +36,17 @@ struct VelocityLawParams {
   /// Linear speed is multiplied by this while the estimate is DEGRADED.
   double degraded_speed_factor = 0.5;
   /// Maximum forward speed, m/s (also the linear PID's output limit).
-  double max_linear = 1.0;
+  double max_linear = 1.5;
+  /// The safety layer's stop distance (SafetyParams::safe_distance, copied by the node):
+  /// the law must come to rest before it, so follow_distance - closing_distance >= it.
+  double safe_distance = 1.3;
   /// Drive backwards when the target stays behind the robot (reversible robots only).
   bool allow_backwards = false;
   /// |bearing| beyond this angle from the current driving direction counts as "behind", rad.
   double backwards_angle = 2.6179938779914944;  // 150 deg
   /// Consecutive "behind" cycles before the driving direction switches.
   int backwards_cycles = 5;
-  PidGains linear{0.8, 0.05, 0.1, 0.3, 0.2, 1.0};
+  PidGains linear{1.0, 0.0, 0.0, 0.3, 0.2, 1.5};
   PidGains angular{1.5, 0.0, 0.1, 0.3, 0.1, 1.0};
 
   void validate() const;
@@ -77,6 +80,14 @@ class VelocityLaw {
   /// New parameters (live tuning; validated by the caller): the PIDs keep their state.
   void setParams(const VelocityLawParams& params);
   const VelocityLawParams& params() const { return params_; }
+  /// The law's parameters with the safety layer's stop distance and speed cap in them.
+  static VelocityLawParams withCommon(VelocityLawParams p, double safe_distance,
+                                      double max_linear) {
+    p.safe_distance = safe_distance;
+    p.max_linear = max_linear;
+    p.linear.output_limit = max_linear;
+    return p;
+  }
   void reset();
 
   bool driving_backwards() const { return backwards_; }
@@ -113,8 +124,8 @@ bool updateArrived(bool arrived, double gap, double target_speed);
 /// reaches zero at closing_distance inside the follow distance; with v = 0 it is zero at
 /// and inside the follow distance, so the robot never drives towards a standing person
 /// closer than follow_distance.
-double slowdownCap(double gap, double slowdown_distance, double closing_distance,
-                   double max_speed, double target_speed = 0.0);
+double slowdownCap(double gap, double slowdown_distance, double closing_distance, double max_speed,
+                   double target_speed = 0.0);
 
 /// The gap the speed law regulates: min(gap, module_gap - stop_margin), where `gap` is
 /// the distance beyond the follow distance (from the robot's centre) and `module_gap` the

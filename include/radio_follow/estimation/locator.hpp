@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "radio_follow/common/time_policy.hpp"
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/estimation/aoa_selector.hpp"
 #include "radio_follow/estimation/initializer.hpp"
@@ -40,10 +41,10 @@ struct LocatorConfig {
   LossConfig bearing_loss{LossType::kHuber, 2.0};
   double max_age = 0.5;  ///< s; older measurements are dropped
   AoaSelectorConfig aoa;
-  MotionModel motion_model = MotionModel::kConstantPosition;
+  MotionModel motion_model = MotionModel::kConstantVelocity;
   double process_noise = 1.0;  ///< see KalmanConfig
   /// true: R = the solver's covariance; false: R = measurement_noise * I (thesis: 50).
-  bool filter_uses_solver_covariance = false;
+  bool filter_uses_solver_covariance = true;
   double measurement_noise = 50.0;  ///< m^2
   double gate_probability = 0.999;
   int max_consecutive_rejections = 5;
@@ -78,11 +79,17 @@ struct LocatorEstimate {
   std::vector<std::size_t> bearings_used;
 };
 
+/// A range or distance difference beyond this is no measurement (a DWM1001C ranges to
+/// some tens of metres; a corrupted line can carry 1e154), m.
+constexpr double kMaxPlausibleRange = 300.0;
+
 struct LocatorStats {
   std::size_t updates = 0;
   std::size_t solves = 0;
   std::size_t solver_failures = 0;
   std::size_t stale_dropped = 0;
+  std::size_t future_dropped = 0;  ///< measurements stamped ahead of update()'s clock
+  std::size_t non_finite = 0;      ///< epochs whose filter output was not finite
   std::size_t invalid_measurements = 0;
   std::size_t bearings_rejected_fov = 0;
   std::size_t lost = 0;
@@ -159,6 +166,7 @@ class Locator {
   std::optional<Eigen::Vector3d> warm_;
   bool warm_ranged_ = false;
   LocatorStats stats_;
+  TimePolicy time_;
 };
 
 }  // namespace radio_follow

@@ -9,6 +9,7 @@
 
 #include "radio_follow/FollowerStatus.h"
 #include "radio_follow/control/announcement_queue.hpp"
+#include "radio_follow/ros/params.hpp"
 
 namespace radio_follow {
 
@@ -26,7 +27,7 @@ class AnnouncerNode {
     double repeat_interval = 10.0;  ///< s
     int max_queued = 5;
 
-    void load(const ros::NodeHandle& private_nh);
+    void load(const ParamReader& private_nh);
     void validate() const;
   };
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <diagnostic_updater/diagnostic_updater.h>
+#include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <sensor_msgs/LaserScan.h>
 #include <std_msgs/Bool.h>
@@ -9,6 +10,7 @@
 
 #include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,12 +22,17 @@
 #include "radio_follow/control/pid.hpp"
 #include "radio_follow/control/rate_limiter.hpp"
 #include "radio_follow/control/safety_monitor.hpp"
+#include "radio_follow/ros/params.hpp"
 
 namespace radio_follow {
 
 template <typename Tuning, typename Params>
 class ReconfigureServer;
 class ControllerTuningConfig;
+
+/// Queue of each range subscription: one per module line at 10 Hz, several seconds'
+/// worth so that a burst after a reconnect is not dropped before the stop sees it.
+constexpr std::uint32_t kRangeQueueSize = 100;
 
 /// Largest change a module's calibration may make to a range at safe_distance, m.
 constexpr double kMaxSafetyCalibrationShift = 0.3;
@@ -54,14 +61,13 @@ struct ControllerCommonParams {
   control::MotionLimits limits;
   control::AvoidanceParams avoidance;
 
-  void load(const ros::NodeHandle& private_nh);
+  void load(const ParamReader& private_nh);
   void validate() const;
 };
 
 /// Reads `<ns>/kp`, `ki`, `kd`, `integral_limit`, `derivative_time_constant` into `gains`
 /// (the output limit is set by the node from its speed limits).
-void loadPidGains(const ros::NodeHandle& private_nh, const std::string& ns,
-                  control::PidGains& gains);
+void loadPidGains(const ParamReader& private_nh, const std::string& ns, control::PidGains& gains);
 
 /// The safety layer and plumbing shared by the three controllers: raw-range safety stop
 /// (published from the range callback, not only at the next tick), enable service and
@@ -89,6 +95,13 @@ class ControllerBase {
   /// `watch_ranges_default` decides whether ranges are watched when ~range_topics is unset.
   ControllerBase(ros::NodeHandle& nh, ros::NodeHandle& private_nh, bool watch_ranges_default);
 
+  /// The node's private parameters: a derived node loads its own structs through it.
+  const ParamReader& params() const { return params_in_; }
+  /// Refuses (ParamError) any private parameter that neither the base nor the derived
+  /// node read (a typo); call it once the derived node's parameters are loaded, before
+  /// its first subscriber. start() refuses to run without it.
+  void requireKnownParams();
+
   /// Creates the shared subscribers, service, publishers and timer.
   void start();
 
@@ -96,9 +109,14 @@ class ControllerBase {
   virtual Output compute(const ros::Time& now, double dt) = 0;
   /// Called when the safety layer takes over, so laws can reset their integrators.
   virtual void onStopped() {}
+  /// Live tuning is about to install `next` common parameters: a law that depends on
+  /// them (safe_distance, max_linear) validates and takes them, or throws ParamError to
+  /// refuse the whole change.
+  virtual void onCommonChange(const ControllerCommonParams& /*next*/) {}
 
-  /// Feeds the safety monitor with an estimate (or a bearing, for homing).
-  void noteEstimate(const ros::Time& stamp, bool usable);
+  /// Feeds the safety monitor with an estimate (or a bearing, for homing). Returns false
+  /// when it was refused (stamped in the future: the robot stops; TimePolicy).
+  bool noteEstimate(const ros::Time& stamp, bool usable);
 
   const ControllerCommonParams& common() const { return common_; }
 
@@ -118,11 +136,21 @@ class ControllerBase {
   void onTick(const ros::TimerEvent& event);
   /// Handles SIGINT/SIGTERM (flag set by the signal handler): last zero, then shutdown.
   void onStopCheck(const ros::WallTimerEvent& event);
+  /// Main thread: resets the law (onStopped) and publishes the stop.
   void stopNow(control::StopReason reason);
+  /// Any thread, safety_mutex_ held: zero command and status, limiter reset.
+  void publishStopLocked(control::StopReason reason);
   void publishCommand(const control::VelocityCommand& cmd);
   void publishStatus(control::FollowerState state, const std::string& text);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
 
+  ParamReader params_in_;
+  /// Guards what the safety thread (range callbacks) and the main thread share: the
+  /// monitor, the limiter, the published state, common_ during live tuning.
+  mutable std::mutex safety_mutex_;
+  ros::CallbackQueue safety_queue_;
+  std::unique_ptr<ros::AsyncSpinner> safety_spinner_;
+  bool params_checked_ = false;
   ControllerCommonParams common_;
   control::SafetyMonitor monitor_;
   control::CommandLimiter limiter_;

@@ -12,9 +12,10 @@
 namespace radio_follow {
 
 /// Diagnostics and silence watchdog shared by the device drivers. Once a second it
-/// publishes one status (message rate, lines rejected/ignored, overflows, reconnects,
-/// seconds since data) and warns, throttled, when a connected device has been silent
-/// for longer than `silence_timeout`. `stats.last_data_time` must be in ROS time
+/// publishes one status (message rate, messages published and dropped, lines
+/// rejected/implausible/ignored, overflows, reconnects, seconds since data), WARN while
+/// measurements are being dropped, and warns, throttled, when a connected device has been
+/// silent for longer than `silence_timeout`. `stats.last_data_time` must be in ROS time
 /// seconds (the drivers set it on every chunk and on connect).
 class DriverDiagnostics {
  public:
@@ -37,6 +38,7 @@ class DriverDiagnostics {
   drivers::DriverStatsSnapshot previous_;
   double previous_time_ = 0.0;
   double rate_ = 0.0;
+  bool dropping_ = false;  // measurements were dropped since the previous tick
 };
 
 }  // namespace radio_follow

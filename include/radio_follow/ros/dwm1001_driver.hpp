@@ -7,19 +7,25 @@
 #include <mutex>
 #include <string>
 
+#include "radio_follow/UwbRanges.h"
+#include "radio_follow/UwbTagLocation.h"
+#include "radio_follow/drivers/delivery_queue.hpp"
 #include "radio_follow/drivers/driver_stats.hpp"
 #include "radio_follow/drivers/dwm1001_decoder.hpp"
 #include "radio_follow/drivers/dwm1001_shell.hpp"
 #include "radio_follow/drivers/line_framer.hpp"
 #include "radio_follow/drivers/serial_transport.hpp"
 #include "radio_follow/ros/driver_diagnostics.hpp"
+#include "radio_follow/ros/params.hpp"
 
 namespace radio_follow {
 
 /// Driver for a Qorvo DWM1001 module in tag mode on its UART shell. Publishes
 /// `ranges` (UwbRanges) for every output line and `tag_location` (UwbTagLocation) when
 /// the line carried the module's own position. With `configure` it runs the shell
-/// dialogue (Dwm1001Shell) on every (re)connect and stops the stream on shutdown.
+/// dialogue (Dwm1001Shell) on every (re)connect and stops the stream on shutdown. The I/O
+/// thread decodes and queues; a DeliveryQueue thread publishes, so a burst is never lost
+/// silently: what does not fit is counted as dropped in the diagnostics.
 class Dwm1001DriverNode {
  public:
   struct Params {
@@ -35,7 +41,7 @@ class Dwm1001DriverNode {
     double shell_timeout = 2.0;      ///< s per dialogue step before it restarts
     int max_line_length = 1024;      ///< bytes
 
-    void load(const ros::NodeHandle& private_nh);
+    void load(const ParamReader& private_nh);
     void validate() const;
   };
 
@@ -46,8 +52,17 @@ class Dwm1001DriverNode {
   void onBytes(const char* data, std::size_t size);
   void onConnected();
   void onDisconnected(const std::string& reason);
+  /// The messages of one output line: built on the I/O thread, published on the queue's.
+  struct Outgoing {
+    bool has_ranges = false;
+    UwbRanges ranges;
+    bool has_location = false;
+    UwbTagLocation location;
+  };
+
   void onLine(std::string_view line, double stamp);
-  void publish(double stamp);
+  void enqueue(double stamp);
+  void publish(Outgoing& out);
   void onShellTimer(const ros::TimerEvent& event);
   std::string frameId() const;
 
@@ -61,6 +76,7 @@ class Dwm1001DriverNode {
   drivers::DwmMeasurement measurement_;
   std::unique_ptr<DriverDiagnostics> diagnostics_;
   ros::Timer shell_timer_;
+  std::unique_ptr<drivers::DeliveryQueue<Outgoing>> queue_;
   std::unique_ptr<drivers::SerialTransport> transport_;
 };
 

@@ -9,9 +9,11 @@
 
 #include "radio_follow/AoaBearing.h"
 #include "radio_follow/UwbRanges.h"
+#include "radio_follow/common/time_policy.hpp"
 #include "radio_follow/control/homing.hpp"
 #include "radio_follow/control/rssi_model.hpp"
 #include "radio_follow/ros/controller_base.hpp"
+#include "radio_follow/ros/params.hpp"
 
 namespace radio_follow {
 
@@ -39,7 +41,7 @@ class HomingControllerNode : public ControllerBase {
     control::RssiModel rssi;
     control::HomingParams homing;
 
-    void load(const ros::NodeHandle& private_nh);
+    void load(const ParamReader& private_nh);
     void validate() const;
   };
 
@@ -56,6 +58,10 @@ class HomingControllerNode : public ControllerBase {
   std::optional<control::Pose2> robot_;
   std::optional<double> last_bearing_;  // odometry frame, rad
   ros::Time odom_stamp_;
+  TimePolicy time_;
+  unsigned long odom_refused_ = 0;
+  /// Forgets the pose, the distance and the homing estimate (clock jump).
+  void resetTrack(const char* why);
   std::string odom_frame_;
   double uwb_distance_ = 0.0;
   ros::Time uwb_stamp_;

@@ -2,6 +2,8 @@
 #pragma once
 
 #include <cstddef>
+#include <map>
+#include <string>
 
 #include "radio_follow/AoaBearing.h"
 #include "radio_follow/TdoaMeasurements.h"
@@ -23,8 +25,16 @@ class LocatorInputs {
   std::size_t add(const AoaBearing& msg);
   std::size_t add(const TdoaMeasurements& msg);
 
+  /// Ranges to the target's anchor so far.
+  std::size_t targetRanges() const { return target_ranges_; }
+  /// Ranges to other anchors so far, by normalised anchor ID: with none to the target,
+  /// the layout's target.uwb_anchor_id is probably wrong (the node warns).
+  const std::map<std::string, std::size_t>& otherAnchors() const { return other_anchors_; }
+
  private:
   Locator& locator_;
+  std::size_t target_ranges_ = 0;
+  std::map<std::string, std::size_t> other_anchors_;
 };
 
 }  // namespace radio_follow

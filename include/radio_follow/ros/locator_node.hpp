@@ -17,6 +17,7 @@
 #include "radio_follow/estimation/locator.hpp"
 #include "radio_follow/ros/locator_inputs.hpp"
 #include "radio_follow/ros/locator_reconfigure.hpp"
+#include "radio_follow/ros/params.hpp"
 
 namespace radio_follow {
 

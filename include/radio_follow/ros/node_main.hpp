@@ -24,6 +24,12 @@ int runNode(int argc, char** argv, const std::string& default_name) {
   } catch (const ParamError& e) {
     ROS_FATAL("%s: %s", ros::this_node::getName().c_str(), e.what());
     return 1;
+  } catch (const ros::InvalidNameException& e) {
+    // A topic or frame name that no parameter check caught: still a configuration error,
+    // not a crash (roscpp would otherwise abort with exit 134).
+    ROS_FATAL("%s: invalid ROS name in the configuration: %s", ros::this_node::getName().c_str(),
+              e.what());
+    return 1;
   }
   return 0;
 }

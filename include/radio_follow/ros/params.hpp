@@ -3,25 +3,101 @@
 
 #include <ros/ros.h>
 
+#include <set>
 #include <string>
 #include <vector>
 
 namespace radio_follow {
 
+/// The one way a node reads its private parameters (doc/configuration.md, "Strict
+/// parameters"). Unlike ros::NodeHandle::param, which silently keeps the default when a
+/// value has the wrong type, every read is strict:
+/// - a value of the wrong type (`_safe_distance:=abc`, a string where a list is expected)
+///   or a non-finite number throws ParamError naming the parameter, value and type;
+/// - an int is accepted where a double is expected (`_safe_distance:=2`), nothing else;
+/// - every name read is remembered, so that requireAllKnown() can refuse the keys nobody
+///   read (`_safe_distanse:=2.0`, a file meant for another node).
+/// It has ros::NodeHandle::param()'s shape, so the same loading code can run on a
+/// YamlParams (tools without a master).
+class ParamReader {
+ public:
+  explicit ParamReader(const ros::NodeHandle& private_nh);
+
+  /// `out` = the value of `name` (relative to the private namespace), or `fallback` when
+  /// the parameter is not set. Supported: bool, int, double, std::string,
+  /// std::vector<std::string>, std::vector<double>.
+  template <typename T>
+  void param(const std::string& name, T& out, const T& fallback) const;
+
+  /// Raw access for structured values (lists of mappings); marks `name` as known.
+  /// Returns false when the parameter is not set.
+  bool getRaw(const std::string& name, XmlRpc::XmlRpcValue& out) const;
+
+  /// Keys below `ns` belong to another component (a dynamic_reconfigure server's
+  /// namespace, which it rewrites itself) and are never reported as unknown.
+  void own(const std::string& ns) const;
+  /// Marks `name` as known without reading it (a key another component reads).
+  void allow(const std::string& name) const;
+
+  /// Throws ParamError for the first parameter in the private namespace that no load
+  /// function read: call it once every parameter struct of the node has been loaded,
+  /// before any subscriber exists.
+  void requireAllKnown() const;
+
+  const ros::NodeHandle& handle() const { return nh_; }
+
+ private:
+  std::string relative(const std::string& resolved) const;
+
+  ros::NodeHandle nh_;
+  mutable std::set<std::string> known_;
+  mutable std::vector<std::string> owned_;
+};
+
 /// Reads the private parameter `name` as a list of strings into `out` (unchanged when
-/// unset). Unlike NodeHandle::param it throws ParamError for a value of the wrong type
-/// instead of silently keeping the default: these lists decide what a node listens to.
-void loadStringList(const ros::NodeHandle& private_nh, const std::string& name,
+/// unset); a value of another type throws ParamError.
+void loadStringList(const ParamReader& params, const std::string& name,
                     std::vector<std::string>& out);
 
-/// A node's parameter struct loaded from the private namespace and validated (throws
-/// ParamError naming the first bad parameter), for a constructor's initialiser list.
+/// Throws ParamError for a member of the mapping `item` (an element of a structured list
+/// parameter, e.g. "~unplug[0]") that is not in `allowed`: a misspelt optional field
+/// would otherwise fall back to its default unnoticed.
+void requireMembers(const XmlRpc::XmlRpcValue& item, const std::set<std::string>& allowed,
+                    const std::string& path);
+
+/// Throws ParamError unless `name` is a valid ROS graph resource name (a topic or frame
+/// that roscpp would otherwise abort on at advertise/subscribe time).
+void requireGraphName(const std::string& param, const std::string& name);
+
+/// A node's parameter struct loaded through `params` and validated (throws ParamError
+/// naming the first bad parameter), for a constructor's initialiser list.
 template <typename Params>
-Params loadValidated(const ros::NodeHandle& private_nh) {
+Params loadValidated(const ParamReader& params) {
   Params p;
-  p.load(private_nh);
+  p.load(params);
   p.validate();
   return p;
+}
+
+/// The whole parameter step of a simple node: `Params` loaded from the private
+/// namespace, no unknown key left (ParamReader::requireAllKnown), validated.
+template <typename Params>
+Params loadStrict(const ros::NodeHandle& private_nh) {
+  const ParamReader params(private_nh);
+  Params p;
+  p.load(params);
+  params.requireAllKnown();
+  p.validate();
+  return p;
+}
+
+/// Marks the fields of a dynamic_reconfigure config `Tuning` as known: its server writes
+/// them into the node's namespace, where a restarted node finds them.
+template <typename Tuning>
+void allowTuning(const ParamReader& params) {
+  for (const auto& description : Tuning::__getParamDescriptions__()) {
+    params.allow(description->name);
+  }
 }
 
 }  // namespace radio_follow

@@ -15,6 +15,7 @@
 #include "radio_follow/control/pid.hpp"
 #include "radio_follow/control/velocity_law.hpp"
 #include "radio_follow/ros/controller_base.hpp"
+#include "radio_follow/ros/params.hpp"
 #include "radio_follow/ros/target_motion_tracker.hpp"
 
 namespace radio_follow {
@@ -36,7 +37,7 @@ class PathFollowerNode : public ControllerBase {
     double turn_gain = 1.5;       ///< 1/s, turning in place towards a goal behind
     double tf_timeout = 0.05;     ///< s
 
-    void load(const ros::NodeHandle& private_nh);
+    void load(const ParamReader& private_nh);
     void validate() const;
   };
 
@@ -46,6 +47,7 @@ class PathFollowerNode : public ControllerBase {
  private:
   Output compute(const ros::Time& now, double dt) override;
   void onStopped() override;
+  void onCommonChange(const ControllerCommonParams& next) override;
   void onEstimate(const TargetEstimate::ConstPtr& msg);
   std::optional<control::Pose2> robotPose();
   void publishPath(const ros::Time& stamp);

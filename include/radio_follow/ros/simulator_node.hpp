@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "radio_follow/config/layout.hpp"
+#include "radio_follow/ros/params.hpp"
 #include "radio_follow/sim/obstacles.hpp"
 #include "radio_follow/sim/serial_devices.hpp"
 #include "radio_follow/sim/world.hpp"
@@ -88,6 +89,6 @@ class SimulatorNode {
 };
 
 /// Reads the simulator's private parameters and validates them (throws ParamError).
-SimulatorNode::Params loadSimulatorParams(ros::NodeHandle& private_nh);
+SimulatorNode::Params loadSimulatorParams(const ParamReader& private_nh);
 
 }  // namespace radio_follow

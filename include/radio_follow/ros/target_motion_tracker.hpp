@@ -21,8 +21,9 @@ class TargetMotionTracker {
   TargetMotionTracker(const tf2_ros::Buffer& buffer, std::string odom_frame, double tf_timeout);
 
   /// Transforms an estimate with a position (OK or DEGRADED) into the odometry frame at
-  /// its stamp and records it. Returns the target's odometry-frame position, or nullopt
-  /// (no position, or no transform: lastError() says why).
+  /// its stamp (or with the newest transform when that is within `tf_timeout` of the
+  /// stamp; it never waits for TF) and records it. Returns the target's odometry-frame position, or
+  /// nullopt (no position, or no transform: lastError() says why).
   std::optional<Eigen::Vector2d> add(const TargetEstimate& estimate);
 
   /// The target's ground speed, m/s, or nullopt without enough recent positions.

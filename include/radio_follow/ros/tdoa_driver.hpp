@@ -4,20 +4,26 @@
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <ros/ros.h>
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <mutex>
 #include <string>
 #include <vector>
 
+#include "radio_follow/TdoaMeasurements.h"
+#include "radio_follow/drivers/delivery_queue.hpp"
 #include "radio_follow/drivers/tdoa_receiver.hpp"
 #include "radio_follow/drivers/tdoa_udp_transport.hpp"
+#include "radio_follow/ros/params.hpp"
 
 namespace radio_follow {
 
 /// ROS wrapper of the UDP TDoA driver: receives anchor reports (doc/tdoa_protocol.md),
 /// groups them per blink and publishes `measurements` (TdoaMeasurements) with the
-/// distance differences against the reference anchor. See doc/nodes/tdoa_driver.md.
+/// distance differences against the reference anchor. Messages go through a DeliveryQueue
+/// whose thread publishes, so a burst is never lost silently: what does not fit is counted
+/// in the diagnostics. See doc/nodes/tdoa_driver.md.
 class TdoaDriverNode {
  public:
   struct Params {
@@ -36,7 +42,7 @@ class TdoaDriverNode {
     double max_backoff = 10.0;     ///< s
 
     /// Reads every parameter from `private_nh`; throws ParamError on a malformed value.
-    void load(const ros::NodeHandle& private_nh);
+    void load(const ParamReader& private_nh);
     /// Throws ParamError naming the first invalid value.
     void validate() const;
     /// The core configuration (anchor IDs resolved to indices). Call after validate().
@@ -62,7 +68,11 @@ class TdoaDriverNode {
   std::uint64_t packets_at_last_diagnosis_ = 0;
   std::uint64_t blinks_at_last_diagnosis_ = 0;
   std::uint64_t last_logged_rejections_ = 0;
+  std::uint64_t blinks_unpublished_ = 0;  // queue full
+  std::uint64_t unpublished_at_last_diagnosis_ = 0;
+  std::atomic<std::uint64_t> blinks_published_{0};  // written by the queue's thread
   ros::Publisher pub_;
+  std::unique_ptr<drivers::DeliveryQueue<TdoaMeasurements>> queue_;
   ros::Timer timer_;
   diagnostic_updater::Updater diagnostics_;
   std::unique_ptr<TdoaUdpTransport> transport_;

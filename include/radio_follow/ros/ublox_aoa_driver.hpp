@@ -8,16 +8,21 @@
 #include <string>
 #include <vector>
 
+#include "radio_follow/AoaBearing.h"
+#include "radio_follow/drivers/delivery_queue.hpp"
 #include "radio_follow/drivers/driver_stats.hpp"
 #include "radio_follow/drivers/line_framer.hpp"
 #include "radio_follow/drivers/serial_transport.hpp"
 #include "radio_follow/drivers/uudf_decoder.hpp"
 #include "radio_follow/ros/driver_diagnostics.hpp"
+#include "radio_follow/ros/params.hpp"
 
 namespace radio_follow {
 
 /// Driver for a u-blox XPLR-AOA-1 / ANT-B10 antenna board running u-connectLocate.
-/// Publishes `bearing` (AoaBearing) for every +UUDF event of an accepted tag.
+/// Publishes `bearing` (AoaBearing) for every +UUDF event of an accepted tag. The I/O
+/// thread decodes and queues; a DeliveryQueue thread publishes, so a burst is never lost
+/// silently: what does not fit is counted as dropped in the diagnostics.
 class UbloxAoaDriverNode {
  public:
   struct Params {
@@ -31,7 +36,7 @@ class UbloxAoaDriverNode {
     double silence_timeout = 2.0;            ///< s
     int max_line_length = 1024;              ///< bytes
 
-    void load(const ros::NodeHandle& private_nh);
+    void load(const ParamReader& private_nh);
     void validate() const;
   };
 
@@ -51,6 +56,7 @@ class UbloxAoaDriverNode {
   drivers::LineFramer framer_;
   drivers::UudfEvent event_;
   std::unique_ptr<DriverDiagnostics> diagnostics_;
+  std::unique_ptr<drivers::DeliveryQueue<AoaBearing>> queue_;
   std::unique_ptr<drivers::SerialTransport> transport_;
 };
 

@@ -12,6 +12,7 @@
 #include "radio_follow/TargetEstimate.h"
 #include "radio_follow/control/velocity_law.hpp"
 #include "radio_follow/ros/controller_base.hpp"
+#include "radio_follow/ros/params.hpp"
 #include "radio_follow/ros/target_motion_tracker.hpp"
 
 namespace radio_follow {
@@ -20,7 +21,7 @@ class FollowLawTuningConfig;
 
 /// Loads the velocity law's parameters (shared by velocity_controller and the
 /// path_follower's straight-line fallback); speed limits come from `common`.
-control::VelocityLawParams loadVelocityLawParams(const ros::NodeHandle& private_nh,
+control::VelocityLawParams loadVelocityLawParams(const ParamReader& private_nh,
                                                  const ControllerCommonParams& common);
 
 /// Converts an estimate into the law's input (HEADING_ONLY -> no range, DEGRADED flag,
@@ -41,7 +42,7 @@ class VelocityControllerNode : public ControllerBase {
     std::string odom_frame = "odom";  ///< empty: no feed-forward, no tf needed
     double tf_timeout = 0.05;         ///< s
 
-    void load(const ros::NodeHandle& private_nh);
+    void load(const ParamReader& private_nh);
     void validate() const;
   };
 
@@ -51,6 +52,7 @@ class VelocityControllerNode : public ControllerBase {
  private:
   Output compute(const ros::Time& now, double dt) override;
   void onStopped() override { law_.reset(); }
+  void onCommonChange(const ControllerCommonParams& next) override;
   void onEstimate(const TargetEstimate::ConstPtr& msg);
 
   Params params_;

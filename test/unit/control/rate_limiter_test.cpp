@@ -58,7 +58,7 @@ TEST(CommandLimiter, AccelerationStaysWithinLimitOverManySteps) {
   CommandLimiter limiter(limits);
   double previous = 0.0;
   for (int i = 0; i < 100; ++i) {
-    const double v = limiter.update({1.0, 0.0}, 0.05).linear;
+    const double v = limiter.update({5.0, 0.0}, 0.05).linear;
     EXPECT_LE(v - previous, limits.max_linear_accel * 0.05 + 1e-12);
     previous = v;
   }

@@ -22,8 +22,8 @@ SafetyMonitor enabledMonitor(const SafetyParams& params = SafetyParams()) {
 
 TEST(SafetyMonitor, StartsDisabled) {
   SafetyMonitor monitor{SafetyParams()};
-  monitor.onRange(0.0, "a", 3.0);
-  monitor.onEstimate(0.0, true);
+  monitor.onRange(0.0, 0.0, "a", 3.0);
+  monitor.onEstimate(0.0, 0.0, true);
   const SafetyDecision d = monitor.evaluate(0.1);
   EXPECT_FALSE(d.may_move);
   EXPECT_EQ(d.reason, StopReason::kDisabled);
@@ -31,33 +31,33 @@ TEST(SafetyMonitor, StartsDisabled) {
 
 TEST(SafetyMonitor, NewSafeDistanceAppliesAndAnInvalidOneIsRefused) {
   SafetyMonitor monitor = enabledMonitor();
-  monitor.onRange(0.0, "a", 2.0);
-  monitor.onEstimate(0.0, true);
+  monitor.onRange(0.0, 0.0, "a", 2.0);
+  monitor.onEstimate(0.0, 0.0, true);
   ASSERT_TRUE(monitor.evaluate(0.1).may_move);
   SafetyParams wider;
   wider.safe_distance = 2.5;
   monitor.setParams(wider);
-  monitor.onRange(0.2, "a", 2.0);
+  monitor.onRange(0.2, 0.2, "a", 2.0);
   EXPECT_EQ(monitor.evaluate(0.2).reason, StopReason::kTooClose);
   SafetyParams invalid = wider;
   invalid.safe_distance = -1.0;
   EXPECT_THROW(monitor.setParams(invalid), ParamError);
-  monitor.onRange(0.3, "a", 2.0);
+  monitor.onRange(0.3, 0.3, "a", 2.0);
   EXPECT_FALSE(monitor.evaluate(0.3).may_move);  // still 2.5 m
 }
 
 TEST(SafetyMonitor, MovesWithFreshFarRangeAndEstimate) {
   SafetyMonitor monitor = enabledMonitor();
-  monitor.onRange(0.0, "a", 3.0);
-  monitor.onEstimate(0.0, true);
+  monitor.onRange(0.0, 0.0, "a", 3.0);
+  monitor.onEstimate(0.0, 0.0, true);
   EXPECT_TRUE(monitor.evaluate(0.1).may_move);
 }
 
 TEST(SafetyMonitor, CloseRangeStopsEvenWithAGoodEstimate) {
   SafetyMonitor monitor = enabledMonitor();
-  monitor.onRange(0.0, "a", 3.0);
-  monitor.onEstimate(0.0, true);
-  EXPECT_TRUE(monitor.onRange(0.05, "b", 1.0));
+  monitor.onRange(0.0, 0.0, "a", 3.0);
+  monitor.onEstimate(0.0, 0.0, true);
+  EXPECT_TRUE(monitor.onRange(0.05, 0.05, "b", 1.0));
   const SafetyDecision d = monitor.evaluate(0.1);
   EXPECT_FALSE(d.may_move);
   EXPECT_EQ(d.reason, StopReason::kTooClose);
@@ -65,41 +65,41 @@ TEST(SafetyMonitor, CloseRangeStopsEvenWithAGoodEstimate) {
 
 TEST(SafetyMonitor, NanRangeCountsAsTooClose) {
   SafetyMonitor monitor = enabledMonitor();
-  EXPECT_TRUE(monitor.onRange(0.0, "a", std::numeric_limits<double>::quiet_NaN()));
+  EXPECT_TRUE(monitor.onRange(0.0, 0.0, "a", std::numeric_limits<double>::quiet_NaN()));
 }
 
 TEST(SafetyMonitor, ResumesOnlyAfterHoldTime) {
   SafetyParams params;
   params.hold_time = 1.0;
   SafetyMonitor monitor = enabledMonitor(params);
-  monitor.onRange(0.0, "a", 1.0);
-  monitor.onEstimate(0.0, true);
+  monitor.onRange(0.0, 0.0, "a", 1.0);
+  monitor.onEstimate(0.0, 0.0, true);
   EXPECT_FALSE(monitor.evaluate(0.0).may_move);
-  monitor.onRange(0.2, "a", 2.0);
-  monitor.onEstimate(0.5, true);
+  monitor.onRange(0.2, 0.2, "a", 2.0);
+  monitor.onEstimate(0.5, 0.5, true);
   const SafetyDecision held = monitor.evaluate(0.6);
   EXPECT_FALSE(held.may_move);
   EXPECT_EQ(held.reason, StopReason::kTooClose);
-  monitor.onRange(1.0, "a", 2.0);
-  monitor.onEstimate(1.0, true);
+  monitor.onRange(1.0, 1.0, "a", 2.0);
+  monitor.onEstimate(1.0, 1.0, true);
   EXPECT_TRUE(monitor.evaluate(1.05).may_move);
 }
 
 TEST(SafetyMonitor, StaleAndLostEstimatesStop) {
   SafetyMonitor monitor = enabledMonitor();
-  monitor.onRange(0.0, "a", 3.0);
+  monitor.onRange(0.0, 0.0, "a", 3.0);
   EXPECT_EQ(monitor.evaluate(0.0).reason, StopReason::kNoEstimateYet);
-  monitor.onEstimate(0.0, true);
-  monitor.onRange(0.6, "a", 3.0);
+  monitor.onEstimate(0.0, 0.0, true);
+  monitor.onRange(0.6, 0.6, "a", 3.0);
   EXPECT_EQ(monitor.evaluate(0.6).reason, StopReason::kEstimateStale);
-  monitor.onEstimate(0.7, false);
+  monitor.onEstimate(0.7, 0.7, false);
   EXPECT_EQ(monitor.evaluate(0.7).reason, StopReason::kTargetLost);
 }
 
 TEST(SafetyMonitor, SilentRangeSourcesStop) {
   SafetyMonitor monitor = enabledMonitor();
-  monitor.onRange(0.0, "a", 3.0);
-  monitor.onEstimate(1.5, true);
+  monitor.onRange(0.0, 0.0, "a", 3.0);
+  monitor.onEstimate(1.5, 1.5, true);
   EXPECT_EQ(monitor.evaluate(1.5).reason, StopReason::kRangesSilent);
 }
 
@@ -107,9 +107,9 @@ TEST(SafetyMonitor, ForgetsASilentCloseSourceWhileOthersReport) {
   SafetyParams params;
   params.hold_time = 0.0;
   SafetyMonitor monitor = enabledMonitor(params);
-  monitor.onRange(0.0, "dead", 1.0);
-  monitor.onRange(1.5, "alive", 3.0);
-  monitor.onEstimate(1.5, true);
+  monitor.onRange(0.0, 0.0, "dead", 1.0);
+  monitor.onRange(1.5, 1.5, "alive", 3.0);
+  monitor.onEstimate(1.5, 1.5, true);
   EXPECT_TRUE(monitor.evaluate(1.6).may_move);
 }
 
@@ -117,15 +117,15 @@ TEST(SafetyMonitor, WithoutRangeWatchOnlyTheEstimateCounts) {
   SafetyParams params;
   params.watch_ranges = false;
   SafetyMonitor monitor = enabledMonitor(params);
-  monitor.onEstimate(0.0, true);
+  monitor.onEstimate(0.0, 0.0, true);
   EXPECT_TRUE(monitor.evaluate(0.1).may_move);
 }
 
 TEST(SafetyMonitor, NearestRangeIsTheSmallestFreshOne) {
   SafetyMonitor monitor = enabledMonitor();  // range_timeout 1 s
   EXPECT_EQ(monitor.nearestRange(0.0), std::numeric_limits<double>::infinity());
-  monitor.onRange(0.0, "a", 1.5);
-  monitor.onRange(0.5, "b", 2.0);
+  monitor.onRange(0.0, 0.0, "a", 1.5);
+  monitor.onRange(0.5, 0.5, "b", 2.0);
   EXPECT_EQ(monitor.nearestRange(0.6), 1.5);
   EXPECT_EQ(monitor.nearestRange(1.2), 2.0);  // "a" is older than range_timeout
   EXPECT_EQ(monitor.nearestRange(2.0), std::numeric_limits<double>::infinity());
@@ -136,6 +136,173 @@ TEST(SafetyParams, ValidateRejectsNegativeSafeDistance) {
   params.safe_distance = -1.0;
   EXPECT_THROW(params.validate(), ParamError);
   EXPECT_NO_THROW(SafetyParams().validate());
+}
+
+TEST(SafetyParams, PhysicalBoundsNotJustSigns) {
+  const auto refused = [](auto change) {
+    SafetyParams p;
+    change(p);
+    EXPECT_THROW(p.validate(), ParamError);
+  };
+  refused([](SafetyParams& p) { p.safe_distance = 0.0; });
+  refused([](SafetyParams& p) { p.safe_distance = 0.1; });
+  refused([](SafetyParams& p) { p.estimate_timeout = 1e9; });
+  refused([](SafetyParams& p) { p.range_timeout = 60.0; });
+  refused([](SafetyParams& p) { p.hold_time = 1e6; });
+}
+
+// One estimate stamped in the future must not keep the robot driving after the locator
+// dies (it used to win the "newest stamp" comparison for as long as it was ahead).
+TEST(SafetyMonitorTime, EstimateFromTheFutureIsRefusedAndStops) {
+  SafetyMonitor monitor = enabledMonitor();
+  monitor.onRange(0.0, 0.0, "a", 3.0);
+  monitor.onEstimate(0.0, 0.0, true);
+  ASSERT_TRUE(monitor.evaluate(0.05).may_move);
+  EXPECT_FALSE(monitor.onEstimate(30.0, 0.1, true));  // 29.9 s ahead
+  monitor.onRange(0.1, 0.1, "a", 3.0);
+  EXPECT_EQ(monitor.evaluate(0.15).reason, StopReason::kFutureStamp);
+  // The locator is dead from here on; ranges keep coming. Never moves again.
+  for (double t = 0.2; t < 10.0; t += 0.05) {
+    monitor.onRange(t, t, "a", 3.0);
+    ASSERT_FALSE(monitor.evaluate(t).may_move) << "t=" << t;
+  }
+  EXPECT_EQ(monitor.time().futureRefused(), 1u);
+}
+
+TEST(SafetyMonitorTime, RangeFromTheFutureStopsAtOnce) {
+  SafetyMonitor monitor = enabledMonitor();
+  monitor.onRange(0.0, 0.0, "a", 3.0);
+  monitor.onEstimate(0.0, 0.0, true);
+  EXPECT_TRUE(monitor.onRange(5.0, 0.1, "a", 3.0));
+  EXPECT_FALSE(monitor.evaluate(0.1).may_move);
+  // Within tolerance (another machine's clock a few ms ahead) is fine.
+  SafetyMonitor skewed = enabledMonitor();
+  EXPECT_FALSE(skewed.onRange(0.02, 0.0, "a", 3.0));
+}
+
+// A short range that arrives late (stamp older than range_timeout) used to stop the robot
+// for one tick in three: the hold ran from its stamp, already in the past.
+TEST(SafetyMonitorTime, StaleShortRangeHoldsFromItsReceiveTimeWithoutFlapping) {
+  SafetyMonitor monitor = enabledMonitor();  // hold_time 1 s, range_timeout 1 s
+  double t = 0.0;
+  for (; t < 2.0; t += 0.1) {
+    monitor.onRange(t, t, "a", 3.0);
+    monitor.onEstimate(t, t, true);
+  }
+  ASSERT_TRUE(monitor.evaluate(t).may_move);
+  const double received = t;
+  EXPECT_TRUE(monitor.onRange(received - 1.5, received, "b", 0.8));
+  for (; t < received + 1.0 - 1e-9; t += 0.05) {
+    monitor.onRange(t, t, "a", 3.0);
+    monitor.onEstimate(t, t, true);
+    ASSERT_FALSE(monitor.evaluate(t).may_move) << "t=" << t;
+  }
+  monitor.onRange(t + 0.05, t + 0.05, "a", 3.0);
+  monitor.onEstimate(t + 0.05, t + 0.05, true);
+  EXPECT_TRUE(monitor.evaluate(t + 0.05).may_move);
+}
+
+// A bag looped under /use_sim_time: the clock goes from 100 s back to 0 s. The old
+// stamps must not freeze the monitor (nothing would ever be newer) nor be trusted.
+TEST(SafetyMonitorTime, ClockJumpBackResetsInsteadOfFreezing) {
+  SafetyMonitor monitor = enabledMonitor();
+  for (double t = 99.0; t <= 100.0; t += 0.1) {
+    monitor.onRange(t, t, "a", 3.0);
+    monitor.onEstimate(t, t, true);
+  }
+  ASSERT_TRUE(monitor.evaluate(100.0).may_move);
+  EXPECT_FALSE(monitor.evaluate(0.0).may_move);
+  EXPECT_EQ(monitor.time().clockJumps(), 1u);
+  double t = 0.05;
+  for (; t < 1.0; t += 0.05) {
+    monitor.onRange(t, t, "a", 3.0);
+    monitor.onEstimate(t, t, true);
+    ASSERT_FALSE(monitor.evaluate(t).may_move) << "held after the jump, t=" << t;
+  }
+  for (; t < 1.3; t += 0.05) {
+    monitor.onRange(t, t, "a", 3.0);
+    monitor.onEstimate(t, t, true);
+  }
+  EXPECT_TRUE(monitor.evaluate(t).may_move);  // resumed on the new clock
+}
+
+// Property over adversarial stamps (future, past, duplicates, clock jumps back) and
+// values (NaN, short): whenever the monitor lets the robot move,
+//  - an estimate was received within estimate_timeout (+ tolerance) whose stamp was not
+//    from the future and is itself within estimate_timeout of now;
+//  - no stamp from the future, no short or NaN range and no clock jump was received in
+//    the last hold_time;
+//  - at least one range stamped within range_timeout was received.
+TEST(SafetyMonitorProperty, AdversarialStampsNeverLetItMoveUnsafely) {
+  std::mt19937 rng(4242);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int moves = 0;
+  int events = 0;
+  for (int run = 0; run < 300; ++run) {
+    SafetyParams params;
+    SafetyMonitor monitor(params);
+    monitor.setEnabled(true);
+    double now = 10.0;
+    double last_hazard = -1e9;  // receive time of a future stamp / short range / jump
+    double last_good_estimate_stamp = -1e9;
+    double last_good_estimate_rx = -1e9;
+    double last_fresh_range_stamp = -1e9;
+    for (int step = 0; step < 400; ++step) {
+      const double u = unit(rng);
+      if (u < 0.01 && step > 0) {
+        now -= 5.0 + 20.0 * unit(rng);  // jump back
+        last_hazard = now;
+        last_good_estimate_stamp = last_good_estimate_rx = -1e9;
+        last_fresh_range_stamp = -1e9;
+      } else {
+        now += 0.02 + 0.1 * unit(rng);
+      }
+      // Stamp: mostly fresh, sometimes old, sometimes far or slightly in the future.
+      const double kind = unit(rng);
+      double stamp = now - 0.05 * unit(rng);
+      if (kind < 0.05) {
+        stamp = now + 0.2 + 50.0 * unit(rng);
+      } else if (kind < 0.1) {
+        stamp = now - 2.0 * unit(rng);
+      } else if (kind < 0.12) {
+        stamp = std::numeric_limits<double>::quiet_NaN();
+      }
+      const bool future = !(stamp <= now + kFutureStampTolerance);
+      ++events;
+      if (unit(rng) < 0.5) {
+        double range = 1.0 + 3.0 * unit(rng);
+        if (unit(rng) < 0.02) {
+          range = std::numeric_limits<double>::quiet_NaN();
+        }
+        monitor.onRange(stamp, now, "m" + std::to_string(step % 3), range);
+        if (future || !(range >= params.safe_distance)) {
+          last_hazard = now;
+        } else if (now - stamp <= params.range_timeout) {
+          last_fresh_range_stamp = std::max(last_fresh_range_stamp, stamp);
+        }
+      } else {
+        monitor.onEstimate(stamp, now, true);
+        if (future) {
+          last_hazard = now;
+        } else {
+          last_good_estimate_stamp = std::max(last_good_estimate_stamp, stamp);
+          last_good_estimate_rx = now;
+        }
+      }
+      if (monitor.evaluate(now).may_move) {
+        ++moves;
+        ASSERT_GE(now - last_hazard, params.hold_time) << "run " << run << " step " << step;
+        ASSERT_LE(now - last_good_estimate_stamp, params.estimate_timeout)
+            << "run " << run << " step " << step;
+        ASSERT_LE(now - last_good_estimate_rx, params.estimate_timeout + 2.0)
+            << "run " << run << " step " << step;
+        ASSERT_LE(now - last_fresh_range_stamp, params.range_timeout)
+            << "run " << run << " step " << step;
+      }
+    }
+  }
+  EXPECT_GT(moves, 1000);  // the generator must let it move, or the property says nothing
+  EXPECT_GT(events, 100000);
 }
 
 // Property: over random event sequences, whenever the newest range of any source heard
@@ -165,12 +332,12 @@ TEST(SafetyMonitorProperty, StopConditionAlwaysGivesZeroCommand) {
       if (event < 5) {
         const std::string source = sources[event % 3];
         const double range = range_dist(rng);
-        monitor.onRange(now, source, range);
+        monitor.onRange(now, now, source, range);
         newest[source] = {now, range};
       } else if (event < 8) {
         // Stamps may lag the receive time, as estimates do.
         const double stamp = now - dt_dist(rng);
-        monitor.onEstimate(stamp, true);
+        monitor.onEstimate(stamp, now, true);
         estimate_stamp = std::max(estimate_stamp, stamp);
       } else if (event == 8) {
         enabled = !enabled;

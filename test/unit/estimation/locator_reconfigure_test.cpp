@@ -2,16 +2,18 @@
 // Live tuning of the locator core: Locator::setConfig and KalmanFilter::reconfigure.
 #include <gtest/gtest.h>
 
+#include "../../support/true_ranges.hpp"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/estimation/locator.hpp"
-#include "../../support/true_ranges.hpp"
 
 namespace radio_follow {
 namespace {
 
 using test::feedRanges;
 /// These tests feed true ranges: the layout without its range calibration.
-Layout spotTwr() { return test::uncalibratedLayout("spot_twr.yaml"); }
+Layout spotTwr() {
+  return test::uncalibratedLayout("spot_twr.yaml");
+}
 
 TEST(LocatorSetConfig, NoiseChangesKeepTheTrack) {
   LocatorConfig config;
@@ -38,6 +40,7 @@ TEST(LocatorSetConfig, NoiseChangesKeepTheTrack) {
 
 TEST(LocatorSetConfig, MotionModelChangeRestartsTheFilter) {
   LocatorConfig config;
+  config.motion_model = MotionModel::kConstantPosition;  // the thesis's, to switch from
   Locator locator(spotTwr(), config);
   const Eigen::Vector3d truth(-2.0, 3.0, config.height);
   feedRanges(locator, truth, 1.0);
@@ -54,6 +57,7 @@ TEST(LocatorSetConfig, MotionModelChangeRestartsTheFilter) {
 
 TEST(LocatorSetConfig, InvalidOrModeChangingConfigIsRefusedAndTheOldOneKept) {
   LocatorConfig config;
+  config.motion_model = MotionModel::kConstantPosition;  // state size 2 in the plane
   Locator locator(spotTwr(), config);
   LocatorConfig bad = config;
   bad.range_sigma = -0.1;
