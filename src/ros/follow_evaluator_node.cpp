@@ -127,6 +127,13 @@ void FollowEvaluatorNode::onFinished(const std_msgs::BoolConstPtr& msg) {
 }
 
 void FollowEvaluatorNode::onTick(const ros::TimerEvent& event) {
+  if (time_.jumpedBack(event.current_real.toSec())) {
+    // A restarted simulator or a looped bag: the samples so far belong to another run.
+    ROS_WARN("follow_evaluator: the clock jumped back, metrics start over");
+    metrics_ = sim::FollowMetrics(params_.settings);
+    relative_history_.clear();
+    estimate_.reset();
+  }
   if (finished_ || !odom_ || !truth_ || relative_history_.empty()) {
     return;
   }
@@ -147,7 +154,11 @@ void FollowEvaluatorNode::onTick(const ros::TimerEvent& event) {
   s.truth_y = relative->point.y;
   const bool usable = estimate_ && (estimate_->status == TargetEstimate::STATUS_OK ||
                                     estimate_->status == TargetEstimate::STATUS_DEGRADED);
-  if (usable && (event.current_real - estimate_->header.stamp).toSec() <= kEstimateMaxAge) {
+  // An estimate from the future is not available, whatever it claims (TimePolicy).
+  const bool trusted =
+      usable && time_.check(estimate_->header.stamp.toSec(), event.current_real.toSec()) ==
+                    TimePolicy::Verdict::kFresh;
+  if (trusted && (event.current_real - estimate_->header.stamp).toSec() <= kEstimateMaxAge) {
     // Compare with the truth closest to the estimate's stamp.
     const ros::Time stamp = estimate_->header.stamp;
     const auto closest = std::min_element(relative_history_.begin(), relative_history_.end(),

@@ -49,12 +49,15 @@ PathFollowerNode::PathFollowerNode(ros::NodeHandle& nh, ros::NodeHandle& private
   requireKnownParams();
   path_pub_ = private_nh_.advertise<nav_msgs::Path>("path", 1, true);
   estimate_sub_ = nh_.subscribe("target", 5, &PathFollowerNode::onEstimate, this);
-  law_reconfigure_ = makeFollowLawReconfigure(private_nh, law_params_,
-                                              [this](const control::VelocityLawParams& p) {
-                                                law_params_ = p;
-                                                fallback_law_.setParams(p);
-                                                speed_pid_.setGains(p.linear);
-                                              });
+  law_reconfigure_ =
+      makeFollowLawReconfigure(private_nh, law_params_, [this](control::VelocityLawParams p) {
+        p = control::VelocityLaw::withCommon(p, common().safety.safe_distance,
+                                             common().limits.max_linear);
+        p.validate();  // against the safety layer now
+        law_params_ = p;
+        fallback_law_.setParams(p);
+        speed_pid_.setGains(p.linear);
+      });
   start();
 }
 

@@ -70,8 +70,14 @@ VelocityControllerNode::VelocityControllerNode(ros::NodeHandle& nh, ros::NodeHan
   estimate_sub_ = nh_.subscribe("target", 5, &VelocityControllerNode::onEstimate, this);
   // Speed caps come from the common limits; the law's own fields are tuned on ~law.
   law_reconfigure_ =
-      makeFollowLawReconfigure(private_nh, law_.params(),
-                               [this](const control::VelocityLawParams& p) { law_.setParams(p); });
+      makeFollowLawReconfigure(private_nh, law_.params(), [this](control::VelocityLawParams p) {
+        // The server's copy of the common values may be older than a change on ~: check
+        // the law against the safety layer as it is now (throws ParamError to refuse).
+        p = control::VelocityLaw::withCommon(p, common().safety.safe_distance,
+                                             common().limits.max_linear);
+        p.validate();
+        law_.setParams(p);
+      });
   start();
 }
 

@@ -120,7 +120,7 @@ TEST_F(LiveTuning, ControllerSafeDistanceKeepsItsValidation) {
 TEST_F(LiveTuning, ControllerLawGainsAndDistancesAreTunable) {
   const auto start = call(dynamic_reconfigure::Config(), kLawService);
   EXPECT_DOUBLE_EQ(doubleOf(start, "follow_distance"), 2.2);  // launch file, not the .cfg
-  EXPECT_DOUBLE_EQ(doubleOf(start, "linear_pid_kp"), 0.8);    // the node's default
+  EXPECT_DOUBLE_EQ(doubleOf(start, "linear_pid_kp"), 1.0);    // the node's default
   const auto closer = call(withDouble("follow_distance", 1.8), kLawService);
   EXPECT_DOUBLE_EQ(doubleOf(closer, "follow_distance"), 1.8);
   const auto gain = call(withDouble("linear_pid_kp", 1.2), kLawService);
@@ -130,6 +130,22 @@ TEST_F(LiveTuning, ControllerLawGainsAndDistancesAreTunable) {
   EXPECT_DOUBLE_EQ(doubleOf(negative, "follow_distance"), 1.8);
   const auto factor = call(withDouble("feed_forward", 1.5), kLawService);
   EXPECT_DOUBLE_EQ(doubleOf(factor, "feed_forward"), 1.0);
+}
+
+// The same physical bounds as at start (issue 12): in live tuning too, no stop distance
+// the follow law cannot clear, no freshness timeout of minutes, no stop distance of 0.
+// Runs after the two tests above: safe_distance 1.6 m, follow_distance 1.8 m.
+TEST_F(LiveTuning, SafetyBoundsHoldInLiveTuning) {
+  const auto tiny = call(withDouble("safe_distance", 0.1), kControllerService);
+  EXPECT_DOUBLE_EQ(doubleOf(tiny, "safe_distance"), 1.6);
+  // 1.7 m > follow_distance 1.8 - closing_distance 0.2: the law would still drive there.
+  const auto beyond = call(withDouble("safe_distance", 1.7), kControllerService);
+  EXPECT_DOUBLE_EQ(doubleOf(beyond, "safe_distance"), 1.6);
+  EXPECT_DOUBLE_EQ(param("safe_distance", "velocity_controller"), 1.6);
+  const auto closer = call(withDouble("follow_distance", 1.7), kLawService);
+  EXPECT_DOUBLE_EQ(doubleOf(closer, "follow_distance"), 1.8);
+  const auto slow = call(withDouble("estimate_timeout", 9.0), kControllerService);
+  EXPECT_DOUBLE_EQ(doubleOf(slow, "estimate_timeout"), 0.5);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 
 #include <Eigen/Geometry>
 #include <atomic>
+#include <cctype>
 #include <cmath>
 #include <thread>
 
@@ -18,6 +19,13 @@
 #include "radio_follow/config/layout.hpp"
 
 namespace {
+
+std::string lower(std::string s) {
+  for (char& c : s) {
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  return s;
+}
 
 // The person stands 4 m ahead, 1 m to the left, tag at the configured 1.0 m height.
 const Eigen::Vector3d kTruth(4.0, 1.0, 1.0);
@@ -48,9 +56,11 @@ void playDrivers() {
       radio_follow::UwbRanges msg;
       msg.header.stamp = now;
       msg.header.frame_id = m.frame_id;
-      msg.tag_id = m.id;
+      // In lower case, as a bag or another driver may write them: IDs are normalised
+      // where they enter, so "5a84"/"da12" must match the layout's "5A84"/"DA12".
+      msg.tag_id = lower(m.id);
       radio_follow::UwbRange target;
-      target.anchor_id = layout.target_anchor_id;
+      target.anchor_id = lower(layout.target_anchor_id);
       target.range = rawRange(m, (kTruth - m.position).norm());
       radio_follow::UwbRange other;  // another anchor of the network: must be ignored
       other.anchor_id = "0B0B";

@@ -11,6 +11,7 @@
 #include <deque>
 #include <string>
 
+#include "radio_follow/common/time_policy.hpp"
 #include "radio_follow/sim/follow_metrics.hpp"
 
 namespace radio_follow {
@@ -44,6 +45,7 @@ class FollowEvaluatorNode {
 
   Params params_;
   sim::FollowMetrics metrics_;
+  TimePolicy time_;
   ros::Subscriber odom_sub_, truth_sub_, relative_sub_, estimate_sub_, cmd_sub_;
   ros::Timer timer_;
   ros::Timer write_timer_;

@@ -91,6 +91,37 @@ TEST(Layout, RejectsBadFieldsNamingThem) {
   expectRejected("just text", "layout");
 }
 
+// A misspelt key used to drop what it held without a word (`twr_module:` lost every module
+// and the controller drove on while 0.5 m ranges arrived).
+TEST(Layout, MisspeltKeysAreRefused) {
+  expectRejected("target: {uwb_anchor_id: X}\ntwr_module: [{id: '1', position: [0, 0, 0]}]",
+                 "twr_module");
+  expectRejected(
+      "target: {uwb_anchor_id: X}\n"
+      "twr_modules: [{id: '1', position: [0, 0, 0], calibraton: [0.1, 1.0]}]",
+      "twr_modules[0].calibraton");
+  expectRejected("target: {uwb_anchor_id: X, aoa_tag: Y}\ntwr_modules: []", "target.aoa_tag");
+  expectRejected("aoa_boards: [{id: b, position: [0, 0, 0], fov_deg: 60}]",
+                 "aoa_boards[0].fov_deg");
+}
+
+TEST(Layout, IdsAreNormalisedAtParseTime) {
+  const Layout layout = parseLayout(R"(
+target: {uwb_anchor_id: "da12", aoa_tag_id: "ccf9578e0d8a"}
+twr_modules:
+  - {id: "5a84", position: [0, 0, 0]}
+tdoa_anchors:
+  - {id: "a1", position: [1, 0, 0]}
+  - {id: "b2", position: [0, 1, 0]}
+)",
+                                    "test");
+  EXPECT_EQ(layout.target_anchor_id, "DA12");
+  EXPECT_EQ(layout.target_tag_id, "CCF9578E0D8A");
+  EXPECT_EQ(layout.twr_modules[0].id, "5A84");
+  EXPECT_NE(layout.findTwrModule("5a84"), nullptr);  // a message's lower-case ID
+  EXPECT_NE(layout.findTdoaAnchor("a1"), nullptr);
+}
+
 TEST(Layout, ConventionalTopicsFollowTheSensorIds) {
   const SensorTopics topics = conventionalTopics(parseLayout(kMinimal, "test"));
   EXPECT_EQ(topics.uwb, (std::vector<std::string>{"uwb/5722/ranges", "uwb/5A84/ranges"}));

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "radio_follow/common/angles.hpp"
@@ -212,6 +213,38 @@ TEST(HomingParams, ValidateRejectsBadK) {
   params.k = 1.5;
   EXPECT_THROW(params.validate(), ParamError);
   EXPECT_NO_THROW(HomingParams().validate());
+}
+
+}  // namespace
+}  // namespace control
+}  // namespace radio_follow
+
+namespace radio_follow {
+namespace control {
+namespace {
+
+// One NaN odometry pose used to enter the parallax estimate and make every later goal
+// NaN; a non-finite reading is now refused and the estimate recovers with good data.
+TEST(HybridHomingInput, NonFiniteReadingIsRefusedAndTheGoalStaysFinite) {
+  HomingParams params;
+  HybridHoming homing(params);
+  const Eigen::Vector2d target(5.0, 2.0);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (int i = 0; i < 40; ++i) {
+    const Eigen::Vector2d robot(0.1 * i, 0.05 * i);
+    const Eigen::Vector2d d = target - robot;
+    if (i == 10) {
+      homing.update(Eigen::Vector2d(nan, 0.0), std::atan2(d.y(), d.x()), d.norm());
+      homing.update(robot, nan, d.norm());
+    }
+    homing.update(robot, std::atan2(d.y(), d.x()), d.norm());
+    if (homing.goal()) {
+      ASSERT_TRUE(homing.goal()->allFinite()) << "step " << i;
+    }
+  }
+  EXPECT_EQ(homing.refused(), 2u);
+  ASSERT_TRUE(homing.goal().has_value());
+  EXPECT_LT((*homing.goal() - target).norm(), 0.2);
 }
 
 }  // namespace

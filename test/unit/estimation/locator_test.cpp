@@ -3,15 +3,17 @@
 
 #include <gtest/gtest.h>
 
-#include "radio_follow/common/param_error.hpp"
 #include "../../support/true_ranges.hpp"
+#include "radio_follow/common/param_error.hpp"
 
 namespace radio_follow {
 namespace {
 
 using test::feedRanges;
 /// These tests feed true ranges: the layouts without their range calibration.
-Layout layoutFile(const std::string& name) { return test::uncalibratedLayout(name); }
+Layout layoutFile(const std::string& name) {
+  return test::uncalibratedLayout(name);
+}
 
 void feedBearing(Locator& locator, const AoaBoard& board, const Eigen::Vector3d& from, double rssi,
                  double t) {
@@ -42,6 +44,40 @@ TEST(Locator, ThreeRangesGiveAPositionThatGoesStale) {
   // Nothing new: after max_age every range is dropped and the target is lost.
   EXPECT_EQ(locator.update(10.0 + config.max_age + 0.01).status, TargetStatus::kLost);
   EXPECT_EQ(locator.stats().stale_dropped, 3u);
+}
+
+// Measurements stamped ahead of the clock never age: the locator kept publishing OK
+// estimates 80 s ahead with no input at all. Now they are dropped (and counted).
+TEST(Locator, MeasurementsFromTheFutureAreDroppedNotKeptFresh) {
+  LocatorConfig config;
+  Locator locator(layoutFile("spot_twr.yaml"), config);
+  const Eigen::Vector3d truth(-2.0, 3.0, config.height);
+  feedRanges(locator, truth, 90.0);  // a clock 80 s ahead
+  EXPECT_EQ(locator.update(10.0).status, TargetStatus::kLost);
+  EXPECT_EQ(locator.stats().future_dropped, 3u);
+  EXPECT_EQ(locator.update(11.0).status, TargetStatus::kLost);  // gone, not waiting
+}
+
+// A bag looped under /use_sim_time: the clock goes back; the locator starts over and
+// tracks on the new clock instead of freezing on slots stamped in its future.
+TEST(Locator, ClockJumpBackStartsOver) {
+  LocatorConfig config;
+  Locator locator(layoutFile("spot_twr.yaml"), config);
+  const Eigen::Vector3d truth(-2.0, 3.0, config.height);
+  feedRanges(locator, truth, 50.0);
+  ASSERT_EQ(locator.update(50.05).status, TargetStatus::kOk);
+  EXPECT_EQ(locator.update(1.0).status, TargetStatus::kLost);
+  feedRanges(locator, truth, 1.1);
+  const LocatorEstimate e = locator.update(1.15);
+  EXPECT_EQ(e.status, TargetStatus::kOk);
+  EXPECT_LT((e.position - truth).norm(), 1e-3);
+}
+
+TEST(Locator, ImplausibleRangesAreRefused) {
+  Locator locator(layoutFile("spot_twr.yaml"), LocatorConfig{});
+  EXPECT_FALSE(locator.addRange("5722", 1e154, 0.0));  // a long plain number from a device
+  EXPECT_FALSE(locator.addRange("5722", kMaxPlausibleRange + 1.0, 0.0));
+  EXPECT_EQ(locator.stats().invalid_measurements, 2u);
 }
 
 TEST(Locator, OneRangeAloneIsLost) {
