@@ -15,6 +15,8 @@ port=11711
 export ROS_MASTER_URI="http://localhost:$port"
 export ROS_HOME="${ROS_HOME:-$RF_WS/ros_home}"
 bin="$RF_WS/devel/lib/radio_follow"
+# RF_CONTROLLER=/path/to/velocity_controller measures another build (e.g. an older commit).
+controller_bin="${RF_CONTROLLER:-$bin/velocity_controller}"
 pids=()
 cleanup() { kill "${pids[@]}" 2>/dev/null || true; wait 2>/dev/null || true; }
 trap cleanup EXIT
@@ -27,7 +29,7 @@ for rate in 50 10; do
   rosparam set /velocity_controller/range_topics '[uwb_ranges]'
   rosparam set /velocity_controller/target_anchor_id ABCD
   rosparam set /velocity_controller/start_enabled true
-  "$bin/velocity_controller" >/dev/null 2>&1 & controller=$!
+  "$controller_bin" >/dev/null 2>&1 & controller=$!
   "$bin/bench_stop_latency" --echo >/dev/null 2>&1 & relay=$!
   sleep 2
   "$bin/bench_stop_latency" "$trials" "$rate"

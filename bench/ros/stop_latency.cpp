@@ -47,11 +47,12 @@ struct Series {
     std::sort(ms.begin(), ms.end());
     const auto at = [&](double q) { return ms[static_cast<std::size_t>(q * (ms.size() - 1))]; };
     std::printf("%-34s n=%3zu  p50 %7.2f ms  p90 %7.2f ms  max %7.2f ms  p50/relay %5.2f\n", name,
-                ms.size(), at(0.5), at(0.9), ms.back(), baseline_p50 > 0 ? at(0.5) / baseline_p50 : 1.0);
+                ms.size(), at(0.5), at(0.9), ms.back(),
+                baseline_p50 > 0 ? at(0.5) / baseline_p50 : 1.0);
   }
   double p50() {
     std::sort(ms.begin(), ms.end());
-    return ms[ms.size() / 2];
+    return ms[static_cast<std::size_t>(0.5 * (ms.size() - 1))];
   }
 };
 
@@ -61,8 +62,8 @@ class Bench {
       : range_pub_(nh.advertise<radio_follow::UwbRanges>("uwb_ranges", 100)),
         estimate_pub_(nh.advertise<radio_follow::TargetEstimate>("target", 100)),
         echo_pub_(nh.advertise<radio_follow::UwbRanges>("echo_in", 10)),
-        cmd_sub_(nh.subscribe("cmd_vel", 100, &Bench::onCmd, this,
-                              ros::TransportHints().tcpNoDelay())),
+        cmd_sub_(
+            nh.subscribe("cmd_vel", 100, &Bench::onCmd, this, ros::TransportHints().tcpNoDelay())),
         echo_sub_(nh.subscribe("echo_out", 10, &Bench::onEcho, this,
                                ros::TransportHints().tcpNoDelay())) {}
 
