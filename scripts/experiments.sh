@@ -2,8 +2,9 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # Runs the closed-loop experiments (test/ros/experiments/*.test: the thesis's Experiment 3
 # analogues and the fault runs) one by one and prints the table of doc/experiments.md.
-# Arguments: experiment names to run (default: all). The test command runs the same
-# experiments as part of every test run.
+# Arguments: [--seed N] experiment names to run (default: all). --seed sets the simulated
+# noise seed of every run (default 1, what the test command runs; the .test files read it
+# from RF_SEED). The test command runs the same experiments as part of every test run.
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$repo/scripts/setup.sh"
@@ -12,6 +13,10 @@ bash "$repo/scripts/build.sh" tests
 source "$repo/scripts/env.sh"
 export ROS_HOME="${ROS_HOME:-$RF_WS/ros_home}"
 root="$ROS_HOME/radio_follow_experiments"
+if [ "${1:-}" = "--seed" ]; then
+  export RF_SEED="$2"
+  shift 2
+fi
 names=("$@")
 if [ ${#names[@]} -eq 0 ]; then
   for f in "$repo"/test/ros/experiments/*.test; do names+=("$(basename "$f" .test)"); done
