@@ -28,11 +28,14 @@ TEST(HomingController, PublishesGoalHomesAndArrives) {
   std::mutex goal_mutex;
   geometry_msgs::PoseStamped goal;
   bool has_goal = false;
+  int non_finite_goals = 0;
   ros::Subscriber goal_sub = nh.subscribe<geometry_msgs::PoseStamped>(
       "homing_controller/goal", 10, [&](const geometry_msgs::PoseStamped::ConstPtr& msg) {
         std::lock_guard<std::mutex> lock(goal_mutex);
         goal = *msg;
         has_goal = true;
+        non_finite_goals +=
+            !std::isfinite(msg->pose.position.x) || !std::isfinite(msg->pose.position.y);
       });
   HomingSimulator sim(nh);
 
@@ -46,11 +49,17 @@ TEST(HomingController, PublishesGoalHomesAndArrives) {
     EXPECT_NEAR(goal.pose.position.x, kTargetX, 0.3);
     EXPECT_NEAR(goal.pose.position.y, kTargetY, 0.3);
   }
+  // One NaN odometry message used to make every later goal NaN: refused, homing goes on.
+  sim.corruptOdometry(1);
 
   ASSERT_TRUE(
       waitFor([&] { return rec.lastStatus().state == FollowerStatus::STATE_ARRIVED; }, 40.0))
       << "last status: " << rec.lastStatus().text << ", distance " << sim.distanceToTarget();
   EXPECT_LT(sim.distanceToTarget(), 0.4);
+  {
+    std::lock_guard<std::mutex> lock(goal_mutex);
+    EXPECT_EQ(non_finite_goals, 0);
+  }
   ros::WallDuration(0.3).sleep();
   EXPECT_TRUE(isZero(rec.lastCmd()));
 

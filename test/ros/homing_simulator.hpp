@@ -26,6 +26,12 @@ class HomingSimulator {
         cmd_sub_(nh.subscribe("cmd_vel", 10, &HomingSimulator::onCmd, this)),
         timer_(nh.createTimer(ros::Duration(0.05), &HomingSimulator::tick, this)) {}
 
+  /// The next `count` odometry messages carry a NaN pose (a driver glitch).
+  void corruptOdometry(int count) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    nan_odometry_ = count;
+  }
+
   double distanceToTarget() {
     std::lock_guard<std::mutex> lock(mutex_);
     return std::hypot(kTargetX - x_, kTargetY - y_);
@@ -53,6 +59,10 @@ class HomingSimulator {
     odom.pose.pose.position.y = y_;
     odom.pose.pose.orientation.z = std::sin(0.5 * yaw_);
     odom.pose.pose.orientation.w = std::cos(0.5 * yaw_);
+    if (nan_odometry_ > 0) {
+      --nan_odometry_;
+      odom.pose.pose.position.x = std::nan("");
+    }
     odom_pub_.publish(odom);
 
     radio_follow::AoaBearing b;
@@ -69,6 +79,7 @@ class HomingSimulator {
 
   std::mutex mutex_;
   double x_ = 0.0, y_ = 0.0, yaw_ = 0.0, v_ = 0.0, w_ = 0.0;
+  int nan_odometry_ = 0;
   ros::Publisher odom_pub_;
   ros::Publisher bearing_pub_;
   ros::Subscriber cmd_sub_;

@@ -30,6 +30,8 @@ std::string lower(std::string s) {
 // The person stands 4 m ahead, 1 m to the left, tag at the configured 1.0 m height.
 const Eigen::Vector3d kTruth(4.0, 1.0, 1.0);
 std::atomic<bool> g_publishing{true};
+std::atomic<bool> g_running{true};
+std::atomic<double> g_stamp_offset{0.0};  // s added to every stamp: a clock ahead
 
 /// The raw reading a module reports for a true range: the inverse of the layout's linear
 /// calibration (the drivers report raw ranges; the locator calibrates them).
@@ -50,8 +52,12 @@ void playDrivers() {
   const radio_follow::Layout layout = radio_follow::loadLayoutFile(layout_file);
   const Eigen::Vector3d front_board(0.065, 0.0, 0.25);
   ros::Rate rate(20.0);
-  while (ros::ok() && g_publishing) {
-    const ros::Time now = ros::Time::now();
+  while (ros::ok() && g_running) {
+    if (!g_publishing) {
+      rate.sleep();
+      continue;
+    }
+    const ros::Time now = ros::Time::now() + ros::Duration(g_stamp_offset.load());
     for (const auto& m : layout.twr_modules) {
       radio_follow::UwbRanges msg;
       msg.header.stamp = now;
@@ -164,6 +170,27 @@ TEST(Locator, ReportsLostWhenTheDriversStop) {
   EXPECT_TRUE(waitForStatus(radio_follow::TargetEstimate::STATUS_LOST, 10.0));
 }
 
+// Drivers whose clock is 80 s ahead: their measurements must never make an estimate (the
+// locator used to publish OK estimates with no input for as long as the stamps led).
+TEST(Locator, MeasurementsFromTheFutureNeverMakeAnEstimate) {
+  ros::NodeHandle nh;
+  std::atomic<int> usable{0};
+  std::atomic<int> received{0};
+  ros::Subscriber sub = nh.subscribe<radio_follow::TargetEstimate>(
+      "target", 50, [&](const radio_follow::TargetEstimate::ConstPtr& msg) {
+        ++received;
+        usable += msg->status != radio_follow::TargetEstimate::STATUS_LOST;
+      });
+  ros::WallDuration(0.5).sleep();
+  g_stamp_offset = 80.0;
+  g_publishing = true;
+  ros::WallDuration(2.0).sleep();
+  g_publishing = false;
+  ros::WallDuration(2.0).sleep();
+  EXPECT_GT(received.load(), 20);
+  EXPECT_EQ(usable.load(), 0) << "estimates made of measurements stamped 80 s ahead";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -173,7 +200,7 @@ int main(int argc, char** argv) {
   spinner.start();
   std::thread drivers(playDrivers);
   const int result = RUN_ALL_TESTS();
-  g_publishing = false;
+  g_running = false;
   drivers.join();
   return result;
 }
