@@ -29,7 +29,9 @@ for rate in 50 10; do
   rosparam set /velocity_controller/range_topics '[uwb_ranges]'
   rosparam set /velocity_controller/target_anchor_id ABCD
   rosparam set /velocity_controller/start_enabled true
-  "$controller_bin" >/dev/null 2>&1 & controller=$!
+  # Another build's binary must load its own libraries, not this workspace's.
+  LD_LIBRARY_PATH="$(dirname "$(dirname "$controller_bin")"):${LD_LIBRARY_PATH:-}" \
+    "$controller_bin" >/dev/null 2>&1 & controller=$!
   "$bin/bench_stop_latency" --echo >/dev/null 2>&1 & relay=$!
   sleep 2
   "$bin/bench_stop_latency" "$trials" "$rate"

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/sim/virtual_sensors.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "radio_follow/common/angles.hpp"
@@ -68,8 +69,12 @@ std::optional<AoaSample> simulateAoa(const AoaBoard& board, const AoaNoise& nois
   const double measured_device = device_azimuth +
                                  (noise.use_table_bias ? error.azimuth_bias : 0.0) +
                                  gaussian(noise.sigma_scale * error.azimuth_sigma, rng);
-  sample.azimuth = wrapAngleFast(-measured_device);
-  sample.elevation = elevation + gaussian(noise.sigma_scale * error.azimuth_sigma, rng);
+  // The board reports both angles in [-90, 90] deg (u-connectLocate): noise near the
+  // edge of its hemisphere saturates there, as the real output does, instead of wrapping
+  // into values no device writes (the drivers refuse them as implausible).
+  sample.azimuth = std::clamp(wrapAngleFast(-measured_device), -kPi / 2.0, kPi / 2.0);
+  sample.elevation = std::clamp(elevation + gaussian(noise.sigma_scale * error.azimuth_sigma, rng),
+                                -kPi / 2.0, kPi / 2.0);
   sample.rssi = error.rssi_mean + gaussian(error.rssi_sigma, rng) -
                 (sample.behind ? noise.behind_rssi_drop : 0.0);
   sample.rssi_second = sample.rssi + noise.second_polarisation_offset + gaussian(1.0, rng);

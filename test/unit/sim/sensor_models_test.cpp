@@ -158,6 +158,26 @@ TEST(VirtualSensors, AoaBehindTheBoardReportsTheMirrorWithPlausibleRssi) {
   EXPECT_GT(s->rssi, -90.0);
 }
 
+// Like the board, the simulator never reports an angle outside [-90, 90] deg, however
+// much noise it adds near the edge of the hemisphere (the drivers refuse such lines).
+TEST(VirtualSensors, AoaAnglesStayInTheBoardsHemisphere) {
+  AoaBoard board;
+  AoaNoise noise;
+  noise.sigma_scale = 5.0;
+  Rng rng(7);
+  int at_edge = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const double az = deg2rad(-100.0 + 0.1 * i);  // sweeps both edges and behind
+    const auto s =
+        simulateAoa(board, noise, Eigen::Vector3d(3 * std::cos(az), 3 * std::sin(az), 2.5), rng);
+    ASSERT_TRUE(s);
+    ASSERT_LE(std::abs(s->azimuth), kPi / 2.0 + 1e-12) << i;
+    ASSERT_LE(std::abs(s->elevation), kPi / 2.0 + 1e-12) << i;
+    at_edge += std::abs(s->azimuth) == kPi / 2.0;
+  }
+  EXPECT_GT(at_edge, 0);  // the noise did reach the edge: the clamp was exercised
+}
+
 TEST(VirtualSensors, AoaOutOfRangeIsSilent) {
   AoaBoard board;
   AoaNoise noise;
