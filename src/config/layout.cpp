@@ -11,6 +11,7 @@
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/common/param_keys.hpp"
+#include "radio_follow/common/yaml_keys.hpp"
 
 namespace radio_follow {
 namespace {
@@ -85,20 +86,6 @@ AoaBoardKind parseKind(const std::string& text, const std::string& name) {
     return AoaBoardKind::kAntB10;
   }
   throw ParamError(name, paramValueString(text), "'xplr_aoa_1' or 'ant_b10'");
-}
-
-/// A misspelt key (`calibraton:`, `twr_module:`) would silently drop what it holds.
-void requireKeys(const YAML::Node& map, const std::set<std::string>& allowed,
-                 const std::string& path) {
-  if (!map.IsMap()) {
-    throw ParamError(path.empty() ? "layout" : path.substr(0, path.size() - 1), describe(map),
-                     "a mapping");
-  }
-  std::vector<PresentKey> present;
-  for (const auto& kv : map) {
-    present.push_back({kv.first.as<std::string>(), describe(kv.second)});
-  }
-  requireKnownKeys(present, allowed, {}, path);
 }
 
 std::string itemPath(const std::string& list, std::size_t index) {
@@ -219,14 +206,14 @@ Layout parseLayout(const std::string& yaml_text, const std::string& origin) {
                      "twr_modules, aoa_boards, tdoa_anchors");
   }
 
-  requireKeys(root, {"fixed_frame", "target", "twr_modules", "aoa_boards", "tdoa_anchors"}, "");
+  requireYamlKeys(root, {"fixed_frame", "target", "twr_modules", "aoa_boards", "tdoa_anchors"}, "");
   Layout layout;
   const std::string default_frame = layout.fixed_frame;
   layout.fixed_frame =
       readScalar<std::string>(root, "fixed_frame", "", "a TF frame name", &default_frame);
   const YAML::Node target = root["target"];
   if (target.IsDefined() && !target.IsNull()) {
-    requireKeys(target, {"uwb_anchor_id", "aoa_tag_id"}, "target.");
+    requireYamlKeys(target, {"uwb_anchor_id", "aoa_tag_id"}, "target.");
     const std::string empty;
     layout.target_anchor_id = normalizeId(
         readScalar<std::string>(target, "uwb_anchor_id", "target.", "an anchor ID", &empty));
@@ -237,7 +224,7 @@ Layout parseLayout(const std::string& yaml_text, const std::string& origin) {
   const YAML::Node twr = root["twr_modules"];
   for (std::size_t i = 0; twr.IsSequence() && i < twr.size(); ++i) {
     const std::string path = itemPath("twr_modules", i);
-    requireKeys(twr[i], {"id", "frame_id", "position", "calibration"}, path);
+    requireYamlKeys(twr[i], {"id", "frame_id", "position", "calibration"}, path);
     TwrModule m;
     m.id = normalizeId(readScalar<std::string>(twr[i], "id", path, "a module ID string"));
     const std::string default_frame_id = "uwb_" + m.id;
@@ -254,8 +241,8 @@ Layout parseLayout(const std::string& yaml_text, const std::string& origin) {
   const YAML::Node aoa = root["aoa_boards"];
   for (std::size_t i = 0; aoa.IsSequence() && i < aoa.size(); ++i) {
     const std::string path = itemPath("aoa_boards", i);
-    requireKeys(aoa[i], {"id", "frame_id", "kind", "position", "rpy_deg", "field_of_view_deg"},
-                path);
+    requireYamlKeys(aoa[i], {"id", "frame_id", "kind", "position", "rpy_deg", "field_of_view_deg"},
+                    path);
     AoaBoard b;
     b.id = readScalar<std::string>(aoa[i], "id", path, "a board name");
     const std::string default_frame_id = "aoa_" + b.id;
@@ -280,7 +267,7 @@ Layout parseLayout(const std::string& yaml_text, const std::string& origin) {
   const YAML::Node tdoa = root["tdoa_anchors"];
   for (std::size_t i = 0; tdoa.IsSequence() && i < tdoa.size(); ++i) {
     const std::string path = itemPath("tdoa_anchors", i);
-    requireKeys(tdoa[i], {"id", "position"}, path);
+    requireYamlKeys(tdoa[i], {"id", "position"}, path);
     TdoaAnchor a;
     a.id = normalizeId(readScalar<std::string>(tdoa[i], "id", path, "an anchor ID string"));
     a.position = readVector3(tdoa[i], "position", path, "metres");

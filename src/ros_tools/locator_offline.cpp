@@ -94,7 +94,9 @@ YAML::Node mergedParams(const std::vector<std::string>& files) {
 
 rf::LocatorNode::Params loadParams(const YAML::Node& yaml, const std::string& layout) {
   rf::LocatorNode::Params p;
-  p.load(rf::YamlParams(yaml));
+  const rf::YamlParams source(yaml);
+  p.load(source);
+  source.requireAllKnown();  // a misspelt key in --params or --sweep is an error, as on a node
   p.layout_file = layout;
   p.validate();
   return p;

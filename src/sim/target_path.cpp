@@ -11,6 +11,7 @@
 
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/common/yaml_keys.hpp"
 
 namespace radio_follow {
 namespace sim {
@@ -210,6 +211,7 @@ Pose2 readPose(const YAML::Node& node, const std::string& path) {
 
 void addLeg(TargetPath& path, const YAML::Node& leg, const std::string& name, double speed,
             std::uint64_t seed) {
+  requireYamlKeys(leg, {"to", "arc_deg", "radius", "wait", "random_walk", "speed"}, name);
   const double leg_speed = numberOr(leg, "speed", name, "a speed in m/s", speed);
   if (leg["to"].IsDefined()) {
     const Pose2 to = readPose(leg["to"], name + "to");
@@ -222,6 +224,7 @@ void addLeg(TargetPath& path, const YAML::Node& leg, const std::string& name, do
   } else if (leg["random_walk"].IsDefined()) {
     const YAML::Node rw = leg["random_walk"];
     const std::string rw_name = name + "random_walk.";
+    requireYamlKeys(rw, {"steps", "step_length", "max_turn_deg"}, rw_name);
     path.randomWalk(static_cast<int>(number(rw, "steps", rw_name, "a step count")),
                     number(rw, "step_length", rw_name, "a length in m"),
                     deg2rad(numberOr(rw, "max_turn_deg", rw_name, "degrees", 45.0)), leg_speed,
@@ -251,6 +254,7 @@ Obstacles readObstacles(const YAML::Node& node) {
   if (!node.IsMap()) {
     throw ParamError("obstacles", YAML::Dump(node), "a mapping with 'circles' and/or 'walls'");
   }
+  requireYamlKeys(node, {"circles", "walls"}, "obstacles.");
   const YAML::Node circles = node["circles"];
   for (std::size_t i = 0; circles.IsDefined() && circles.IsSequence() && i < circles.size(); ++i) {
     const auto r = readRow(circles[i], 3, "obstacles.circles[" + std::to_string(i) + "]",
@@ -280,6 +284,9 @@ Scenario parseScenario(const std::string& yaml_text, const std::string& origin,
   if (!root.IsMap() || !root["target"].IsMap()) {
     throw ParamError("scenario", "'" + origin + "'", "a mapping with a 'target' mapping");
   }
+  requireYamlKeys(root, {"name", "robot_start", "target", "obstacles", "settle_time", "duration"},
+                  "");
+  requireYamlKeys(root["target"], {"start", "height", "speed", "legs", "accel"}, "target.");
   Scenario s;
   s.name = root["name"].IsDefined() ? root["name"].as<std::string>() : origin;
   if (root["robot_start"].IsDefined()) {

@@ -134,6 +134,15 @@ TEST_F(LocatorOffline, BadInputIsRefusedWithItsName) {
   EXPECT_NE(output.find("range_sigma"), std::string::npos) << output;
   EXPECT_NE(output.find("-1"), std::string::npos) << output;
 
+  // A misspelt key is an error here too, with the nearest real name.
+  const std::string typo = out_ + "_typo.yaml";
+  {
+    std::ofstream t(typo);
+    t << "rnage_sigma: 0.1\n";
+  }
+  EXPECT_EQ(runTool(bag_ + " --layout " + layout_ + " --params " + typo, output), 2);
+  EXPECT_NE(output.find("did you mean '~range_sigma'"), std::string::npos) << output;
+
   EXPECT_EQ(runTool("/nonexistent.bag --layout " + layout_, output), 1);
   EXPECT_NE(output.find("/nonexistent.bag"), std::string::npos) << output;
   EXPECT_EQ(runTool(bag_, output), 2);  // no --layout

@@ -172,7 +172,13 @@ TEST(Scenario, RejectsBadLegsNamingThem) {
     }
     return "(accepted)";
   };
-  EXPECT_EQ(rejected("target: {start: [0, 0], legs: [{jump: 3}]}"), "target.legs[0]");
+  EXPECT_EQ(rejected("target: {start: [0, 0], legs: [{jump: 3}]}"), "target.legs[0].jump");
+  EXPECT_EQ(rejected("target: {start: [0, 0], legs: []}"), "(accepted)");
+  // Misspelt keys are refused, not ignored (one mechanism for every file, issue 12).
+  EXPECT_EQ(rejected("target: {start: [0, 0], legs: [{to: [1, 0], sped: 2}]}"),
+            "target.legs[0].sped");
+  EXPECT_EQ(rejected("target: {start: [0, 0], sped: 2}"), "target.sped");
+  EXPECT_EQ(rejected("target: {start: [0, 0]}\ndurration: 3"), "durration");
   EXPECT_EQ(rejected("target: {start: [0, 0], legs: [{to: [1, 0], speed: -1}]}"), "walk.speed");
   EXPECT_EQ(rejected("target: {start: [0]}"), "target.start");
   EXPECT_EQ(rejected("target: {speed: 1}"), "target.start");

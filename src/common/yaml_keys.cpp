@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/common/yaml_keys.hpp"
+
+#include <vector>
+
+#include "radio_follow/common/param_error.hpp"
+#include "radio_follow/common/param_keys.hpp"
+
+namespace radio_follow {
+namespace {
+
+std::string flow(const YAML::Node& node) {
+  YAML::Emitter out;
+  out << YAML::Flow << node;
+  return out.c_str();
+}
+
+}  // namespace
+
+void requireYamlKeys(const YAML::Node& map, const std::set<std::string>& allowed,
+                     const std::string& path) {
+  if (!map.IsMap()) {
+    throw ParamError(path.empty() ? "file" : path.substr(0, path.size() - 1),
+                     map.IsDefined() ? flow(map) : "(missing)", "a mapping");
+  }
+  std::vector<PresentKey> present;
+  for (const auto& kv : map) {
+    present.push_back({kv.first.as<std::string>(), flow(kv.second)});
+  }
+  requireKnownKeys(present, allowed, {}, path);
+}
+
+}  // namespace radio_follow
