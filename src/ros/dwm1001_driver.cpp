@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/common/param_keys.hpp"
 
 namespace radio_follow {
 namespace {
@@ -27,6 +28,7 @@ void Dwm1001DriverNode::Params::load(const ParamReader& private_nh) {
   private_nh.param("configure", configure, configure);
   private_nh.param("output_mode", output_mode, output_mode);
   private_nh.param("tag_id", tag_id, tag_id);
+  tag_id = normalizeId(tag_id);  // IDs enter normalised (upper case), as the layout's
   private_nh.param("frame_id", frame_id, frame_id);
   private_nh.param("network_frame_id", network_frame_id, network_frame_id);
   private_nh.param("reconnect_backoff", reconnect_backoff, reconnect_backoff);
@@ -194,7 +196,7 @@ void Dwm1001DriverNode::enqueue(double stamp) {
     msg.ranges.reserve(measurement_.ranges.size());
     for (const drivers::DwmAnchorRange& a : measurement_.ranges) {
       UwbRange r;
-      r.anchor_id = a.id;
+      r.anchor_id = normalizeId(a.id);  // firmware prints upper case; a replayed log may not
       r.anchor_position.x = a.x;
       r.anchor_position.y = a.y;
       r.anchor_position.z = a.z;
