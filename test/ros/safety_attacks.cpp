@@ -86,22 +86,33 @@ class Feeder {
 
 class SafetyAttacks : public ::testing::Test {
  protected:
+  // One feeder and one recorder for the whole suite: a publisher made anew for each test
+  // would need its connection to the controller again, and an attack message sent before
+  // that connection exists is lost (the test would then measure roscpp, not the stop).
+  static void SetUpTestSuite() {
+    nh_ = new ros::NodeHandle;
+    recorder_ = new radio_follow_test::ControllerRecorder(*nh_, "velocity_controller/status");
+    feeder_ = new Feeder(*nh_, 50.0);  // 50 Hz estimates: the review's loaded case
+  }
+  static void TearDownTestSuite() {
+    delete feeder_;
+    delete recorder_;
+    delete nh_;
+  }
   void SetUp() override {
-    recorder_.reset(new radio_follow_test::ControllerRecorder(nh_, "velocity_controller/status"));
-    feeder_.reset(new Feeder(nh_, 50.0));  // 50 Hz estimates: the review's loaded case
+    feeder_->send_estimates = true;
     ASSERT_TRUE(waitFor([&] { return recorder_->lastCmd().linear.x > 0.2; }, 20.0))
         << "the controller never drove toward a far target";
   }
-  void TearDown() override {
-    feeder_->send_estimates = true;
-    // Leave it driving for the next test (the hold after an attack is 1 s).
-    waitFor([&] { return recorder_->lastCmd().linear.x > 0.2; }, 10.0);
-  }
 
-  ros::NodeHandle nh_;
-  std::unique_ptr<radio_follow_test::ControllerRecorder> recorder_;
-  std::unique_ptr<Feeder> feeder_;
+  static ros::NodeHandle* nh_;
+  static radio_follow_test::ControllerRecorder* recorder_;
+  static Feeder* feeder_;
 };
+
+ros::NodeHandle* SafetyAttacks::nh_ = nullptr;
+radio_follow_test::ControllerRecorder* SafetyAttacks::recorder_ = nullptr;
+Feeder* SafetyAttacks::feeder_ = nullptr;
 
 // One estimate stamped 30 s ahead, then the locator dies: before the fix the controller
 // kept driving at 0.99 m/s for as long as the stamp was ahead.
