@@ -34,7 +34,7 @@ std::string findExecutable(const std::string& command) {
 }
 
 void AnnouncerNode::Params::load(const ParamReader& pnh) {
-  loadStringList(pnh, "status_topics", status_topics);
+  pnh.param("status_topics", status_topics, status_topics);
   pnh.param("command", command, command);
   pnh.param("voice", voice, voice);
   pnh.param("words_per_minute", words_per_minute, words_per_minute);

@@ -46,7 +46,7 @@ void ControllerCommonParams::load(const ParamReader& pnh) {
       }
     }
   }
-  loadStringList(pnh, "range_topics", range_topics);
+  pnh.param("range_topics", range_topics, range_topics);
   pnh.param("target_anchor_id", target_anchor_id, target_anchor_id);
   target_anchor_id = normalizeId(target_anchor_id);
   pnh.param("use_scan", use_scan, use_scan);

@@ -8,8 +8,9 @@ namespace radio_follow {
 std::size_t LocatorInputs::add(const UwbRanges& msg) {
   // The module is named by its ID; drivers started without one still set their frame.
   // IDs compare normalised (upper case), as the layout parser stores them: a layout
-  // saying "da12" and a driver printing "DA12" mean the same anchor.
-  const std::string module = msg.tag_id.empty() ? msg.header.frame_id : normalizeId(msg.tag_id);
+  // saying "da12" and a driver printing "DA12" mean the same anchor. (The module lookup,
+  // Layout::findTwrModule, normalises the module ID itself.)
+  const std::string& module = msg.tag_id.empty() ? msg.header.frame_id : msg.tag_id;
   std::size_t refused = 0;
   for (const auto& range : msg.ranges) {
     const std::string anchor = normalizeId(range.anchor_id);

@@ -169,11 +169,6 @@ void ParamReader::requireAllKnown() const {
   requireKnownKeys(present, known_, owned_, "~");
 }
 
-void loadStringList(const ParamReader& params, const std::string& name,
-                    std::vector<std::string>& out) {
-  params.param(name, out, out);
-}
-
 void requireMembers(const XmlRpcValue& item, const std::set<std::string>& allowed,
                     const std::string& path) {
   if (item.getType() != XmlRpcValue::TypeStruct) {

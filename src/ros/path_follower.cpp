@@ -49,14 +49,9 @@ PathFollowerNode::PathFollowerNode(ros::NodeHandle& nh, ros::NodeHandle& private
   requireKnownParams();
   path_pub_ = private_nh_.advertise<nav_msgs::Path>("path", 1, true);
   estimate_sub_ = nh_.subscribe("target", 5, &PathFollowerNode::onEstimate, this);
-  law_reconfigure_ =
-      makeFollowLawReconfigure(private_nh, law_params_, [this](control::VelocityLawParams p) {
-        p = control::VelocityLaw::withCommon(p, common().safety.safe_distance,
-                                             common().limits.max_linear);
-        p.validate();  // against the safety layer now
-        law_params_ = p;
-        fallback_law_.setParams(p);
-        speed_pid_.setGains(p.linear);
+  law_reconfigure_ = makeFollowLawReconfigure(
+      private_nh, law_params_, [this](const control::VelocityLawParams& p) {
+        applyLaw(lawWithCommon(p, common()));  // against the safety layer as it is now
       });
   start();
 }
@@ -64,9 +59,10 @@ PathFollowerNode::PathFollowerNode(ros::NodeHandle& nh, ros::NodeHandle& private
 PathFollowerNode::~PathFollowerNode() = default;
 
 void PathFollowerNode::onCommonChange(const ControllerCommonParams& next) {
-  const control::VelocityLawParams p = control::VelocityLaw::withCommon(
-      law_params_, next.safety.safe_distance, next.limits.max_linear);
-  p.validate();
+  applyLaw(lawWithCommon(law_params_, next));  // throws to refuse the change
+}
+
+void PathFollowerNode::applyLaw(const control::VelocityLawParams& p) {
   law_params_ = p;
   fallback_law_.setParams(p);
   speed_pid_.setGains(p.linear);

@@ -24,12 +24,17 @@ control::VelocityLawParams loadVelocityLawParams(const ParamReader& pnh,
   pnh.param("backwards_cycles", p.backwards_cycles, p.backwards_cycles);
   loadPidGains(pnh, "linear_pid", p.linear);
   loadPidGains(pnh, "angular_pid", p.angular);
-  p.max_linear = common.limits.max_linear;
-  p.safe_distance = common.safety.safe_distance;
-  p.linear.output_limit = common.limits.max_linear;
-  p.angular.output_limit = common.limits.max_angular;
-  p.validate();
-  return p;
+  return lawWithCommon(p, common);
+}
+
+control::VelocityLawParams lawWithCommon(control::VelocityLawParams law,
+                                         const ControllerCommonParams& common) {
+  law.max_linear = common.limits.max_linear;
+  law.safe_distance = common.safety.safe_distance;
+  law.linear.output_limit = common.limits.max_linear;
+  law.angular.output_limit = common.limits.max_angular;
+  law.validate();
+  return law;
 }
 
 control::TargetPolar targetPolar(const TargetEstimate& estimate,
@@ -69,25 +74,21 @@ VelocityControllerNode::VelocityControllerNode(ros::NodeHandle& nh, ros::NodeHan
   requireKnownParams();
   estimate_sub_ = nh_.subscribe("target", 5, &VelocityControllerNode::onEstimate, this);
   // Speed caps come from the common limits; the law's own fields are tuned on ~law.
-  law_reconfigure_ =
-      makeFollowLawReconfigure(private_nh, law_.params(), [this](control::VelocityLawParams p) {
-        // The server's copy of the common values may be older than a change on ~: check
-        // the law against the safety layer as it is now (throws ParamError to refuse).
-        p = control::VelocityLaw::withCommon(p, common().safety.safe_distance,
-                                             common().limits.max_linear);
-        p.validate();
-        law_.setParams(p);
-      });
+  law_reconfigure_ = makeFollowLawReconfigure(private_nh, law_.params(),
+                                              [this](const control::VelocityLawParams& p) {
+                                                // The server's copy of the common values may be
+                                                // older than a change on ~: check the law against
+                                                // the safety layer as it is now (throws ParamError
+                                                // to refuse).
+                                                law_.setParams(lawWithCommon(p, common()));
+                                              });
   start();
 }
 
 VelocityControllerNode::~VelocityControllerNode() = default;
 
 void VelocityControllerNode::onCommonChange(const ControllerCommonParams& next) {
-  const control::VelocityLawParams p = control::VelocityLaw::withCommon(
-      law_.params(), next.safety.safe_distance, next.limits.max_linear);
-  p.validate();  // e.g. a safe_distance the follow distance no longer clears
-  law_.setParams(p);
+  law_.setParams(lawWithCommon(law_.params(), next));  // throws to refuse the change
 }
 
 void VelocityControllerNode::onEstimate(const TargetEstimate::ConstPtr& msg) {

@@ -80,14 +80,6 @@ class VelocityLaw {
   /// New parameters (live tuning; validated by the caller): the PIDs keep their state.
   void setParams(const VelocityLawParams& params);
   const VelocityLawParams& params() const { return params_; }
-  /// The law's parameters with the safety layer's stop distance and speed cap in them.
-  static VelocityLawParams withCommon(VelocityLawParams p, double safe_distance,
-                                      double max_linear) {
-    p.safe_distance = safe_distance;
-    p.max_linear = max_linear;
-    p.linear.output_limit = max_linear;
-    return p;
-  }
   void reset();
 
   bool driving_backwards() const { return backwards_; }

@@ -54,11 +54,6 @@ class ParamReader {
   mutable std::vector<std::string> owned_;
 };
 
-/// Reads the private parameter `name` as a list of strings into `out` (unchanged when
-/// unset); a value of another type throws ParamError.
-void loadStringList(const ParamReader& params, const std::string& name,
-                    std::vector<std::string>& out);
-
 /// Throws ParamError for a member of the mapping `item` (an element of a structured list
 /// parameter, e.g. "~unplug[0]") that is not in `allowed`: a misspelt optional field
 /// would otherwise fall back to its default unnoticed.

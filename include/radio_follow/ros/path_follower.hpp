@@ -48,6 +48,8 @@ class PathFollowerNode : public ControllerBase {
   Output compute(const ros::Time& now, double dt) override;
   void onStopped() override;
   void onCommonChange(const ControllerCommonParams& next) override;
+  /// Installs validated law parameters in the fallback law and the path speed PID.
+  void applyLaw(const control::VelocityLawParams& p);
   void onEstimate(const TargetEstimate::ConstPtr& msg);
   std::optional<control::Pose2> robotPose();
   void publishPath(const ros::Time& stamp);

@@ -24,6 +24,12 @@ class FollowLawTuningConfig;
 control::VelocityLawParams loadVelocityLawParams(const ParamReader& private_nh,
                                                  const ControllerCommonParams& common);
 
+/// `law` with the safety layer's values it depends on (safe_distance, the speed limits as
+/// the PIDs' output limits), validated: throws ParamError when the law no longer clears
+/// the stop. The one check at start, in live tuning of the law and of the common values.
+control::VelocityLawParams lawWithCommon(control::VelocityLawParams law,
+                                         const ControllerCommonParams& common);
+
 /// Converts an estimate into the law's input (HEADING_ONLY -> no range, DEGRADED flag,
 /// the target's receding speed when known, the nearest module's gap to the stop:
 /// ControllerBase::moduleGap()).
