@@ -53,7 +53,7 @@ void BM_SafetyEvaluate(benchmark::State& state) {
     monitor.onRange(t, t, "uwb_ranges/a", 3.0);
     monitor.onRange(t, t, "uwb_ranges/b", 3.1);
     monitor.onRange(t, t, "uwb_ranges/c", 2.9);
-    monitor.onEstimate(t, t, true);
+    monitor.onEstimate(t, t, EstimateQuality::kUsable);
     benchmark::DoNotOptimize(monitor.evaluate(t));
   }
 }

@@ -23,3 +23,9 @@ fi
 /usr/bin/python3 "$repo/scripts/plot_report.py" "$report"
 echo "demo: report in $report (metrics.json, trajectory.csv, report.png)"
 cat "$report/metrics.json"
+# roslaunch exits 0 whatever its nodes did; the verdict is the evaluator's (doc/simulator.md).
+if ! /usr/bin/python3 -c 'import json, sys; sys.exit(0 if json.load(open(sys.argv[1]))["passed"] else 1)' \
+    "$report/metrics.json"; then
+  echo "demo: CLOSED LOOP FAILED: $(/usr/bin/python3 -c 'import json, sys; print("; ".join(json.load(open(sys.argv[1]))["failures"]))' "$report/metrics.json")" >&2
+  exit 1
+fi

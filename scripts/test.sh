@@ -23,3 +23,6 @@ rm -rf "$results"
 grep -E '^\[ *(RUN|OK|FAILED|PASSED) |^\[ *FAILED|testcase|rostest|Summary' "$ws/run_tests.log" | tail -n 200 || true
 
 python3 "$repo/scripts/summarize_tests.py" "$results"
+
+# Every command README.md and doc/ show, run against the simulator (scripts/docs_test.py).
+python3 "$repo/scripts/docs_test.py"

@@ -21,8 +21,30 @@ FollowerState stateFor(StopReason reason) {
       return FollowerState::kTargetLost;
     case StopReason::kClockJumped:
       return FollowerState::kWaitingForTarget;
+    case StopReason::kTargetAmbiguous:
+      return FollowerState::kTargetAmbiguous;
   }
   return FollowerState::kTargetLost;
+}
+
+const char* stateName(FollowerState state) {
+  switch (state) {
+    case FollowerState::kDisabled:
+      return "disabled";
+    case FollowerState::kWaitingForTarget:
+      return "waiting_for_target";
+    case FollowerState::kFollowing:
+      return "following";
+    case FollowerState::kTooClose:
+      return "too_close";
+    case FollowerState::kTargetLost:
+      return "target_lost";
+    case FollowerState::kArrived:
+      return "arrived";
+    case FollowerState::kTargetAmbiguous:
+      return "target_ambiguous";
+  }
+  return "unknown";
 }
 
 std::string stopText(StopReason reason) {
@@ -39,6 +61,8 @@ std::string stopText(StopReason reason) {
       return "Target estimate too old, stopping.";
     case StopReason::kTargetLost:
       return "Target lost, stopping.";
+    case StopReason::kTargetAmbiguous:
+      return "Cannot tell where the target is, it may be the mirror image: stopping.";
     case StopReason::kRangesSilent:
       return "No range to the target, stopping.";
     case StopReason::kFutureStamp:
@@ -63,6 +87,8 @@ std::string defaultText(FollowerState state) {
       return stopText(StopReason::kTargetLost);
     case FollowerState::kArrived:
       return "Arrived, waiting.";
+    case FollowerState::kTargetAmbiguous:
+      return stopText(StopReason::kTargetAmbiguous);
   }
   return "Stopping.";
 }

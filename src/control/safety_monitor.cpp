@@ -53,7 +53,7 @@ void SafetyMonitor::observe(double now) {
   // the monitor (nothing newer ever arrives) or trust them for as long as they lead.
   ranges_.clear();
   has_estimate_ = false;
-  estimate_usable_ = false;
+  estimate_quality_ = EstimateQuality::kLost;
   last_block_time_ = now;
   blocked_once_ = true;
   last_block_reason_ = StopReason::kClockJumped;
@@ -78,7 +78,7 @@ bool SafetyMonitor::onRange(double stamp, double now, const std::string& source,
   return violation;
 }
 
-bool SafetyMonitor::onEstimate(double stamp, double now, bool usable) {
+bool SafetyMonitor::onEstimate(double stamp, double now, EstimateQuality quality) {
   observe(now);
   if (time_.check(stamp, now) == TimePolicy::Verdict::kFuture) {
     block(now, StopReason::kFutureStamp);
@@ -87,7 +87,7 @@ bool SafetyMonitor::onEstimate(double stamp, double now, bool usable) {
   if (!has_estimate_ || stamp >= estimate_stamp_) {
     has_estimate_ = true;
     estimate_stamp_ = stamp;
-    estimate_usable_ = usable;
+    estimate_quality_ = quality;
   }
   return true;
 }
@@ -127,8 +127,13 @@ StopReason SafetyMonitor::rawReason(double now) {
   if (!(now - estimate_stamp_ <= params_.estimate_timeout)) {
     return StopReason::kEstimateStale;
   }
-  if (!estimate_usable_) {
-    return StopReason::kTargetLost;
+  switch (estimate_quality_) {
+    case EstimateQuality::kUsable:
+      break;
+    case EstimateQuality::kAmbiguous:
+      return StopReason::kTargetAmbiguous;
+    case EstimateQuality::kLost:
+      return StopReason::kTargetLost;
   }
   return StopReason::kNone;
 }

@@ -15,18 +15,57 @@ namespace radio_follow {
 
 const char* toString(TargetStatus status) {
   switch (status) {
+    case TargetStatus::kUnset:
+      return "UNSET";
     case TargetStatus::kOk:
       return "OK";
     case TargetStatus::kHeadingOnly:
       return "HEADING_ONLY";
     case TargetStatus::kDegraded:
       return "DEGRADED";
+    case TargetStatus::kAmbiguous:
+      return "AMBIGUOUS";
     case TargetStatus::kLost:
       break;
   }
   return "LOST";
 }
+
+bool hasPosition(TargetStatus status) {
+  return status == TargetStatus::kOk || status == TargetStatus::kDegraded;
+}
+
 namespace {
+
+/// A second solution closer than this to the first is the same answer, m.
+constexpr double kMinMirrorSeparation = 0.5;
+/// Epochs in a row that must prefer the tracked side before it counts as confirmed.
+constexpr int kSideConfirmEpochs = 5;
+
+/// `p` reflected across the main axis (in the xy-plane) of the ranging modules: the other
+/// solution the ranges of nearly collinear modules allow. nullopt with fewer than two.
+std::optional<Eigen::Vector3d> mirrorImage(const ObservationSet& obs, const Eigen::Vector3d& p) {
+  if (obs.ranges.size() < 2) {
+    return std::nullopt;
+  }
+  Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
+  for (const auto& z : obs.ranges) {
+    centroid += z.module.head<2>();
+  }
+  centroid /= static_cast<double>(obs.ranges.size());
+  Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
+  for (const auto& z : obs.ranges) {
+    const Eigen::Vector2d d = z.module.head<2>() - centroid;
+    scatter += d * d.transpose();
+  }
+  const Eigen::Vector2d axis =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(scatter).eigenvectors().col(
+          1);  // eigenvalues ascend: the largest spread
+  const Eigen::Vector2d d = p.head<2>() - centroid;
+  Eigen::Vector3d mirrored = p;
+  mirrored.head<2>() = centroid + 2.0 * d.dot(axis) * axis - d;
+  return mirrored;
+}
 
 void validateLoss(const LossConfig& loss, const std::string& name) {
   require(loss.type == LossType::kNone || (std::isfinite(loss.scale) && loss.scale > 0.0),
@@ -91,6 +130,8 @@ void LocatorConfig::validate() const {
       std::isfinite(max_relative_sigma) && max_relative_sigma >= 0.0 && max_relative_sigma < 1.0,
       "max_relative_sigma", max_relative_sigma, "a fraction of the distance in [0, 1)");
   require(positive(default_range), "default_range", default_range, "a positive range in metres");
+  require(std::isfinite(ambiguity_margin) && ambiguity_margin >= 0.0, "ambiguity_margin",
+          ambiguity_margin, "0 (no mirror test) or a positive cost margin");
 }
 
 Locator::Locator(const Layout& layout, const LocatorConfig& config)
@@ -214,7 +255,46 @@ LocatorEstimate Locator::lose(LocatorEstimate estimate) {
   warm_.reset();
   filter_.reset();
   selector_.reset();
+  forgetSide();
   return estimate;
+}
+
+void Locator::forgetSide() {
+  side_votes_ = 0;
+  side_confirmed_ = false;
+}
+
+bool Locator::mirrorAmbiguous(const ObservationSet& obs, const SolveResult& solution,
+                              double sigma) {
+  if (config_.ambiguity_margin <= 0.0 || !config_.planar) {
+    return false;
+  }
+  const std::optional<Eigen::Vector3d> mirrored = mirrorImage(obs, solution.position);
+  if (!mirrored || (*mirrored - solution.position).head<2>().norm() <= kMinMirrorSeparation) {
+    return false;  // on the modules' axis both sides meet: nothing to tell apart
+  }
+  const SolveResult other = solver_->solveCold(obs, *mirrored);
+  const double separation = (other.position - solution.position).head<2>().norm();
+  const auto vote = [this] {
+    side_confirmed_ = side_confirmed_ || ++side_votes_ >= kSideConfirmEpochs;
+    return false;
+  };
+  if (!other.success || !std::isfinite(other.cost)) {
+    return false;  // no second answer to compare with: no evidence either way
+  }
+  if (!(separation > std::max(kMinMirrorSeparation, 3.0 * sigma))) {
+    return vote();  // the mirror start came back: the data have one solution here
+  }
+  const double preference = other.cost - solution.cost;  // > 0: the data prefer ours
+  if (preference <= -config_.ambiguity_margin) {
+    forgetSide();  // the data contradict the tracked side
+    return true;
+  }
+  if (preference >= config_.ambiguity_margin) {
+    return vote();
+  }
+  side_votes_ = 0;
+  return !side_confirmed_;
 }
 
 LocatorEstimate Locator::update(double now) {
@@ -230,6 +310,7 @@ LocatorEstimate Locator::update(double now) {
     tdoas_.clear();
     warm_.reset();
     filter_.reset();
+    forgetSide();
   }
   LocatorEstimate out;
   out.solver_cost = std::numeric_limits<double>::quiet_NaN();
@@ -348,11 +429,15 @@ LocatorEstimate Locator::update(double now) {
                                     .eigenvalues()
                                     .maxCoeff()));
   }
-  const bool ambiguous = !helpers && obs.ranges.size() < full_ranges;
+  const bool underdetermined = !helpers && obs.ranges.size() < full_ranges;
   const double allowed_sigma = std::max(
       config_.max_position_sigma, config_.max_relative_sigma * result.position.head<2>().norm());
-  out.status =
-      worst_sigma <= allowed_sigma && !ambiguous ? TargetStatus::kOk : TargetStatus::kDegraded;
+  out.status = worst_sigma <= allowed_sigma && !underdetermined ? TargetStatus::kOk
+                                                                : TargetStatus::kDegraded;
+  if (mirrorAmbiguous(obs, result, worst_sigma)) {
+    out.status = TargetStatus::kAmbiguous;
+    ++stats_.ambiguous;
+  }
 
   const int d = config_.planar ? 2 : 3;
   Eigen::MatrixXd r = config_.measurement_noise * Eigen::MatrixXd::Identity(d, d);

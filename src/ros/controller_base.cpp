@@ -182,10 +182,10 @@ void ControllerBase::start() {
       nh_.createWallTimer(ros::WallDuration(0.05), &ControllerBase::onStopCheck, this);
 }
 
-bool ControllerBase::noteEstimate(const ros::Time& stamp, bool usable) {
+bool ControllerBase::noteEstimate(const ros::Time& stamp, control::EstimateQuality quality) {
   const ros::Time now = ros::Time::now();
   const std::lock_guard<std::mutex> lock(safety_mutex_);
-  if (monitor_.onEstimate((stamp.isZero() ? now : stamp).toSec(), now.toSec(), usable)) {
+  if (monitor_.onEstimate((stamp.isZero() ? now : stamp).toSec(), now.toSec(), quality)) {
     return true;
   }
   ROS_WARN_THROTTLE(2.0, "%s: estimate stamped %.3f s ahead of this node's clock refused; stopping",

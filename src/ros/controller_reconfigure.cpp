@@ -72,6 +72,26 @@ control::VelocityLawParams fromLawTuning(const FollowLawTuningConfig& t,
   return p;
 }
 
+/// Writes an accepted law change back under the node's own parameter names (~follow_distance,
+/// ~linear_pid/kp, ...): the server only updates its copies under ~law, and `rosparam get`
+/// (or a respawned node) would otherwise see the start-up values.
+void writeLawParams(const ros::NodeHandle& private_nh, const control::VelocityLawParams& p) {
+  private_nh.setParam("follow_distance", p.follow_distance);
+  private_nh.setParam("slowdown_distance", p.slowdown_distance);
+  private_nh.setParam("closing_distance", p.closing_distance);
+  private_nh.setParam("stop_margin", p.stop_margin);
+  private_nh.setParam("feed_forward", p.feed_forward);
+  private_nh.setParam("degraded_speed_factor", p.degraded_speed_factor);
+  const auto pid = [&private_nh](const std::string& ns, const control::PidGains& gains) {
+    private_nh.setParam(ns + "/kp", gains.kp);
+    private_nh.setParam(ns + "/ki", gains.ki);
+    private_nh.setParam(ns + "/kd", gains.kd);
+    private_nh.setParam(ns + "/integral_limit", gains.integral_limit);
+  };
+  pid("linear_pid", p.linear);
+  pid("angular_pid", p.angular);
+}
+
 }  // namespace
 
 std::unique_ptr<ControllerReconfigure> makeControllerReconfigure(
@@ -84,8 +104,12 @@ std::unique_ptr<ControllerReconfigure> makeControllerReconfigure(
 std::unique_ptr<FollowLawReconfigure> makeFollowLawReconfigure(
     const ros::NodeHandle& private_nh, const control::VelocityLawParams& initial,
     std::function<void(const control::VelocityLawParams&)> apply) {
-  return std::make_unique<FollowLawReconfigure>(ros::NodeHandle(private_nh, "law"), initial,
-                                                toLawTuning, fromLawTuning, std::move(apply));
+  return std::make_unique<FollowLawReconfigure>(
+      ros::NodeHandle(private_nh, "law"), initial, toLawTuning, fromLawTuning,
+      [private_nh, apply = std::move(apply)](const control::VelocityLawParams& p) {
+        apply(p);  // throws ParamError to refuse: nothing is written then
+        writeLawParams(private_nh, p);
+      });
 }
 
 }  // namespace radio_follow

@@ -1,17 +1,22 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/ros/follow_evaluator_node.hpp"
 
+#include <signal.h>
 #include <std_msgs/String.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <system_error>
 
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/estimation/locator.hpp"
 #include "radio_follow/ros/params.hpp"
+#include "radio_follow/ros/target_estimate.hpp"
 
 namespace radio_follow {
 namespace {
@@ -37,6 +42,26 @@ void writeFile(const std::string& path, const std::string& text) {
   }
 }
 
+/// Ends the roslaunch that started this node, as Ctrl-C does. roslaunch has no API for a
+/// node to end a launch cleanly: a `required` node that exits makes it print "REQUIRED
+/// process has died" in red after every successful run. SIGINT to the parent is what
+/// Ctrl-C sends; only done when the parent really is roslaunch.
+void endParentLaunch() {
+  const pid_t parent = getppid();
+  std::ifstream cmdline("/proc/" + std::to_string(parent) + "/cmdline");
+  const std::string command((std::istreambuf_iterator<char>(cmdline)),
+                            std::istreambuf_iterator<char>());
+  if (command.find("roslaunch") == std::string::npos) {
+    ROS_WARN(
+        "follow_evaluator: end_launch is set but my parent (pid %d) is not roslaunch; "
+        "leaving it running",
+        static_cast<int>(parent));
+    return;
+  }
+  ROS_INFO("follow_evaluator: scenario over, ending the launch");
+  kill(parent, SIGINT);
+}
+
 }  // namespace
 
 void FollowEvaluatorNode::Params::validate() const {
@@ -58,6 +83,7 @@ FollowEvaluatorNode::FollowEvaluatorNode(ros::NodeHandle& nh, ros::NodeHandle& p
   reader.param("report_dir", params_.report_dir, params_.report_dir);
   reader.param("rate", params_.rate, params_.rate);
   reader.param("write_period", params_.write_period, params_.write_period);
+  reader.param("end_launch", params_.end_launch, params_.end_launch);
   sim::FollowSettings& s = params_.settings;
   reader.param("follow_distance", s.follow_distance, s.follow_distance);
   reader.param("safe_distance", s.safe_distance, s.safe_distance);
@@ -121,9 +147,35 @@ void FollowEvaluatorNode::onFinished(const std_msgs::BoolConstPtr& msg) {
   timer_.stop();
   write_timer_.stop();
   writeFiles();
+  const sim::FollowReport result = metrics_.report();
   std_msgs::String report;
-  report.data = metrics_.report().toJson();
+  report.data = result.toJson();
   report_pub_.publish(report);
+  logVerdict(result);
+  if (params_.end_launch) {
+    endParentLaunch();
+  }
+}
+
+void FollowEvaluatorNode::logVerdict(const sim::FollowReport& report) const {
+  if (report.failures.empty()) {
+    ROS_INFO(
+        "follow_evaluator: closed loop OK: the robot drove %.1f m, the estimate was usable "
+        "%.0f %% of the time, the gap held %.0f %% of the walk",
+        report.robot_distance, 100.0 * report.estimate_availability,
+        100.0 * report.gap_within_tolerance);
+    return;
+  }
+  std::string reasons;
+  for (const std::string& failure : report.failures) {
+    reasons += (reasons.empty() ? "" : "; ") + failure;
+  }
+  const std::string last_status =
+      estimate_ ? toString(static_cast<TargetStatus>(estimate_->status)) : "none heard";
+  ROS_ERROR(
+      "follow_evaluator: CLOSED LOOP FAILED: %s. Last estimate status: %s. Check the "
+      "locator's inputs (its diagnostics name silent topics) and doc/deployment.md.",
+      reasons.c_str(), last_status.c_str());
 }
 
 void FollowEvaluatorNode::onTick(const ros::TimerEvent& event) {
@@ -152,8 +204,7 @@ void FollowEvaluatorNode::onTick(const ros::TimerEvent& event) {
   s.target_speed = target_speed_;
   s.truth_x = relative->point.x;
   s.truth_y = relative->point.y;
-  const bool usable = estimate_ && (estimate_->status == TargetEstimate::STATUS_OK ||
-                                    estimate_->status == TargetEstimate::STATUS_DEGRADED);
+  const bool usable = estimate_ && hasPosition(*estimate_);
   // An estimate from the future is not available, whatever it claims (TimePolicy).
   const bool trusted =
       usable && time_.check(estimate_->header.stamp.toSec(), event.current_real.toSec()) ==

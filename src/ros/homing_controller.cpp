@@ -150,7 +150,7 @@ void HomingControllerNode::onBearing(const AoaBearing::ConstPtr& msg) {
   last_bearing_ = bearing;
   // A fresh bearing is a usable observation even before a goal exists: compute() then
   // searches along it, which is how the parallax estimate gets its baseline.
-  noteEstimate(stamp, true);
+  noteEstimate(stamp, control::EstimateQuality::kUsable);
 
   if (homing_.goal()) {
     geometry_msgs::PoseStamped goal;

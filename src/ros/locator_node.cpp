@@ -139,9 +139,7 @@ void LocatorNode::publish(const LocatorEstimate& estimate, const ros::Time& now)
   // Always published, LOST included: a controller must hear that the target is gone.
   target_pub_.publish(toMessage(estimate, layout_.fixed_frame, stamp));
 
-  const bool has_position =
-      estimate.status == TargetStatus::kOk || estimate.status == TargetStatus::kDegraded;
-  if (has_position) {
+  if (hasPosition(estimate.status)) {
     geometry_msgs::PoseWithCovarianceStamped pose;
     pose.header.frame_id = layout_.fixed_frame;
     pose.header.stamp = stamp;
@@ -195,6 +193,7 @@ void LocatorNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) 
   status.add("stale measurements dropped", s.stale_dropped);
   status.add("future-stamped measurements dropped", s.future_dropped);
   status.add("non-finite epochs", s.non_finite);
+  status.add("ambiguous epochs (mirror test)", s.ambiguous);
   status.add("invalid measurements", s.invalid_measurements);
   status.add("bearings not selected", s.bearings_rejected_fov);
   status.add("filter gated", f.gatedCount());

@@ -78,6 +78,7 @@ void LocatorNode::Params::load(const Source& nh) {
   nh.param("ceres_covariance", c.ceres_covariance, c.ceres_covariance);
   nh.param("max_position_sigma", c.max_position_sigma, c.max_position_sigma);
   nh.param("max_relative_sigma", c.max_relative_sigma, c.max_relative_sigma);
+  nh.param("ambiguity_margin", c.ambiguity_margin, c.ambiguity_margin);
   nh.param("default_range", c.default_range, c.default_range);
 }
 

@@ -37,6 +37,7 @@ LocatorTuningConfig toTuning(const LocatorConfig& c) {
   t.ceres_covariance = c.ceres_covariance;
   t.max_position_sigma = c.max_position_sigma;
   t.max_relative_sigma = c.max_relative_sigma;
+  t.ambiguity_margin = c.ambiguity_margin;
   return t;
 }
 
@@ -69,6 +70,7 @@ LocatorConfig fromTuning(const LocatorTuningConfig& t, LocatorConfig c) {
   c.ceres_covariance = t.ceres_covariance;
   c.max_position_sigma = t.max_position_sigma;
   c.max_relative_sigma = t.max_relative_sigma;
+  c.ambiguity_margin = t.ambiguity_margin;
   return c;
 }
 

@@ -111,8 +111,7 @@ ReplayResult replay(const BagData& bag, const Layout& layout, const LocatorConfi
     ReplayRow row;
     row.t = now;
     row.estimate = locator.update(now);
-    const bool has_position =
-        row.estimate.status == TargetStatus::kOk || row.estimate.status == TargetStatus::kDegraded;
+    const bool has_position = hasPosition(row.estimate.status);
     with_position += has_position;
     if (has_position && truthAt(bag.truth, row.estimate.stamp, row.truth)) {
       row.has_truth = true;
@@ -131,7 +130,7 @@ std::string toCsv(const ReplayResult& result) {
   out << "t,status,x,y,z,sigma_x,sigma_y,truth_x,truth_y,error\n";
   for (const ReplayRow& r : result.rows) {
     const LocatorEstimate& e = r.estimate;
-    const bool position = e.status == TargetStatus::kOk || e.status == TargetStatus::kDegraded;
+    const bool position = hasPosition(e.status);
     out << r.t << "," << toString(e.status) << ",";
     if (position) {
       out << e.position.x() << "," << e.position.y() << "," << e.position.z() << ","

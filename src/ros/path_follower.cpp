@@ -10,6 +10,7 @@
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/ros/controller_reconfigure.hpp"
 #include "radio_follow/ros/params.hpp"
+#include "radio_follow/ros/target_estimate.hpp"
 #include "radio_follow/ros/velocity_controller.hpp"
 
 namespace radio_follow {
@@ -76,9 +77,9 @@ void PathFollowerNode::onStopped() {
 
 void PathFollowerNode::onEstimate(const TargetEstimate::ConstPtr& msg) {
   estimate_ = msg;
-  noteEstimate(msg->header.stamp, estimateUsable(*msg));
+  noteEstimate(msg->header.stamp, estimateQuality(*msg));
   // Only full positions extend the path: a HEADING_ONLY position is a guess.
-  if (msg->status != TargetEstimate::STATUS_OK && msg->status != TargetEstimate::STATUS_DEGRADED) {
+  if (!hasPosition(*msg)) {
     return;
   }
   const std::optional<Eigen::Vector2d> point = motion_.add(*msg);

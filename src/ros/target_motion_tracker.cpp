@@ -8,6 +8,8 @@
 #include <string>
 #include <utility>
 
+#include "radio_follow/ros/target_estimate.hpp"
+
 namespace radio_follow {
 
 TargetMotionTracker::TargetMotionTracker(const tf2_ros::Buffer& buffer, std::string odom_frame,
@@ -15,8 +17,7 @@ TargetMotionTracker::TargetMotionTracker(const tf2_ros::Buffer& buffer, std::str
     : buffer_(buffer), odom_frame_(std::move(odom_frame)), tf_timeout_(tf_timeout) {}
 
 std::optional<Eigen::Vector2d> TargetMotionTracker::add(const TargetEstimate& estimate) {
-  if (estimate.status != TargetEstimate::STATUS_OK &&
-      estimate.status != TargetEstimate::STATUS_DEGRADED) {
+  if (!hasPosition(estimate)) {
     last_error_.clear();
     return std::nullopt;  // a HEADING_ONLY position is a guess along the bearing
   }

@@ -5,6 +5,7 @@
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/ros/controller_reconfigure.hpp"
 #include "radio_follow/ros/params.hpp"
+#include "radio_follow/ros/target_estimate.hpp"
 
 namespace radio_follow {
 
@@ -44,15 +45,9 @@ control::TargetPolar targetPolar(const TargetEstimate& estimate,
   t.module_gap = module_gap;
   t.range = estimate.range;
   t.bearing = estimate.bearing;
-  t.range_valid = estimate.status == TargetEstimate::STATUS_OK ||
-                  estimate.status == TargetEstimate::STATUS_DEGRADED;
+  t.range_valid = hasPosition(estimate);
   t.degraded = estimate.status == TargetEstimate::STATUS_DEGRADED;
   return t;
-}
-
-bool estimateUsable(const TargetEstimate& estimate) {
-  return estimate.status != TargetEstimate::STATUS_LOST && std::isfinite(estimate.bearing) &&
-         std::isfinite(estimate.range);
 }
 
 void VelocityControllerNode::Params::load(const ParamReader& pnh) {
@@ -93,7 +88,7 @@ void VelocityControllerNode::onCommonChange(const ControllerCommonParams& next) 
 
 void VelocityControllerNode::onEstimate(const TargetEstimate::ConstPtr& msg) {
   estimate_ = msg;
-  noteEstimate(msg->header.stamp, estimateUsable(*msg));
+  noteEstimate(msg->header.stamp, estimateQuality(*msg));
   if (!params_.odom_frame.empty() && !motion_.add(*msg) && !motion_.lastError().empty()) {
     ROS_WARN_THROTTLE(10.0, "%s: no transform %s <- %s, following without speed feed-forward (%s)",
                       ros::this_node::getName().c_str(), params_.odom_frame.c_str(),

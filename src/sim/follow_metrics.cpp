@@ -90,6 +90,7 @@ FollowReport FollowMetrics::report() const {
   r.min_gap = std::numeric_limits<double>::infinity();
   r.min_gap_while_moving = std::numeric_limits<double>::infinity();
   if (samples_.empty()) {
+    r.failures.push_back("nothing was sampled (no odometry, ground truth or estimate heard)");
     return r;
   }
   r.duration = samples_.back().t - samples_.front().t;
@@ -169,6 +170,21 @@ FollowReport FollowMetrics::report() const {
     }
     deviations.push_back(best);
   }
+  const FollowSample& first = samples_.front();
+  const bool had_to_move =
+      r.target_distance > 1.0 ||
+      std::hypot(first.target_x - first.robot_x, first.target_y - first.robot_y) >
+          settings_.follow_distance + settings_.gap_tolerance;
+  if (had_to_move && r.robot_distance < settings_.min_robot_distance) {
+    std::ostringstream why;
+    why.precision(3);
+    why << "the robot never moved (" << r.robot_distance << " m in " << r.duration
+        << " s while the target walked " << r.target_distance << " m)";
+    r.failures.push_back(why.str());
+  }
+  if (errors.empty()) {
+    r.failures.push_back("the estimate never became usable (no OK or DEGRADED estimate)");
+  }
   r.path_samples = static_cast<int>(deviations.size());
   r.path_deviation_median = quantile(deviations, 0.5);
   r.path_deviation_max = deviations.empty()
@@ -196,7 +212,13 @@ std::string FollowReport::toJson() const {
       << "  \"estimate_error_mean_m\": " << jsonNumber(estimate_error_mean) << ",\n"
       << "  \"path_deviation_median_m\": " << jsonNumber(path_deviation_median) << ",\n"
       << "  \"path_deviation_max_m\": " << jsonNumber(path_deviation_max) << ",\n"
-      << "  \"path_samples\": " << path_samples << "\n"
+      << "  \"path_samples\": " << path_samples << ",\n"
+      << "  \"passed\": " << (failures.empty() ? "true" : "false") << ",\n"
+      << "  \"failures\": [";
+  for (std::size_t i = 0; i < failures.size(); ++i) {
+    out << (i == 0 ? "" : ", ") << jsonString(failures[i]);
+  }
+  out << "]\n"
       << "}\n";
   return out.str();
 }

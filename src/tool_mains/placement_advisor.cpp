@@ -24,9 +24,12 @@
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/config/layout.hpp"
+#include "radio_follow/tools/error_statistics.hpp"
 
 namespace rf = radio_follow;
 namespace fs = std::filesystem;
+using rf::jsonNumber;
+using rf::jsonString;
 
 namespace {
 
@@ -99,33 +102,6 @@ Options parse(int argc, char** argv) {
   rf::require(!opt.out.empty(), "--out", std::string("(none)"), "an output directory");
   opt.config.validate();
   return opt;
-}
-
-std::string jsonString(const std::string& text) {
-  std::string out = "\"";
-  for (const char c : text) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      char buffer[8];
-      std::snprintf(buffer, sizeof(buffer), "\\u%04x", c);
-      out += buffer;
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
-}
-
-/// JSON has no infinity: an unobservable bound is written as null.
-std::string jsonNumber(double value) {
-  if (!std::isfinite(value)) {
-    return "null";
-  }
-  char buffer[32];
-  std::snprintf(buffer, sizeof(buffer), "%.6g", value);
-  return buffer;
 }
 
 std::string csvNumber(double value) {

@@ -125,9 +125,13 @@ TEST_F(LiveTuning, ControllerLawGainsAndDistancesAreTunable) {
   EXPECT_DOUBLE_EQ(doubleOf(closer, "follow_distance"), 1.8);
   const auto gain = call(withDouble("linear_pid_kp", 1.2), kLawService);
   EXPECT_DOUBLE_EQ(doubleOf(gain, "linear_pid_kp"), 1.2);
+  // The parameter server holds what runs, under the node's own names (not only ~law/...).
+  EXPECT_DOUBLE_EQ(param("follow_distance", "velocity_controller"), 1.8);
+  EXPECT_DOUBLE_EQ(param("linear_pid/kp", "velocity_controller"), 1.2);
   // VelocityLawParams::validate: a distance > 0, a factor in [0, 1].
   const auto negative = call(withDouble("follow_distance", -1.0), kLawService);
   EXPECT_DOUBLE_EQ(doubleOf(negative, "follow_distance"), 1.8);
+  EXPECT_DOUBLE_EQ(param("follow_distance", "velocity_controller"), 1.8);  // refused: kept
   const auto factor = call(withDouble("feed_forward", 1.5), kLawService);
   EXPECT_DOUBLE_EQ(doubleOf(factor, "feed_forward"), 1.0);
 }

@@ -28,15 +28,21 @@ class Feeder {
         range_timer_(nh.createTimer(ros::Duration(0.1), &Feeder::rangeTick, this)) {}
 
   std::atomic<bool> send_estimates{true};
+  /// What the timer sends: a far OK target, an AMBIGUOUS one, or an all-zero message.
+  enum class Kind { kFarOk, kAmbiguous, kAllZero };
+  std::atomic<Kind> kind{Kind::kFarOk};
 
   void publishEstimate(const ros::Time& stamp) {
-    radio_follow::TargetEstimate e;
-    e.header.stamp = stamp;
-    e.header.frame_id = "base_link";
-    e.position.x = 4.0;
-    e.range = 4.0;
-    e.bearing = 0.0;
-    e.status = radio_follow::TargetEstimate::STATUS_OK;
+    radio_follow::TargetEstimate e;  // all zero: what a publisher that fills nothing sends
+    if (kind != Kind::kAllZero) {
+      e.header.stamp = stamp;
+      e.header.frame_id = "base_link";
+      e.position.x = 4.0;
+      e.range = 4.0;
+      e.bearing = 0.0;
+      e.status = kind == Kind::kAmbiguous ? radio_follow::TargetEstimate::STATUS_AMBIGUOUS
+                                          : radio_follow::TargetEstimate::STATUS_OK;
+    }
     estimate_pub_.publish(e);
   }
 
@@ -101,6 +107,7 @@ class SafetyAttacks : public ::testing::Test {
   }
   void SetUp() override {
     feeder_->send_estimates = true;
+    feeder_->kind = Feeder::Kind::kFarOk;
     ASSERT_TRUE(waitFor([&] { return recorder_->lastCmd().linear.x > 0.2; }, 20.0))
         << "the controller never drove toward a far target";
   }
@@ -123,6 +130,28 @@ TEST_F(SafetyAttacks, OneEstimateFromTheFutureThenSilence) {
       << "still driving after a future-stamped estimate and a dead locator";
   EXPECT_TRUE(staysStopped(*recorder_, 3.0));
   EXPECT_EQ(recorder_->lastStatus().state, FollowerStatus::STATE_TARGET_LOST);
+}
+
+// A publisher that fills nothing sends zeros: status 0 used to be STATUS_OK, range 0 at
+// bearing 0 and stamp 0 (read as "now"): a usable estimate. Zero is STATUS_UNSET now.
+TEST_F(SafetyAttacks, AllZeroEstimatesStop) {
+  feeder_->kind = Feeder::Kind::kAllZero;
+  ASSERT_TRUE(waitFor([&] { return isZero(recorder_->lastCmd()); }, 1.0))
+      << "still driving on all-zero estimates";
+  EXPECT_TRUE(staysStopped(*recorder_, 2.0));
+  EXPECT_EQ(recorder_->lastStatus().state, FollowerStatus::STATE_TARGET_LOST);
+}
+
+// The locator cannot tell the target from its mirror image: stop and say so (not
+// "Following." towards what may be the wrong side).
+TEST_F(SafetyAttacks, AmbiguousEstimatesStopAndSaySo) {
+  feeder_->kind = Feeder::Kind::kAmbiguous;
+  ASSERT_TRUE(waitFor([&] { return isZero(recorder_->lastCmd()); }, 1.0))
+      << "still driving on AMBIGUOUS estimates";
+  EXPECT_TRUE(staysStopped(*recorder_, 2.0));
+  EXPECT_EQ(recorder_->lastStatus().state, FollowerStatus::STATE_TARGET_AMBIGUOUS);
+  EXPECT_NE(recorder_->lastStatus().text.find("mirror"), std::string::npos)
+      << recorder_->lastStatus().text;
 }
 
 // A range below safe_distance that arrives late (stamped 2 s ago, older than

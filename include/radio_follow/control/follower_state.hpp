@@ -15,7 +15,19 @@ enum class FollowerState : std::uint8_t {
   kTooClose = 3,
   kTargetLost = 4,
   kArrived = 5,
+  kTargetAmbiguous = 6,
 };
+
+/// What a controller may do with the newest estimate.
+enum class EstimateQuality {
+  kUsable,     ///< OK, DEGRADED or HEADING_ONLY with a finite range and bearing
+  kLost,       ///< LOST, unset or not finite
+  kAmbiguous,  ///< AMBIGUOUS: the target may be at its mirror image
+};
+
+/// "disabled", "waiting_for_target", "following", ... (FollowerStatus.STATE_* in lower
+/// case without the prefix), for diagnostics and logs.
+const char* stateName(FollowerState state);
 
 /// Why the safety layer holds the robot (or kNone when it may move).
 enum class StopReason {
@@ -25,6 +37,8 @@ enum class StopReason {
   kTooClose,
   kEstimateStale,
   kTargetLost,
+  /// The estimate is AMBIGUOUS (mirror image possible).
+  kTargetAmbiguous,
   kRangesSilent,
   /// A range or estimate stamped ahead of this node's clock (TimePolicy).
   kFutureStamp,

@@ -58,9 +58,9 @@ class SafetyMonitor {
   /// future); the node then publishes zero at once, before the next control tick.
   bool onRange(double stamp, double now, const std::string& source, double range);
 
-  /// An estimate stamped `stamp` received at `now`; `usable` is false for a LOST one.
+  /// An estimate stamped `stamp` received at `now`, of the given quality.
   /// Returns false when it was refused (from the future; motion is then blocked).
-  bool onEstimate(double stamp, double now, bool usable);
+  bool onEstimate(double stamp, double now, EstimateQuality quality);
 
   /// New thresholds at runtime (live tuning). Throws ParamError and keeps the old ones
   /// when `params` fails validate(); the latched state and the last ranges are kept.
@@ -92,7 +92,7 @@ class SafetyMonitor {
   std::map<std::string, std::pair<double, double>> ranges_;  // source -> (stamp, range)
   bool has_estimate_ = false;
   double estimate_stamp_ = 0.0;
-  bool estimate_usable_ = false;
+  EstimateQuality estimate_quality_ = EstimateQuality::kLost;
   bool blocked_once_ = false;
   double last_block_time_ = 0.0;
   StopReason last_block_reason_ = StopReason::kNoEstimateYet;

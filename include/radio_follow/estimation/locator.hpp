@@ -18,10 +18,21 @@
 
 namespace radio_follow {
 
-/// Same values as TargetEstimate.STATUS_*.
-enum class TargetStatus : std::uint8_t { kOk = 0, kHeadingOnly = 1, kDegraded = 2, kLost = 3 };
-/// "OK", "HEADING_ONLY", "DEGRADED", "LOST" (the message's constant names).
+/// Same values as TargetEstimate.STATUS_*. Zero is no status: a zero-initialised message
+/// must never read as a usable estimate.
+enum class TargetStatus : std::uint8_t {
+  kUnset = 0,
+  kOk = 1,
+  kHeadingOnly = 2,
+  kDegraded = 3,
+  kLost = 4,
+  kAmbiguous = 5,
+};
+/// "UNSET", "OK", "HEADING_ONLY", "DEGRADED", "LOST", "AMBIGUOUS" (the message's constant
+/// names).
 const char* toString(TargetStatus status);
+/// OK or DEGRADED: the position may be driven towards (HEADING_ONLY: only the direction).
+bool hasPosition(TargetStatus status);
 /// Same bits as TargetEstimate.SOURCE_*.
 constexpr std::uint8_t kSourceTwr = 1;
 constexpr std::uint8_t kSourceTdoa = 2;
@@ -57,6 +68,12 @@ struct LocatorConfig {
   double max_relative_sigma = 0.1;
   /// Distance assumed along a bearing when no range exists, m.
   double default_range = 3.0;
+  /// Mirror test: each ranged solve is repeated from the solution's mirror image across
+  /// the ranging modules' main axis. When that second solution lies elsewhere and its cost
+  /// is within this margin of the first (0.5 chi-square units; 2 = the data prefer one
+  /// side by less than about 2 sigma), the data cannot tell the two apart: the estimate is
+  /// AMBIGUOUS until a few epochs in a row have preferred one side by more. 0 disables.
+  double ambiguity_margin = 2.0;
 
   /// Throws ParamError naming the first invalid field (names match the ROS parameters).
   void validate() const;
@@ -93,6 +110,7 @@ struct LocatorStats {
   std::size_t invalid_measurements = 0;
   std::size_t bearings_rejected_fov = 0;
   std::size_t lost = 0;
+  std::size_t ambiguous = 0;  ///< epochs reported AMBIGUOUS (mirror test)
   double last_solve_seconds = 0.0;
 };
 
@@ -151,6 +169,10 @@ class Locator {
 
   bool fresh(Stamped& slot, double now);
   LocatorEstimate lose(LocatorEstimate estimate);
+  /// The mirror test (LocatorConfig::ambiguity_margin): true when `solution` may as well
+  /// be its mirror image. Updates the run of epochs that preferred this side.
+  bool mirrorAmbiguous(const ObservationSet& obs, const SolveResult& solution, double sigma);
+  void forgetSide();
 
   Layout layout_;
   LocatorConfig config_;
@@ -165,6 +187,10 @@ class Locator {
   /// tell where along the bearing the target is, so it cannot warm-start a ranged solve).
   std::optional<Eigen::Vector3d> warm_;
   bool warm_ranged_ = false;
+  /// Mirror test: epochs in a row whose data preferred the tracked side, and whether the
+  /// track has been confirmed so since it started.
+  int side_votes_ = 0;
+  bool side_confirmed_ = false;
   LocatorStats stats_;
   TimePolicy time_;
 };

@@ -116,7 +116,7 @@ class ControllerBase {
 
   /// Feeds the safety monitor with an estimate (or a bearing, for homing). Returns false
   /// when it was refused (stamped in the future: the robot stops; TimePolicy).
-  bool noteEstimate(const ros::Time& stamp, bool usable);
+  bool noteEstimate(const ros::Time& stamp, control::EstimateQuality quality);
 
   const ControllerCommonParams& common() const { return common_; }
 

@@ -25,6 +25,9 @@ class FollowEvaluatorNode {
     std::string report_dir;     ///< empty: only log the metrics
     double rate = 20.0;         ///< Hz
     double write_period = 5.0;  ///< s between report rewrites (also written at shutdown)
+    /// When the scenario ends, end the roslaunch that started this node (demo.launch;
+    /// false under rostest, whose test node ends the run).
+    bool end_launch = false;
     sim::FollowSettings settings;
 
     void validate() const;
@@ -41,6 +44,8 @@ class FollowEvaluatorNode {
   /// The simulator announced the end: stop sampling, write, publish the report.
   void onFinished(const std_msgs::BoolConstPtr& msg);
   void writeReport() const;
+  /// One line saying whether the run worked as a closed loop, naming what failed.
+  void logVerdict(const sim::FollowReport& report) const;
   void writeFiles() const;
 
   Params params_;

@@ -36,9 +36,6 @@ control::VelocityLawParams lawWithCommon(control::VelocityLawParams law,
 control::TargetPolar targetPolar(const TargetEstimate& estimate,
                                  std::optional<double> receding_speed, double module_gap);
 
-/// True for estimates the safety layer may accept (everything but LOST).
-bool estimateUsable(const TargetEstimate& estimate);
-
 /// velocity_controller (thesis Section 4.6): drives straight towards the target's
 /// estimate with PID on distance and heading, behind the shared safety layer.
 class VelocityControllerNode : public ControllerBase {

@@ -45,6 +45,10 @@ struct FollowSettings {
   double turn_heading_change = 0.35;  ///< rad (20 deg)
   double turn_window = 2.0;           ///< m
   double moving_command = 0.02;       ///< |cmd| above this counts as "commanded to move", m/s
+  /// The run fails when the robot drove less than this although it had to move (the
+  /// person walked more than a metre, or started farther than follow_distance +
+  /// gap_tolerance away), m.
+  double min_robot_distance = 0.3;
 };
 
 struct FollowReport {
@@ -65,6 +69,9 @@ struct FollowReport {
   double path_deviation_median = 0.0;  ///< m, outside turns
   double path_deviation_max = 0.0;     ///< m, outside turns
   int path_samples = 0;
+  /// Why the run failed as a closed loop, one sentence each (empty: it passed): the robot
+  /// never moved, the estimate was never usable. Not a quality threshold: a wiring check.
+  std::vector<std::string> failures;
 
   std::string toJson() const;
 };

@@ -15,6 +15,8 @@ double mean(const std::vector<double>& values);
 
 /// A number for a JSON document: 6 significant digits, `null` when not finite.
 std::string jsonNumber(double v);
+/// A JSON string literal (quotes, backslashes and control characters escaped).
+std::string jsonString(const std::string& text);
 
 /// Count, mean, median, 95th percentile and maximum of a set of errors.
 struct ErrorSummary {

@@ -23,7 +23,7 @@ SafetyMonitor enabledMonitor(const SafetyParams& params = SafetyParams()) {
 TEST(SafetyMonitor, StartsDisabled) {
   SafetyMonitor monitor{SafetyParams()};
   monitor.onRange(0.0, 0.0, "a", 3.0);
-  monitor.onEstimate(0.0, 0.0, true);
+  monitor.onEstimate(0.0, 0.0, EstimateQuality::kUsable);
   const SafetyDecision d = monitor.evaluate(0.1);
   EXPECT_FALSE(d.may_move);
   EXPECT_EQ(d.reason, StopReason::kDisabled);
@@ -32,7 +32,7 @@ TEST(SafetyMonitor, StartsDisabled) {
 TEST(SafetyMonitor, NewSafeDistanceAppliesAndAnInvalidOneIsRefused) {
   SafetyMonitor monitor = enabledMonitor();
   monitor.onRange(0.0, 0.0, "a", 2.0);
-  monitor.onEstimate(0.0, 0.0, true);
+  monitor.onEstimate(0.0, 0.0, EstimateQuality::kUsable);
   ASSERT_TRUE(monitor.evaluate(0.1).may_move);
   SafetyParams wider;
   wider.safe_distance = 2.5;
@@ -49,14 +49,14 @@ TEST(SafetyMonitor, NewSafeDistanceAppliesAndAnInvalidOneIsRefused) {
 TEST(SafetyMonitor, MovesWithFreshFarRangeAndEstimate) {
   SafetyMonitor monitor = enabledMonitor();
   monitor.onRange(0.0, 0.0, "a", 3.0);
-  monitor.onEstimate(0.0, 0.0, true);
+  monitor.onEstimate(0.0, 0.0, EstimateQuality::kUsable);
   EXPECT_TRUE(monitor.evaluate(0.1).may_move);
 }
 
 TEST(SafetyMonitor, CloseRangeStopsEvenWithAGoodEstimate) {
   SafetyMonitor monitor = enabledMonitor();
   monitor.onRange(0.0, 0.0, "a", 3.0);
-  monitor.onEstimate(0.0, 0.0, true);
+  monitor.onEstimate(0.0, 0.0, EstimateQuality::kUsable);
   EXPECT_TRUE(monitor.onRange(0.05, 0.05, "b", 1.0));
   const SafetyDecision d = monitor.evaluate(0.1);
   EXPECT_FALSE(d.may_move);
@@ -73,15 +73,15 @@ TEST(SafetyMonitor, ResumesOnlyAfterHoldTime) {
   params.hold_time = 1.0;
   SafetyMonitor monitor = enabledMonitor(params);
   monitor.onRange(0.0, 0.0, "a", 1.0);
-  monitor.onEstimate(0.0, 0.0, true);
+  monitor.onEstimate(0.0, 0.0, EstimateQuality::kUsable);
   EXPECT_FALSE(monitor.evaluate(0.0).may_move);
   monitor.onRange(0.2, 0.2, "a", 2.0);
-  monitor.onEstimate(0.5, 0.5, true);
+  monitor.onEstimate(0.5, 0.5, EstimateQuality::kUsable);
   const SafetyDecision held = monitor.evaluate(0.6);
   EXPECT_FALSE(held.may_move);
   EXPECT_EQ(held.reason, StopReason::kTooClose);
   monitor.onRange(1.0, 1.0, "a", 2.0);
-  monitor.onEstimate(1.0, 1.0, true);
+  monitor.onEstimate(1.0, 1.0, EstimateQuality::kUsable);
   EXPECT_TRUE(monitor.evaluate(1.05).may_move);
 }
 
@@ -89,17 +89,17 @@ TEST(SafetyMonitor, StaleAndLostEstimatesStop) {
   SafetyMonitor monitor = enabledMonitor();
   monitor.onRange(0.0, 0.0, "a", 3.0);
   EXPECT_EQ(monitor.evaluate(0.0).reason, StopReason::kNoEstimateYet);
-  monitor.onEstimate(0.0, 0.0, true);
+  monitor.onEstimate(0.0, 0.0, EstimateQuality::kUsable);
   monitor.onRange(0.6, 0.6, "a", 3.0);
   EXPECT_EQ(monitor.evaluate(0.6).reason, StopReason::kEstimateStale);
-  monitor.onEstimate(0.7, 0.7, false);
+  monitor.onEstimate(0.7, 0.7, EstimateQuality::kLost);
   EXPECT_EQ(monitor.evaluate(0.7).reason, StopReason::kTargetLost);
 }
 
 TEST(SafetyMonitor, SilentRangeSourcesStop) {
   SafetyMonitor monitor = enabledMonitor();
   monitor.onRange(0.0, 0.0, "a", 3.0);
-  monitor.onEstimate(1.5, 1.5, true);
+  monitor.onEstimate(1.5, 1.5, EstimateQuality::kUsable);
   EXPECT_EQ(monitor.evaluate(1.5).reason, StopReason::kRangesSilent);
 }
 
@@ -109,7 +109,7 @@ TEST(SafetyMonitor, ForgetsASilentCloseSourceWhileOthersReport) {
   SafetyMonitor monitor = enabledMonitor(params);
   monitor.onRange(0.0, 0.0, "dead", 1.0);
   monitor.onRange(1.5, 1.5, "alive", 3.0);
-  monitor.onEstimate(1.5, 1.5, true);
+  monitor.onEstimate(1.5, 1.5, EstimateQuality::kUsable);
   EXPECT_TRUE(monitor.evaluate(1.6).may_move);
 }
 
@@ -117,7 +117,7 @@ TEST(SafetyMonitor, WithoutRangeWatchOnlyTheEstimateCounts) {
   SafetyParams params;
   params.watch_ranges = false;
   SafetyMonitor monitor = enabledMonitor(params);
-  monitor.onEstimate(0.0, 0.0, true);
+  monitor.onEstimate(0.0, 0.0, EstimateQuality::kUsable);
   EXPECT_TRUE(monitor.evaluate(0.1).may_move);
 }
 
@@ -156,9 +156,9 @@ TEST(SafetyParams, PhysicalBoundsNotJustSigns) {
 TEST(SafetyMonitorTime, EstimateFromTheFutureIsRefusedAndStops) {
   SafetyMonitor monitor = enabledMonitor();
   monitor.onRange(0.0, 0.0, "a", 3.0);
-  monitor.onEstimate(0.0, 0.0, true);
+  monitor.onEstimate(0.0, 0.0, EstimateQuality::kUsable);
   ASSERT_TRUE(monitor.evaluate(0.05).may_move);
-  EXPECT_FALSE(monitor.onEstimate(30.0, 0.1, true));  // 29.9 s ahead
+  EXPECT_FALSE(monitor.onEstimate(30.0, 0.1, EstimateQuality::kUsable));  // 29.9 s ahead
   monitor.onRange(0.1, 0.1, "a", 3.0);
   EXPECT_EQ(monitor.evaluate(0.15).reason, StopReason::kFutureStamp);
   // The locator is dead from here on; ranges keep coming. Never moves again.
@@ -172,7 +172,7 @@ TEST(SafetyMonitorTime, EstimateFromTheFutureIsRefusedAndStops) {
 TEST(SafetyMonitorTime, RangeFromTheFutureStopsAtOnce) {
   SafetyMonitor monitor = enabledMonitor();
   monitor.onRange(0.0, 0.0, "a", 3.0);
-  monitor.onEstimate(0.0, 0.0, true);
+  monitor.onEstimate(0.0, 0.0, EstimateQuality::kUsable);
   EXPECT_TRUE(monitor.onRange(5.0, 0.1, "a", 3.0));
   EXPECT_FALSE(monitor.evaluate(0.1).may_move);
   // Within tolerance (another machine's clock a few ms ahead) is fine.
@@ -187,18 +187,18 @@ TEST(SafetyMonitorTime, StaleShortRangeHoldsFromItsReceiveTimeWithoutFlapping) {
   double t = 0.0;
   for (; t < 2.0; t += 0.1) {
     monitor.onRange(t, t, "a", 3.0);
-    monitor.onEstimate(t, t, true);
+    monitor.onEstimate(t, t, EstimateQuality::kUsable);
   }
   ASSERT_TRUE(monitor.evaluate(t).may_move);
   const double received = t;
   EXPECT_TRUE(monitor.onRange(received - 1.5, received, "b", 0.8));
   for (; t < received + 1.0 - 1e-9; t += 0.05) {
     monitor.onRange(t, t, "a", 3.0);
-    monitor.onEstimate(t, t, true);
+    monitor.onEstimate(t, t, EstimateQuality::kUsable);
     ASSERT_FALSE(monitor.evaluate(t).may_move) << "t=" << t;
   }
   monitor.onRange(t + 0.05, t + 0.05, "a", 3.0);
-  monitor.onEstimate(t + 0.05, t + 0.05, true);
+  monitor.onEstimate(t + 0.05, t + 0.05, EstimateQuality::kUsable);
   EXPECT_TRUE(monitor.evaluate(t + 0.05).may_move);
 }
 
@@ -208,7 +208,7 @@ TEST(SafetyMonitorTime, ClockJumpBackResetsInsteadOfFreezing) {
   SafetyMonitor monitor = enabledMonitor();
   for (double t = 99.0; t <= 100.0; t += 0.1) {
     monitor.onRange(t, t, "a", 3.0);
-    monitor.onEstimate(t, t, true);
+    monitor.onEstimate(t, t, EstimateQuality::kUsable);
   }
   ASSERT_TRUE(monitor.evaluate(100.0).may_move);
   EXPECT_FALSE(monitor.evaluate(0.0).may_move);
@@ -216,12 +216,12 @@ TEST(SafetyMonitorTime, ClockJumpBackResetsInsteadOfFreezing) {
   double t = 0.05;
   for (; t < 1.0; t += 0.05) {
     monitor.onRange(t, t, "a", 3.0);
-    monitor.onEstimate(t, t, true);
+    monitor.onEstimate(t, t, EstimateQuality::kUsable);
     ASSERT_FALSE(monitor.evaluate(t).may_move) << "held after the jump, t=" << t;
   }
   for (; t < 1.3; t += 0.05) {
     monitor.onRange(t, t, "a", 3.0);
-    monitor.onEstimate(t, t, true);
+    monitor.onEstimate(t, t, EstimateQuality::kUsable);
   }
   EXPECT_TRUE(monitor.evaluate(t).may_move);  // resumed on the new clock
 }
@@ -281,7 +281,7 @@ TEST(SafetyMonitorProperty, AdversarialStampsNeverLetItMoveUnsafely) {
           last_fresh_range_stamp = std::max(last_fresh_range_stamp, stamp);
         }
       } else {
-        monitor.onEstimate(stamp, now, true);
+        monitor.onEstimate(stamp, now, EstimateQuality::kUsable);
         if (future) {
           last_hazard = now;
         } else {
@@ -337,7 +337,7 @@ TEST(SafetyMonitorProperty, StopConditionAlwaysGivesZeroCommand) {
       } else if (event < 8) {
         // Stamps may lag the receive time, as estimates do.
         const double stamp = now - dt_dist(rng);
-        monitor.onEstimate(stamp, now, true);
+        monitor.onEstimate(stamp, now, EstimateQuality::kUsable);
         estimate_stamp = std::max(estimate_stamp, stamp);
       } else if (event == 8) {
         enabled = !enabled;
