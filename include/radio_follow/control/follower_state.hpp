@@ -32,6 +32,11 @@ enum class StopReason {
   kClockJumped,
 };
 
+/// The state's name as diagnostics and logs show it: "disabled", "waiting_for_target",
+/// "following", "too_close", "target_lost", "arrived" (FollowerStatus.STATE_* in lower
+/// case, without the prefix); "unknown" for a value outside the enum.
+const char* toString(FollowerState state);
+
 /// The state a stop reason is reported as (kNone maps to kFollowing).
 FollowerState stateFor(StopReason reason);
 
