@@ -107,7 +107,7 @@ def run_until_stopped(command, env):
     """Runs `command` for UNTIL_STOPPED s, then sends SIGINT (Ctrl-C). Failing before that
     is a failure; being stopped is the expected end."""
     prologue = "source scripts/env.sh >/dev/null\n"
-    proc = subprocess.Popen(["bash", "-c", prologue + "exec " + command], cwd=REPO, env=env,
+    proc = subprocess.Popen(["bash", "-c", prologue + command], cwd=REPO, env=env,
                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
                             start_new_session=True)
     try:

@@ -3,6 +3,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <set>
@@ -114,6 +115,48 @@ SensorTopics conventionalTopics(const Layout& layout) {
     topics.tdoa.push_back("tdoa/measurements");
   }
   return topics;
+}
+
+std::vector<Eigen::Vector2d> layoutFootprint(const Layout& layout, double margin) {
+  // The hull of the sensors grown by the margin is the hull of small polygons around
+  // each sensor: 8 points on a circle of radius margin / cos(pi / 8) contain the circle.
+  std::vector<Eigen::Vector2d> points;
+  const double r = margin / std::cos(kPi / 8.0);
+  auto add = [&](const Eigen::Vector3d& p) {
+    for (int k = 0; k < 8; ++k) {
+      const double a = kPi / 8.0 + kPi / 4.0 * k;
+      points.emplace_back(p.x() + r * std::cos(a), p.y() + r * std::sin(a));
+    }
+  };
+  for (const auto& m : layout.twr_modules) {
+    add(m.position);
+  }
+  for (const auto& b : layout.aoa_boards) {
+    add(b.position);
+  }
+  // Andrew's monotone chain.
+  std::sort(points.begin(), points.end(), [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  });
+  auto cross = [](const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
+  };
+  std::vector<Eigen::Vector2d> hull(2 * points.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0) {
+      --k;
+    }
+    hull[k++] = points[i];
+  }
+  for (std::size_t i = points.size(), lower = k + 1; i-- > 1;) {
+    while (k >= lower && cross(hull[k - 2], hull[k - 1], points[i - 1]) <= 0.0) {
+      --k;
+    }
+    hull[k++] = points[i - 1];
+  }
+  hull.resize(k > 1 ? k - 1 : k);  // the last point repeats the first
+  return hull;
 }
 
 std::string toString(AoaBoardKind kind) {

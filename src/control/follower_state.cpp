@@ -4,6 +4,26 @@
 namespace radio_follow {
 namespace control {
 
+const char* toString(FollowerState state) {
+  switch (state) {
+    case FollowerState::kDisabled:
+      return "disabled";
+    case FollowerState::kWaitingForTarget:
+      return "waiting_for_target";
+    case FollowerState::kFollowing:
+      return "following";
+    case FollowerState::kTooClose:
+      return "too_close";
+    case FollowerState::kTargetLost:
+      return "target_lost";
+    case FollowerState::kArrived:
+      return "arrived";
+    case FollowerState::kTargetAmbiguous:
+      return "target_ambiguous";
+  }
+  return "unknown";
+}
+
 FollowerState stateFor(StopReason reason) {
   switch (reason) {
     case StopReason::kNone:
@@ -25,26 +45,6 @@ FollowerState stateFor(StopReason reason) {
       return FollowerState::kTargetAmbiguous;
   }
   return FollowerState::kTargetLost;
-}
-
-const char* stateName(FollowerState state) {
-  switch (state) {
-    case FollowerState::kDisabled:
-      return "disabled";
-    case FollowerState::kWaitingForTarget:
-      return "waiting_for_target";
-    case FollowerState::kFollowing:
-      return "following";
-    case FollowerState::kTooClose:
-      return "too_close";
-    case FollowerState::kTargetLost:
-      return "target_lost";
-    case FollowerState::kArrived:
-      return "arrived";
-    case FollowerState::kTargetAmbiguous:
-      return "target_ambiguous";
-  }
-  return "unknown";
 }
 
 std::string stopText(StopReason reason) {

@@ -14,6 +14,7 @@
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/ros/controller_reconfigure.hpp"
 #include "radio_follow/ros/params.hpp"
+#include "radio_follow/ros/wiring_debug.hpp"
 
 namespace radio_follow {
 namespace {
@@ -139,15 +140,18 @@ void ControllerBase::start() {
   }
   cmd_pub_ = nh_.advertise<geometry_msgs::Twist>(common_.cmd_vel_topic, 1);
   status_pub_ = private_nh_.advertise<FollowerStatus>("status", 10, true);
+  debugAdvertised(status_pub_);
   // The safety path has its own queue and thread: a range below safe_distance stops the
   // robot however long an estimate callback or a TF lookup takes on the main queue.
   for (const auto& topic : common_.range_topics) {
+    first_range_[topic];  // before the safety thread reads the map
     ros::SubscribeOptions options = ros::SubscribeOptions::create<UwbRanges>(
         topic, kRangeQueueSize,
         [this, topic](const UwbRanges::ConstPtr& msg) { onRanges(topic, msg); }, ros::VoidPtr(),
         &safety_queue_);
     options.transport_hints = ros::TransportHints().tcpNoDelay();
     range_subs_.push_back(nh_.subscribe(options));
+    debugSubscribed(range_subs_.back());
   }
   if (!range_subs_.empty()) {
     safety_spinner_ = std::make_unique<ros::AsyncSpinner>(1, &safety_queue_);
@@ -155,12 +159,20 @@ void ControllerBase::start() {
   }
   if (common_.use_scan) {
     scan_sub_ = nh_.subscribe("scan", 1, &ControllerBase::onScan, this);
+    debugSubscribed(scan_sub_);
   }
   enable_sub_ = private_nh_.subscribe("enable", 10, &ControllerBase::onEnableTopic, this);
+  debugSubscribed(enable_sub_);
   enable_srv_ = private_nh_.advertiseService("set_enabled", &ControllerBase::onEnableService, this);
 
-  diagnostics_.setHardwareID("none");
+  // The node and what it drives: two controllers on one robot differ in both.
+  diagnostics_.setHardwareID(ros::this_node::getName() + " -> " + cmd_pub_.getTopic());
   diagnostics_.add("controller", this, &ControllerBase::diagnose);
+  // cmd_vel goes out every tick; a stop from the range callback comes on top of that.
+  OutputDiagnostic::Bounds bounds;
+  bounds.min_hz = common_.rate;
+  bounds.max_hz = 2.0 * common_.rate;
+  cmd_diagnostic_.emplace(diagnostics_, "controller output", cmd_pub_, bounds, false);
 
   std::signal(SIGINT, requestStop);
   std::signal(SIGTERM, requestStop);
@@ -183,6 +195,7 @@ void ControllerBase::start() {
 }
 
 bool ControllerBase::noteEstimate(const ros::Time& stamp, control::EstimateQuality quality) {
+  first_estimate_("the target input (estimate or bearing)");
   const ros::Time now = ros::Time::now();
   const std::lock_guard<std::mutex> lock(safety_mutex_);
   if (monitor_.onEstimate((stamp.isZero() ? now : stamp).toSec(), now.toSec(), quality)) {
@@ -202,6 +215,7 @@ void ControllerBase::onRanges(const std::string& topic, const UwbRanges::ConstPt
   // Safety thread. Time is read before the lock: the receive time of this message.
   const ros::Time now = ros::Time::now();
   const double stamp = (msg->header.stamp.isZero() ? now : msg->header.stamp).toSec();
+  first_range_.at(topic)(topic);
   const std::lock_guard<std::mutex> lock(safety_mutex_);
   const std::uint64_t future_before = monitor_.time().futureRefused();
   bool violation = false;
@@ -338,6 +352,7 @@ void ControllerBase::publishCommand(const control::VelocityCommand& cmd) {
   twist.linear.x = cmd.linear;
   twist.angular.z = cmd.angular;
   cmd_pub_.publish(twist);
+  cmd_diagnostic_->tick();
 }
 
 void ControllerBase::publishStatus(control::FollowerState state, const std::string& text) {
@@ -363,7 +378,8 @@ void ControllerBase::diagnose(diagnostic_updater::DiagnosticStatusWrapper& statu
                      ? DiagnosticStatus::OK
                      : DiagnosticStatus::WARN,
                  status_text_);
-  status.add("state", static_cast<int>(state_));
+  status.add("state", control::toString(state_));
+  status.add("cmd_vel topic", cmd_pub_.getTopic());
   status.add("stopped ticks", stopped_ticks_);
   status.add("stamps from the future refused", monitor_.time().futureRefused());
   status.add("clock jumps back", monitor_.time().clockJumps());

@@ -20,6 +20,9 @@ namespace {
 // and bursts of 30 without a loss.
 constexpr std::size_t kQueueDepth = 4096;
 
+// The module's top update rate (lines/s): more on `ranges` is a backlog arriving.
+constexpr double kMaxLineRate = 10.0;
+
 }  // namespace
 
 void Dwm1001DriverNode::Params::load(const ParamReader& private_nh) {
@@ -63,12 +66,24 @@ Dwm1001DriverNode::Dwm1001DriverNode(ros::NodeHandle& nh, ros::NodeHandle& priva
   queue_ = std::make_unique<drivers::DeliveryQueue<Outgoing>>(
       kQueueDepth, [this](Outgoing& out) { publish(out); });
   diagnostics_ = std::make_unique<DriverDiagnostics>(
-      nh, private_nh, "dwm1001 " + params_.port, params_.port, stats_, params_.silence_timeout,
-      [this](diagnostic_updater::DiagnosticStatusWrapper& status) {
+      nh, private_nh, "dwm1001 " + params_.port,
+      params_.tag_id.empty() ? params_.port : params_.port + " (module " + params_.tag_id + ")",
+      stats_, params_.silence_timeout, [this](diagnostic_updater::DiagnosticStatusWrapper& status) {
         std::lock_guard<std::mutex> lock(mutex_);
         status.add("tag id", params_.configure ? shell_.tagId() : params_.tag_id);
         status.add("shell restarts", shell_.restarts());
       });
+  // Stamps are the host's receive time: one older than silence_timeout at publishing sat
+  // that long in the queue. A module may give no position (tag_location): no lower rate.
+  OutputDiagnostic::Bounds bounds;
+  bounds.min_hz = 1.0 / params_.silence_timeout;
+  bounds.max_hz = kMaxLineRate;
+  bounds.max_age = params_.silence_timeout;
+  ranges_diagnostic_.emplace(diagnostics_->updater(), "dwm1001 " + params_.port + " output",
+                             ranges_pub_, bounds, true);
+  bounds.min_hz = 0.0;
+  location_diagnostic_.emplace(diagnostics_->updater(), "dwm1001 " + params_.port + " output",
+                               location_pub_, bounds, true);
   if (params_.configure) {
     shell_timer_ = nh.createTimer(ros::Duration(0.25), &Dwm1001DriverNode::onShellTimer, this);
   }
@@ -165,6 +180,10 @@ void Dwm1001DriverNode::onLine(std::string_view line, double stamp) {
     case drivers::DwmLineStatus::kMeasurement:
       if (params_.configure && shell_.state() != drivers::Dwm1001Shell::State::kStreaming) {
         ++stats_.filtered;  // a stream left running from before; frame unknown yet
+        ROS_DEBUG_THROTTLE_NAMED(5.0, "wiring",
+                                 "%s: measurement dropped: shell dialogue not finished, module "
+                                 "ID unknown yet",
+                                 ros::this_node::getName().c_str());
       } else {
         enqueue(stamp);
       }
@@ -217,6 +236,8 @@ void Dwm1001DriverNode::enqueue(double stamp) {
   }
   if (!queue_->push(std::move(out))) {
     ++stats_.dropped;
+    ROS_DEBUG_THROTTLE_NAMED(1.0, "wiring", "%s: measurement dropped: publish queue full",
+                             ros::this_node::getName().c_str());
   }
   stats_.queue_peak = queue_->peak();
 }
@@ -224,9 +245,16 @@ void Dwm1001DriverNode::enqueue(double stamp) {
 void Dwm1001DriverNode::publish(Outgoing& out) {
   if (out.has_ranges) {
     ranges_pub_.publish(out.ranges);
+    ranges_diagnostic_->tick(out.ranges.header.stamp);
   }
   if (out.has_location) {
     location_pub_.publish(out.location);
+    location_diagnostic_->tick(out.location.header.stamp);
+  }
+  if (stats_.messages == 0) {
+    ROS_DEBUG_NAMED("wiring", "%s: first measurement from %s published on %s",
+                    ros::this_node::getName().c_str(), params_.port.c_str(),
+                    ranges_pub_.getTopic().c_str());
   }
   ++stats_.messages;
 }

@@ -70,6 +70,8 @@ HomingControllerNode::HomingControllerNode(ros::NodeHandle& nh, ros::NodeHandle&
   goal_pub_ = private_nh_.advertise<geometry_msgs::PoseStamped>("goal", 1, true);
   odom_sub_ = nh_.subscribe("odom", 10, &HomingControllerNode::onOdom, this);
   bearing_sub_ = nh_.subscribe("aoa_bearing", 20, &HomingControllerNode::onBearing, this);
+  debugSubscribed(odom_sub_);
+  debugSubscribed(bearing_sub_);
   if (params_.distance_source == "uwb") {
     distance_sub_ = nh_.subscribe(params_.distance_range_topic, 10,
                                   &HomingControllerNode::onDistanceRanges, this);

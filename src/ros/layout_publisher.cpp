@@ -73,11 +73,41 @@ void LayoutPublisherNode::Params::validate() const {
   require(!layout_file.empty(), "~layout_file", layout_file, "the path of a layout YAML file");
   require(marker_size > 0.0 && marker_size < 10.0, "~marker_size", marker_size,
           "a size in metres in (0, 10)");
+  require(footprint_margin >= 0.0 && footprint_margin <= 5.0, "~footprint_margin", footprint_margin,
+          "a margin in metres in [0, 5]");
+}
+
+geometry_msgs::PolygonStamped footprintPolygon(const Layout& layout, double margin,
+                                               const ros::Time& stamp) {
+  geometry_msgs::PolygonStamped polygon;
+  polygon.header.frame_id = layout.fixed_frame;
+  polygon.header.stamp = stamp;
+  for (const Eigen::Vector2d& p : layoutFootprint(layout, margin)) {
+    geometry_msgs::Point32 q;
+    q.x = static_cast<float>(p.x());
+    q.y = static_cast<float>(p.y());
+    polygon.polygon.points.push_back(q);
+  }
+  return polygon;
 }
 
 visualization_msgs::MarkerArray layoutMarkers(const Layout& layout, double size,
-                                              const ros::Time& stamp) {
+                                              double footprint_margin, const ros::Time& stamp) {
   visualization_msgs::MarkerArray array;
+  // The outline first, on the ground, closed; frame_locked like the sensors (a latched
+  // PolygonStamped would stay where the robot started in a fixed frame such as odom).
+  visualization_msgs::Marker outline = baseMarker(layout, "footprint", 0, stamp);
+  outline.type = visualization_msgs::Marker::LINE_STRIP;
+  outline.scale.x = 0.2 * size;
+  outline.color.r = outline.color.g = outline.color.b = 0.9;
+  const std::vector<Eigen::Vector2d> hull = layoutFootprint(layout, footprint_margin);
+  for (std::size_t i = 0; i <= hull.size() && !hull.empty(); ++i) {
+    geometry_msgs::Point p;
+    p.x = hull[i % hull.size()].x();
+    p.y = hull[i % hull.size()].y();
+    outline.points.push_back(p);
+  }
+  array.markers.push_back(outline);
   int id = 0;
   for (const auto& module : layout.twr_modules) {
     visualization_msgs::Marker m = baseMarker(layout, "twr_modules", id, stamp);
@@ -120,6 +150,7 @@ LayoutPublisherNode::LayoutPublisherNode(ros::NodeHandle& nh, ros::NodeHandle& p
   const ParamReader reader(private_nh);
   reader.param("layout_file", params_.layout_file, params_.layout_file);
   reader.param("marker_size", params_.marker_size, params_.marker_size);
+  reader.param("footprint_margin", params_.footprint_margin, params_.footprint_margin);
   reader.requireAllKnown();
   params_.validate();
   layout_ = loadLayoutFile(params_.layout_file);
@@ -137,7 +168,9 @@ LayoutPublisherNode::LayoutPublisherNode(ros::NodeHandle& nh, ros::NodeHandle& p
   static_tf_.sendTransform(transforms);
 
   markers_pub_ = nh.advertise<visualization_msgs::MarkerArray>("layout_markers", 1, true);
-  markers_pub_.publish(layoutMarkers(layout_, params_.marker_size, now));
+  markers_pub_.publish(layoutMarkers(layout_, params_.marker_size, params_.footprint_margin, now));
+  footprint_pub_ = nh.advertise<geometry_msgs::PolygonStamped>("footprint", 1, true);
+  footprint_pub_.publish(footprintPolygon(layout_, params_.footprint_margin, now));
   ROS_INFO("layout_publisher: %zu UWB modules, %zu AoA boards, %zu TDoA anchors from %s",
            layout_.twr_modules.size(), layout_.aoa_boards.size(), layout_.tdoa_anchors.size(),
            params_.layout_file.c_str());

@@ -10,6 +10,7 @@ namespace radio_follow {
 namespace {
 
 constexpr int kCirclePoints = 48;
+constexpr double kEstimateSize = 0.06;  // diameter of the estimate's sphere, m
 
 visualization_msgs::Marker marker(const Layout& layout, const std::string& ns, int id, int type,
                                   const ros::Time& stamp) {
@@ -109,9 +110,10 @@ visualization_msgs::MarkerArray locatorMarkers(const Layout& layout, const Locat
   if (estimate.status == TargetStatus::kLost) {
     return array;
   }
+  // Small, so that the covariance ring around it stays visible from above.
   auto target = marker(layout, "estimate", 0, visualization_msgs::Marker::SPHERE, stamp);
   target.pose.position = point(estimate.position);
-  target.scale.x = target.scale.y = target.scale.z = 0.15;
+  target.scale.x = target.scale.y = target.scale.z = kEstimateSize;
   if (estimate.status == TargetStatus::kOk) {
     color(target, 1.0f, 0.2f, 0.2f, 1.0f);
   } else {
@@ -119,7 +121,28 @@ visualization_msgs::MarkerArray locatorMarkers(const Layout& layout, const Locat
   }
   array.markers.push_back(target);
 
-  // 2-sigma ellipsoid: a sphere scaled along the covariance's principal axes.
+  // 2-sigma ellipse of the xy position, a flat ring drawn just above the estimate's
+  // sphere: a filled ellipsoid hid under the sphere whenever sigma < its radius.
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig2(
+      estimate.covariance.topLeftCorner<2, 2>());
+  const Eigen::Vector2d sigma2 = eig2.eigenvalues().cwiseMax(0.0).cwiseSqrt();
+  auto ring = marker(layout, "covariance", 0, visualization_msgs::Marker::LINE_STRIP, stamp);
+  ring.scale.x = 0.015;  // line width, m
+  const double z = estimate.position.z() + kEstimateSize;
+  for (int i = 0; i <= kCirclePoints; ++i) {
+    const double a = 2.0 * kPi * i / kCirclePoints;
+    const Eigen::Vector2d p = estimate.position.head<2>() +
+                              eig2.eigenvectors() * Eigen::Vector2d(2.0 * sigma2(0) * std::cos(a),
+                                                                    2.0 * sigma2(1) * std::sin(a));
+    ring.points.push_back(point(Eigen::Vector3d(p.x(), p.y(), z)));
+  }
+  color(ring, 1.0f, 0.4f, 0.9f, 1.0f);
+  array.markers.push_back(ring);
+  if (config.planar) {
+    return array;  // z is not estimated: the ring is the whole ellipsoid
+  }
+
+  // 3D: the 2-sigma ellipsoid too, a translucent sphere scaled along the principal axes.
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(estimate.covariance);
   Eigen::Matrix3d axes = eig.eigenvectors();
   if (axes.determinant() < 0.0) {
@@ -127,13 +150,13 @@ visualization_msgs::MarkerArray locatorMarkers(const Layout& layout, const Locat
   }
   const Eigen::Quaterniond q(axes);
   const Eigen::Vector3d sigma = eig.eigenvalues().cwiseMax(0.0).cwiseSqrt();
-  auto ellipse = marker(layout, "covariance", 0, visualization_msgs::Marker::SPHERE, stamp);
+  auto ellipse = marker(layout, "covariance", 1, visualization_msgs::Marker::SPHERE, stamp);
   ellipse.pose.position = point(estimate.position);
   ellipse.pose.orientation.x = q.x();
   ellipse.pose.orientation.y = q.y();
   ellipse.pose.orientation.z = q.z();
   ellipse.pose.orientation.w = q.w();
-  ellipse.scale.x = std::max(0.01, 4.0 * sigma(0));  // 2-sigma diameter; flat in 2D mode
+  ellipse.scale.x = std::max(0.01, 4.0 * sigma(0));  // 2-sigma diameter
   ellipse.scale.y = std::max(0.01, 4.0 * sigma(1));
   ellipse.scale.z = std::max(0.01, 4.0 * sigma(2));
   color(ellipse, 1.0f, 0.2f, 0.2f, 0.3f);

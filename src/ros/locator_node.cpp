@@ -6,8 +6,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+
+#include "radio_follow/ros/wiring_debug.hpp"
 
 namespace radio_follow {
+namespace {
+
+// At most one warning per silent input in this period, s.
+constexpr double kSilentWarnPeriod = 10.0;
+
+}  // namespace
 
 TargetEstimate toMessage(const LocatorEstimate& estimate, const std::string& frame,
                          const ros::Time& stamp) {
@@ -55,15 +64,26 @@ LocatorNode::LocatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
   target_pub_ = nh.advertise<TargetEstimate>("target", 10);
   pose_pub_ = nh.advertise<geometry_msgs::PoseWithCovarianceStamped>("target_pose", 10);
   markers_pub_ = nh.advertise<visualization_msgs::MarkerArray>("markers", 1);
+  debugAdvertised(markers_pub_);
+  if (params_.path_length > 0) {
+    path_pub_ = nh.advertise<nav_msgs::Path>("target_path", 1);
+    debugAdvertised(path_pub_);
+    path_.header.frame_id = layout_.fixed_frame;
+  }
   for (const auto& topic : params_.uwb_topics) {
-    subscribers_.push_back(nh.subscribe(topic, 50, &LocatorNode::onRanges, this));
+    subscribe<UwbRanges>(nh, topic, &LocatorNode::onRanges);
   }
   for (const auto& topic : params_.aoa_topics) {
-    subscribers_.push_back(nh.subscribe(topic, 50, &LocatorNode::onBearing, this));
+    subscribe<AoaBearing>(nh, topic, &LocatorNode::onBearing);
   }
   for (const auto& topic : params_.tdoa_topics) {
-    subscribers_.push_back(nh.subscribe(topic, 50, &LocatorNode::onTdoa, this));
+    subscribe<TdoaMeasurements>(nh, topic, &LocatorNode::onTdoa);
   }
+  std::vector<std::string> resolved;
+  for (const ros::Subscriber& s : subscribers_) {
+    resolved.push_back(s.getTopic());
+  }
+  inputs_watch_.emplace(resolved, params_.input_timeout, kSilentWarnPeriod, 0.0);
   reconfigure_ =
       makeLocatorReconfigure(private_nh, params_.locator, [this](const LocatorConfig& config) {
         if (!locator_->setConfig(config)) {
@@ -71,12 +91,88 @@ LocatorNode::LocatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
         }
         params_.locator = config;
       });
-  diagnostics_.setHardwareID("locator");
+  // The layout names the robot; its fixed frame is where the estimate lives.
+  diagnostics_.setHardwareID("layout " +
+                             std::filesystem::path(params_.layout_file).stem().string() +
+                             ", frame " + layout_.fixed_frame);
   diagnostics_.add("locator", this, &LocatorNode::diagnose);
+  // One estimate per solve; it carries its newest measurement's stamp, at most max_age
+  // old when it is used, LOST ones the current time. target_pose only has a position.
+  OutputDiagnostic::Bounds bounds;
+  bounds.min_hz = params_.rate;
+  bounds.max_hz = params_.rate;
+  bounds.max_age = params_.locator.max_age + 2.0 / params_.rate;
+  target_diagnostic_.emplace(diagnostics_, "locator output", target_pub_, bounds, true);
+  bounds.min_hz = 0.0;
+  pose_diagnostic_.emplace(diagnostics_, "locator output", pose_pub_, bounds, true);
   timer_ = nh.createTimer(ros::Duration(1.0 / params_.rate), &LocatorNode::onTimer, this);
   ROS_INFO("locator: %s mode, %zu TWR modules, %zu AoA boards, %zu TDoA anchors, %.1f Hz",
            params_.locator.planar ? "2D" : "3D", layout_.twr_modules.size(),
            layout_.aoa_boards.size(), layout_.tdoa_anchors.size(), params_.rate);
+}
+
+template <typename Message>
+void LocatorNode::subscribe(ros::NodeHandle& nh, const std::string& topic,
+                            void (LocatorNode::*callback)(const typename Message::ConstPtr&)) {
+  const std::size_t index = subscribers_.size();
+  const boost::function<void(const typename Message::ConstPtr&)> handler =
+      [this, index, callback](const typename Message::ConstPtr& msg) {
+        noteInput(index);
+        (this->*callback)(msg);
+      };
+  subscribers_.push_back(nh.subscribe<Message>(topic, 50, handler));
+  debugSubscribed(subscribers_.back());
+}
+
+void LocatorNode::noteInput(std::size_t index) {
+  if (inputs_watch_->onMessage(index, ros::Time::now().toSec())) {
+    ROS_DEBUG_NAMED("wiring", "locator: first message on %s",
+                    inputs_watch_->inputs()[index].name.c_str());
+  }
+}
+
+void LocatorNode::watchInputs(const ros::Time& now) {
+  if (last_tick_.isZero()) {
+    inputs_watch_->startAt(now.toSec());  // on simulated time the clock may only start now
+  } else if (now < last_tick_) {
+    inputs_watch_->restart(now.toSec());  // the clock jumped back: every input is new
+  }
+  last_tick_ = now;
+  for (const std::size_t i : inputs_watch_->dueWarnings(now.toSec())) {
+    const InputWatch::Input& input = inputs_watch_->inputs()[i];
+    if (input.messages == 0) {
+      ROS_WARN(
+          "locator: no message on %s since the start (%.1f s); is its driver running and "
+          "publishing there? (rostopic info %s)",
+          input.name.c_str(), inputs_watch_->silenceSeconds(i, now.toSec()), input.name.c_str());
+    } else {
+      ROS_WARN("locator: no message on %s for %.1f s (%zu before)", input.name.c_str(),
+               inputs_watch_->silenceSeconds(i, now.toSec()), input.messages);
+    }
+  }
+  const LocatorStats& s = locator_->stats();
+  if (s.stale_dropped != last_stats_.stale_dropped) {
+    ROS_DEBUG_THROTTLE_NAMED(2.0, "wiring",
+                             "locator: %zu measurement(s) dropped, older than max_age %.2f s "
+                             "(clocks of driver and locator apart, or a slow link)",
+                             s.stale_dropped - last_stats_.stale_dropped, params_.locator.max_age);
+  }
+  if (s.future_dropped != last_stats_.future_dropped) {
+    ROS_DEBUG_THROTTLE_NAMED(2.0, "wiring",
+                             "locator: %zu measurement(s) dropped, stamped ahead of this clock",
+                             s.future_dropped - last_stats_.future_dropped);
+  }
+  if (s.invalid_measurements != last_stats_.invalid_measurements) {
+    ROS_DEBUG_THROTTLE_NAMED(2.0, "wiring", "locator: %zu invalid measurement(s) dropped",
+                             s.invalid_measurements - last_stats_.invalid_measurements);
+  }
+  if (s.bearings_rejected_fov != last_stats_.bearings_rejected_fov) {
+    ROS_DEBUG_THROTTLE_NAMED(2.0, "wiring",
+                             "locator: %zu bearing(s) not used: board's field of view does not "
+                             "contain the estimate",
+                             s.bearings_rejected_fov - last_stats_.bearings_rejected_fov);
+  }
+  last_stats_ = s;
 }
 
 void LocatorNode::onRanges(const UwbRanges::ConstPtr& msg) {
@@ -129,6 +225,7 @@ void LocatorNode::onTimer(const ros::TimerEvent& /*event*/) {
     last_status_ = estimate.status;
   }
   publish(estimate, now);
+  watchInputs(now);
   diagnostics_.update();
 }
 
@@ -138,6 +235,7 @@ void LocatorNode::publish(const LocatorEstimate& estimate, const ros::Time& now)
       estimate.status == TargetStatus::kLost ? now : ros::Time(std::max(0.0, estimate.stamp));
   // Always published, LOST included: a controller must hear that the target is gone.
   target_pub_.publish(toMessage(estimate, layout_.fixed_frame, stamp));
+  target_diagnostic_->tick(stamp);
 
   if (hasPosition(estimate.status)) {
     geometry_msgs::PoseWithCovarianceStamped pose;
@@ -157,6 +255,8 @@ void LocatorNode::publish(const LocatorEstimate& estimate, const ros::Time& now)
       pose.pose.covariance[static_cast<std::size_t>(6 * i + i)] = 1e6;
     }
     pose_pub_.publish(pose);
+    pose_diagnostic_->tick(stamp);
+    extendPath(estimate, stamp);
     // The estimate is stamped with its newest measurement; solving faster than the sensors
     // report repeats a stamp, which tf2 rejects (TF_REPEATED_DATA): send each stamp once.
     if (params_.publish_tf && pose.header.stamp > last_tf_stamp_) {
@@ -173,6 +273,30 @@ void LocatorNode::publish(const LocatorEstimate& estimate, const ros::Time& now)
   }
   if (markers_pub_.getNumSubscribers() > 0) {  // drawing is the node's largest cost
     markers_pub_.publish(locatorMarkers(layout_, params_.locator, estimate, now));
+  }
+}
+
+void LocatorNode::extendPath(const LocatorEstimate& estimate, const ros::Time& stamp) {
+  if (params_.path_length == 0 || (!path_.poses.empty() && stamp == path_.header.stamp)) {
+    return;  // no path, or the same estimate again (solving faster than the sensors)
+  }
+  geometry_msgs::PoseStamped pose;
+  pose.header.frame_id = layout_.fixed_frame;
+  pose.header.stamp = stamp;
+  pose.pose.position.x = estimate.position.x();
+  pose.pose.position.y = estimate.position.y();
+  pose.pose.position.z = estimate.position.z();
+  pose.pose.orientation.w = 1.0;
+  if (!path_.poses.empty() && stamp < path_.header.stamp) {
+    path_.poses.clear();  // the clock jumped back
+  }
+  path_.poses.push_back(pose);
+  if (path_.poses.size() > static_cast<std::size_t>(params_.path_length)) {
+    path_.poses.erase(path_.poses.begin());
+  }
+  path_.header.stamp = stamp;
+  if (path_pub_.getNumSubscribers() > 0) {
+    path_pub_.publish(path_);
   }
 }
 
@@ -210,6 +334,19 @@ void LocatorNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) 
   status.add("solve time mean (us)",
              solves_seen_ > 0 ? 1e6 * solve_seconds_sum_ / static_cast<double>(solves_seen_) : 0.0);
   status.add("solve time max (us)", 1e6 * solve_seconds_max_);
+  const double now = ros::Time::now().toSec();
+  std::string silent;
+  for (const std::size_t i : inputs_watch_->silentInputs(now)) {
+    silent += (silent.empty() ? "" : ", ") + inputs_watch_->inputs()[i].name;
+  }
+  status.add("silent inputs", silent.empty() ? "none" : silent);
+  for (const InputWatch::Input& input : inputs_watch_->inputs()) {
+    status.add("messages on " + input.name, input.messages);
+  }
+  if (!silent.empty()) {
+    status.mergeSummaryf(diagnostic_msgs::DiagnosticStatus::WARN, "silent inputs: %s",
+                         silent.c_str());
+  }
 }
 
 }  // namespace radio_follow

@@ -29,6 +29,8 @@ void LocatorNode::Params::load(const Source& nh) {
   nh.param("rate", rate, rate);
   nh.param("target_frame", target_frame, target_frame);
   nh.param("publish_tf", publish_tf, publish_tf);
+  nh.param("input_timeout", input_timeout, input_timeout);
+  nh.param("path_length", path_length, path_length);
 
   LocatorConfig& c = locator;
   std::string mode = c.planar ? "2d" : "3d";
@@ -91,6 +93,10 @@ void LocatorNode::Params::validate() const {
   require(std::isfinite(rate) && rate > 0.0 && rate <= 200.0, "~rate", rate,
           "a solve rate in (0, 200] Hz");
   require(!target_frame.empty(), "~target_frame", target_frame, "a frame name");
+  require(std::isfinite(input_timeout) && input_timeout > 0.0 && input_timeout <= 600.0,
+          "~input_timeout", input_timeout, "seconds in (0, 600]");
+  require(path_length >= 0 && path_length <= 100000, "~path_length", path_length,
+          "a number of estimates in [0, 100000] (0 = no path)");
   locator.validate();  // the core names its fields exactly like these private parameters
 }
 

@@ -50,6 +50,8 @@ PathFollowerNode::PathFollowerNode(ros::NodeHandle& nh, ros::NodeHandle& private
   requireKnownParams();
   path_pub_ = private_nh_.advertise<nav_msgs::Path>("path", 1, true);
   estimate_sub_ = nh_.subscribe("target", 5, &PathFollowerNode::onEstimate, this);
+  debugSubscribed(estimate_sub_);
+  debugAdvertised(path_pub_);
   law_reconfigure_ = makeFollowLawReconfigure(
       private_nh, law_params_, [this](const control::VelocityLawParams& p) {
         applyLaw(lawWithCommon(p, common()));  // against the safety layer as it is now

@@ -16,6 +16,9 @@ namespace {
 // 10 s of ten tags at 10 Hz.
 constexpr std::size_t kQueueDepth = 1024;
 
+// Blinks/s of ten tags at 10 Hz: more on `measurements` is a backlog arriving.
+constexpr double kMaxBlinkRate = 100.0;
+
 }  // namespace
 
 TdoaDriverNode::TdoaDriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh) {
@@ -26,10 +29,21 @@ TdoaDriverNode::TdoaDriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
   queue_ = std::make_unique<drivers::DeliveryQueue<TdoaMeasurements>>(
       kQueueDepth, [this](TdoaMeasurements& msg) {
         pub_.publish(msg);
-        ++blinks_published_;
+        output_diagnostic_->tick(msg.header.stamp);
+        if (blinks_published_++ == 0) {
+          ROS_DEBUG_NAMED("wiring", "%s: first blink published on %s",
+                          ros::this_node::getName().c_str(), pub_.getTopic().c_str());
+        }
       });
   diagnostics_.setHardwareIDf("tdoa udp %s:%d", params_.address.c_str(), params_.port);
   diagnostics_.add("TDoA anchors", this, &TdoaDriverNode::diagnose);
+  // A blink is stamped with its first report's arrival and published when its window
+  // passes (or when it is complete): a stamp older than data_timeout sat in the queue.
+  OutputDiagnostic::Bounds bounds;
+  bounds.min_hz = 1.0 / params_.data_timeout;
+  bounds.max_hz = kMaxBlinkRate;
+  bounds.max_age = params_.data_timeout;
+  output_diagnostic_.emplace(diagnostics_, "TDoA anchors output", pub_, bounds, true);
   last_datagram_ = last_diagnosis_ = ros::WallTime::now();
   // Incomplete blinks are published when their window passes; check twice per window.
   timer_ =
@@ -112,6 +126,7 @@ void TdoaDriverNode::publish(const std::vector<TdoaBlink>& blinks) {
     }
     if (!queue_->push(std::move(msg))) {
       ++blinks_unpublished_;
+      ROS_DEBUG_THROTTLE_NAMED(1.0, "wiring", "tdoa_driver: blink dropped: publish queue full");
     }
   }
 }

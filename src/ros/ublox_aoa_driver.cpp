@@ -20,6 +20,9 @@ namespace {
 // they absorb 200,000 lines at 20,000 lines/s and bursts of 30 without a loss.
 constexpr std::size_t kQueueDepth = 4096;
 
+// Events/s of a busy board (several tags): more on `bearing` is a backlog arriving.
+constexpr double kMaxEventRate = 100.0;
+
 }  // namespace
 
 void UbloxAoaDriverNode::Params::load(const ParamReader& private_nh) {
@@ -62,10 +65,24 @@ UbloxAoaDriverNode::UbloxAoaDriverNode(ros::NodeHandle& nh, ros::NodeHandle& pri
   queue_ =
       std::make_unique<drivers::DeliveryQueue<AoaBearing>>(kQueueDepth, [this](AoaBearing& msg) {
         bearing_pub_.publish(msg);
-        ++stats_.messages;
+        bearing_diagnostic_->tick(msg.header.stamp);
+        if (stats_.messages++ == 0) {
+          ROS_DEBUG_NAMED("wiring", "%s: first bearing from %s published on %s",
+                          ros::this_node::getName().c_str(), params_.port.c_str(),
+                          bearing_pub_.getTopic().c_str());
+        }
       });
-  diagnostics_ = std::make_unique<DriverDiagnostics>(nh, private_nh, "ublox aoa " + params_.port,
-                                                     params_.port, stats_, params_.silence_timeout);
+  diagnostics_ = std::make_unique<DriverDiagnostics>(
+      nh, private_nh, "ublox aoa " + params_.port,
+      params_.port + " (board " + params_.frame_id + ")", stats_, params_.silence_timeout);
+  // Stamps are the host's receive time: one older than silence_timeout at publishing sat
+  // that long in the queue.
+  OutputDiagnostic::Bounds bounds;
+  bounds.min_hz = 1.0 / params_.silence_timeout;
+  bounds.max_hz = kMaxEventRate;
+  bounds.max_age = params_.silence_timeout;
+  bearing_diagnostic_.emplace(diagnostics_->updater(), "ublox aoa " + params_.port + " output",
+                              bearing_pub_, bounds, true);
 
   drivers::SerialTransport::Options options;
   options.port = params_.port;
@@ -137,6 +154,8 @@ void UbloxAoaDriverNode::onLine(std::string_view line, double stamp) {
   }
   if (!accepted(event_.tag_id)) {
     ++stats_.filtered;
+    ROS_DEBUG_THROTTLE_NAMED(5.0, "wiring", "%s: bearing dropped: tag %s not in ~tag_ids",
+                             ros::this_node::getName().c_str(), event_.tag_id.c_str());
     return;
   }
   AoaBearing msg;
@@ -154,6 +173,8 @@ void UbloxAoaDriverNode::onLine(std::string_view line, double stamp) {
   msg.event_counter = event_.event_counter;
   if (!queue_->push(std::move(msg))) {
     ++stats_.dropped;
+    ROS_DEBUG_THROTTLE_NAMED(1.0, "wiring", "%s: bearing dropped: publish queue full",
+                             ros::this_node::getName().c_str());
   }
   stats_.queue_peak = queue_->peak();
 }

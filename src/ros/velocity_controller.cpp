@@ -68,6 +68,7 @@ VelocityControllerNode::VelocityControllerNode(ros::NodeHandle& nh, ros::NodeHan
       motion_(tf_buffer_, params_.odom_frame, params_.tf_timeout) {
   requireKnownParams();
   estimate_sub_ = nh_.subscribe("target", 5, &VelocityControllerNode::onEstimate, this);
+  debugSubscribed(estimate_sub_);
   // Speed caps come from the common limits; the law's own fields are tuned on ~law.
   law_reconfigure_ = makeFollowLawReconfigure(private_nh, law_.params(),
                                               [this](const control::VelocityLawParams& p) {

@@ -115,7 +115,7 @@ struct Arrivals {
   std::uint64_t next = 0;                          // subscriber thread only
 };
 
-// The latest diagnostics of each driver (by hardware ID = port).
+// The latest diagnostics of each driver (by port, the start of its hardware ID).
 class DiagnosticsWatch {
  public:
   explicit DiagnosticsWatch(ros::NodeHandle& nh)
@@ -142,12 +142,21 @@ class DiagnosticsWatch {
  private:
   void onArray(const diagnostic_msgs::DiagnosticArray::ConstPtr& array) {
     std::lock_guard<std::mutex> lock(mutex_);
+    const std::string topic_status = " topic status";
     for (const auto& status : array->status) {
-      auto& values = latest_[status.hardware_id];
+      // The driver's own status, not its output topics' rate (WARN during a burst).
+      if (status.name.size() >= topic_status.size() &&
+          status.name.compare(status.name.size() - topic_status.size(), topic_status.size(),
+                              topic_status) == 0) {
+        continue;
+      }
+      // The hardware ID is the port, with " (module ...)" or " (board ...)" after it.
+      const std::string port = status.hardware_id.substr(0, status.hardware_id.find(" ("));
+      auto& values = latest_[port];
       for (const auto& kv : status.values) {
         values[kv.key] = kv.value;
       }
-      levels_[status.hardware_id] = status.level;
+      levels_[port] = status.level;
     }
   }
 

@@ -1,9 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Feeds driver-style messages to a running locator (Spot layout) and checks the published
-// estimate, pose, TF and markers, and that the target is reported lost when they stop.
+// estimate, pose, TF, markers and path, the diagnostics and the warning about an input
+// that never publishes, and that the target is reported lost when they stop.
+#include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <gtest/gtest.h>
+#include <nav_msgs/Path.h>
 #include <ros/ros.h>
+#include <rosgraph_msgs/Log.h>
 #include <tf2_ros/transform_listener.h>
 #include <visualization_msgs/MarkerArray.h>
 
@@ -11,6 +15,7 @@
 #include <atomic>
 #include <cctype>
 #include <cmath>
+#include <mutex>
 #include <thread>
 
 #include "radio_follow/AoaBearing.h"
@@ -163,6 +168,89 @@ TEST(Locator, DrawsRangesBearingsAndTheEstimate) {
   EXPECT_EQ(used_arrows, 1);     // front
   EXPECT_EQ(ignored_arrows, 1);  // back: the target is outside its field of view
   EXPECT_EQ(estimates, 1);
+}
+
+TEST(Locator, PublishesTheBoundedPathOfRecentEstimates) {
+  ros::NodeHandle nh;
+  ros::Duration(2.0).sleep();  // > 30 estimates at 20 Hz
+  const auto path =
+      ros::topic::waitForMessage<nav_msgs::Path>("target_path", nh, ros::Duration(5.0));
+  ASSERT_TRUE(path);
+  EXPECT_EQ(path->header.frame_id, "base_link");
+  EXPECT_EQ(path->poses.size(), 30u);  // ~path_length
+  for (std::size_t i = 1; i < path->poses.size(); ++i) {
+    EXPECT_LT(path->poses[i - 1].header.stamp, path->poses[i].header.stamp);
+  }
+  EXPECT_NEAR(path->poses.back().pose.position.x, kTruth.x(), 0.05);
+}
+
+TEST(Locator, DrawsTheCovarianceAsARingAboveASmallEstimate) {
+  ros::NodeHandle nh;
+  const auto markers = ros::topic::waitForMessage<visualization_msgs::MarkerArray>(
+      "markers", nh, ros::Duration(5.0));
+  ASSERT_TRUE(markers);
+  const visualization_msgs::Marker* sphere = nullptr;
+  const visualization_msgs::Marker* ring = nullptr;
+  for (const auto& m : markers->markers) {
+    sphere = m.ns == "estimate" ? &m : sphere;
+    ring = m.ns == "covariance" ? &m : ring;
+  }
+  ASSERT_TRUE(sphere && ring);
+  EXPECT_EQ(ring->type, visualization_msgs::Marker::LINE_STRIP);
+  EXPECT_LE(sphere->scale.x, 0.1);
+  for (const auto& p : ring->points) {
+    EXPECT_GT(p.z, sphere->pose.position.z + 0.5 * sphere->scale.z);  // drawn over the sphere
+  }
+}
+
+TEST(Locator, WarnsAboutTheInputThatNeverPublishesNamingItsTopic) {
+  ros::NodeHandle nh;
+  std::atomic<bool> warned{false};
+  ros::Subscriber rosout = nh.subscribe<rosgraph_msgs::Log>(
+      "/rosout", 100, [&](const rosgraph_msgs::Log::ConstPtr& msg) {
+        warned = warned || (msg->name == "/locator" && msg->level == rosgraph_msgs::Log::WARN &&
+                            msg->msg.find("/aoa/left/bearing") != std::string::npos);
+      });
+  // input_timeout 1 s, one warning per input per 10 s.
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(15.0);
+  while (!warned && ros::WallTime::now() < deadline) {
+    ros::WallDuration(0.1).sleep();
+  }
+  EXPECT_TRUE(warned) << "no WARN on /rosout naming /aoa/left/bearing within 15 s";
+}
+
+TEST(Locator, DiagnosticsNameTheSilentInputAndTheHardware) {
+  ros::NodeHandle nh;
+  std::atomic<bool> done{false};
+  diagnostic_msgs::DiagnosticStatus locator, target;
+  std::mutex mutex;
+  ros::Subscriber sub = nh.subscribe<diagnostic_msgs::DiagnosticArray>(
+      "/diagnostics", 10, [&](const diagnostic_msgs::DiagnosticArray::ConstPtr& msg) {
+        const std::lock_guard<std::mutex> lock(mutex);
+        for (const auto& s : msg->status) {
+          if (s.name == "locator: locator") {
+            locator = s;
+          } else if (s.name == "locator: locator output /target topic status") {
+            target = s;
+          }
+        }
+        done = !locator.name.empty() && !target.name.empty();
+      });
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(10.0);
+  while (!done && ros::WallTime::now() < deadline) {
+    ros::WallDuration(0.1).sleep();
+  }
+  const std::lock_guard<std::mutex> lock(mutex);
+  ASSERT_TRUE(done) << "no locator status and /target topic status within 10 s";
+  EXPECT_EQ(locator.level, diagnostic_msgs::DiagnosticStatus::WARN);
+  EXPECT_NE(locator.message.find("/aoa/left/bearing"), std::string::npos) << locator.message;
+  EXPECT_EQ(locator.hardware_id, "layout spot, frame base_link");
+  std::string silent;
+  for (const auto& kv : locator.values) {
+    silent = kv.key == "silent inputs" ? kv.value : silent;
+  }
+  EXPECT_EQ(silent, "/aoa/left/bearing");  // the others publish
+  EXPECT_EQ(target.level, diagnostic_msgs::DiagnosticStatus::OK) << target.message;
 }
 
 TEST(Locator, ReportsLostWhenTheDriversStop) {

@@ -77,6 +77,12 @@ Layout loadLayoutFile(const std::string& path);
 
 std::string toString(AoaBoardKind kind);
 
+/// The robot's outline in the fixed frame's xy-plane, counter-clockwise: the layout has
+/// no outline of its own, so this is the convex hull of every TWR module and AoA board
+/// (TDoA anchors are off the robot), grown by `margin` metres on every side (the hull's
+/// corners become `margin`-sided bevels). With fewer than one sensor, empty.
+std::vector<Eigen::Vector2d> layoutFootprint(const Layout& layout, double margin);
+
 /// The package's topic convention for a layout's sensors, relative to the robot's
 /// namespace: `uwb/<module id>/ranges`, `aoa/<board id>/bearing` and, with TDoA anchors,
 /// `tdoa/measurements`. The driver launch files and the simulator follow it, so nodes can

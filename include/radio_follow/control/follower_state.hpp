@@ -25,10 +25,6 @@ enum class EstimateQuality {
   kAmbiguous,  ///< AMBIGUOUS: the target may be at its mirror image
 };
 
-/// "disabled", "waiting_for_target", "following", ... (FollowerStatus.STATE_* in lower
-/// case without the prefix), for diagnostics and logs.
-const char* stateName(FollowerState state);
-
 /// Why the safety layer holds the robot (or kNone when it may move).
 enum class StopReason {
   kNone,
@@ -45,6 +41,12 @@ enum class StopReason {
   /// This node's clock ran backwards (bag loop, simulator restart): state was reset.
   kClockJumped,
 };
+
+/// The state's name as diagnostics and logs show it: "disabled", "waiting_for_target",
+/// "following", "too_close", "target_lost", "arrived", "target_ambiguous"
+/// (FollowerStatus.STATE_* in lower
+/// case, without the prefix); "unknown" for a value outside the enum.
+const char* toString(FollowerState state);
 
 /// The state a stop reason is reported as (kNone maps to kFollowing).
 FollowerState stateFor(StopReason reason);

@@ -22,7 +22,9 @@
 #include "radio_follow/control/pid.hpp"
 #include "radio_follow/control/rate_limiter.hpp"
 #include "radio_follow/control/safety_monitor.hpp"
+#include "radio_follow/ros/output_diagnostic.hpp"
 #include "radio_follow/ros/params.hpp"
+#include "radio_follow/ros/wiring_debug.hpp"
 
 namespace radio_follow {
 
@@ -170,6 +172,10 @@ class ControllerBase {
   ros::Timer timer_;
   ros::WallTimer stop_check_timer_;
   diagnostic_updater::Updater diagnostics_;
+  std::optional<OutputDiagnostic> cmd_diagnostic_;  ///< rate of cmd_vel, from start()
+  /// First range per watched topic (debug log); keys fixed in start(), before the thread.
+  std::map<std::string, FirstMessageLog> first_range_;
+  FirstMessageLog first_estimate_;
   /// Live tuning of the safety thresholds and limits (doc/live_tuning.md), from start().
   /// Live tuning of common_ (controller_reconfigure.hpp).
   std::unique_ptr<ReconfigureServer<ControllerTuningConfig, ControllerCommonParams>> reconfigure_;

@@ -26,6 +26,9 @@ class DriverDiagnostics {
                     const std::string& hardware_id, const drivers::DriverStats& stats,
                     double silence_timeout, Extra extra = {});
 
+  /// The node's updater, for the output topics' rate/stamp diagnostics (OutputDiagnostic).
+  diagnostic_updater::Updater& updater() { return updater_; }
+
  private:
   void tick(const ros::TimerEvent& event);
   void produce(diagnostic_updater::DiagnosticStatusWrapper& status);

@@ -5,6 +5,7 @@
 
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 
 #include "radio_follow/UwbRanges.h"
@@ -16,6 +17,7 @@
 #include "radio_follow/drivers/line_framer.hpp"
 #include "radio_follow/drivers/serial_transport.hpp"
 #include "radio_follow/ros/driver_diagnostics.hpp"
+#include "radio_follow/ros/output_diagnostic.hpp"
 #include "radio_follow/ros/params.hpp"
 
 namespace radio_follow {
@@ -75,6 +77,8 @@ class Dwm1001DriverNode {
   drivers::Dwm1001Shell shell_;
   drivers::DwmMeasurement measurement_;
   std::unique_ptr<DriverDiagnostics> diagnostics_;
+  std::optional<OutputDiagnostic> ranges_diagnostic_;  // ticked by the queue's thread
+  std::optional<OutputDiagnostic> location_diagnostic_;
   ros::Timer shell_timer_;
   std::unique_ptr<drivers::DeliveryQueue<Outgoing>> queue_;
   std::unique_ptr<drivers::SerialTransport> transport_;

@@ -2,11 +2,13 @@
 #pragma once
 
 #include <diagnostic_updater/diagnostic_updater.h>
+#include <nav_msgs/Path.h>
 #include <ros/ros.h>
 #include <tf2_ros/transform_broadcaster.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,15 +16,18 @@
 #include "radio_follow/TargetEstimate.h"
 #include "radio_follow/TdoaMeasurements.h"
 #include "radio_follow/UwbRanges.h"
+#include "radio_follow/common/input_watch.hpp"
 #include "radio_follow/estimation/locator.hpp"
 #include "radio_follow/ros/locator_inputs.hpp"
 #include "radio_follow/ros/locator_reconfigure.hpp"
+#include "radio_follow/ros/output_diagnostic.hpp"
 #include "radio_follow/ros/params.hpp"
 
 namespace radio_follow {
 
 /// ROS wiring of the Locator: subscribes to the drivers' measurements, runs the solver at
-/// a fixed rate and publishes the target estimate, its pose, TF, markers and diagnostics.
+/// a fixed rate and publishes the target estimate, its pose, TF, markers, the path of
+/// recent estimates and diagnostics; warns which expected inputs are silent.
 /// Sensor positions come from the layout file (not from TF). See doc/nodes/locator.md.
 class LocatorNode {
  public:
@@ -35,6 +40,11 @@ class LocatorNode {
     double rate = 20.0;                   ///< solves per second, Hz
     std::string target_frame = "target";  ///< child frame of the published TF
     bool publish_tf = true;
+    /// An input topic without a message for this long (or never since the start) is
+    /// silent: warned about once per 10 s and listed in the diagnostics, s.
+    double input_timeout = 3.0;
+    /// Estimates kept in `target_path` (nav_msgs/Path); 0 = no path topic.
+    int path_length = 200;
     LocatorConfig locator;  ///< the core's tuning
 
     /// Reads every parameter from the private node handle (names in doc/nodes/locator.md).
@@ -55,6 +65,14 @@ class LocatorNode {
   void onTimer(const ros::TimerEvent& event);
   void publish(const LocatorEstimate& estimate, const ros::Time& now);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
+  /// A message arrived on input `index` (subscribers_ order).
+  void noteInput(std::size_t index);
+  /// Warns about silent inputs (rationed per input) and logs new measurement drops.
+  void watchInputs(const ros::Time& now);
+  void extendPath(const LocatorEstimate& estimate, const ros::Time& stamp);
+  template <typename Message>
+  void subscribe(ros::NodeHandle& nh, const std::string& topic,
+                 void (LocatorNode::*callback)(const typename Message::ConstPtr&));
 
   Params params_;
   Layout layout_;
@@ -65,9 +83,16 @@ class LocatorNode {
   ros::Publisher target_pub_;
   ros::Publisher pose_pub_;
   ros::Publisher markers_pub_;
+  ros::Publisher path_pub_;
+  nav_msgs::Path path_;  ///< recent estimates, at most path_length
   tf2_ros::TransformBroadcaster tf_;
   ros::Time last_tf_stamp_;  ///< stamp of the last target TF sent
   diagnostic_updater::Updater diagnostics_;
+  std::optional<OutputDiagnostic> target_diagnostic_;
+  std::optional<OutputDiagnostic> pose_diagnostic_;
+  std::optional<InputWatch> inputs_watch_;  ///< one entry per subscriber, resolved names
+  ros::Time last_tick_;                     ///< zero until the first timer tick
+  LocatorStats last_stats_;                 ///< drop counters at the last tick
   ros::Timer timer_;
   TargetStatus last_status_ = TargetStatus::kLost;
   std::size_t ignored_messages_ = 0;
@@ -78,7 +103,8 @@ class LocatorNode {
 
 /// The locator's rviz markers (pure function, unit-testable without a master): a circle
 /// (2D) or sphere (3D) per range around its module, an arrow per fresh bearing from its
-/// board (selected ones green, ignored ones grey), the estimate and its 2-sigma ellipsoid.
+/// board (selected ones green, ignored ones grey), the estimate (a small sphere) and the
+/// 2-sigma ellipse of its xy position as a ring above it (3D mode: the ellipsoid too).
 visualization_msgs::MarkerArray locatorMarkers(const Layout& layout, const LocatorConfig& config,
                                                const LocatorEstimate& estimate,
                                                const ros::Time& stamp);

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "radio_follow/drivers/delivery_queue.hpp"
 #include "radio_follow/drivers/tdoa_receiver.hpp"
 #include "radio_follow/drivers/tdoa_udp_transport.hpp"
+#include "radio_follow/ros/output_diagnostic.hpp"
 #include "radio_follow/ros/params.hpp"
 
 namespace radio_follow {
@@ -75,6 +77,7 @@ class TdoaDriverNode {
   std::unique_ptr<drivers::DeliveryQueue<TdoaMeasurements>> queue_;
   ros::Timer timer_;
   diagnostic_updater::Updater diagnostics_;
+  std::optional<OutputDiagnostic> output_diagnostic_;  // ticked by the queue's thread
   std::unique_ptr<TdoaUdpTransport> transport_;
 };
 

@@ -5,6 +5,7 @@
 
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "radio_follow/drivers/serial_transport.hpp"
 #include "radio_follow/drivers/uudf_decoder.hpp"
 #include "radio_follow/ros/driver_diagnostics.hpp"
+#include "radio_follow/ros/output_diagnostic.hpp"
 #include "radio_follow/ros/params.hpp"
 
 namespace radio_follow {
@@ -56,6 +58,7 @@ class UbloxAoaDriverNode {
   drivers::LineFramer framer_;
   drivers::UudfEvent event_;
   std::unique_ptr<DriverDiagnostics> diagnostics_;
+  std::optional<OutputDiagnostic> bearing_diagnostic_;  // ticked by the queue's thread
   std::unique_ptr<drivers::DeliveryQueue<AoaBearing>> queue_;
   std::unique_ptr<drivers::SerialTransport> transport_;
 };

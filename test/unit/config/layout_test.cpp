@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
+#include <vector>
 
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
@@ -127,6 +129,41 @@ TEST(Layout, ConventionalTopicsFollowTheSensorIds) {
   EXPECT_EQ(topics.uwb, (std::vector<std::string>{"uwb/5722/ranges", "uwb/5A84/ranges"}));
   EXPECT_EQ(topics.aoa, std::vector<std::string>{"aoa/left/bearing"});
   EXPECT_EQ(topics.tdoa, std::vector<std::string>{"tdoa/measurements"});
+}
+
+TEST(Layout, FootprintIsTheSensorsConvexHullGrownByTheMargin) {
+  const Layout layout = parseLayout(kMinimal, "test");
+  const double margin = 0.1;
+  const std::vector<Eigen::Vector2d> hull = layoutFootprint(layout, margin);
+  ASSERT_GE(hull.size(), 3u);
+  // Counter-clockwise and convex: every turn is to the left.
+  for (std::size_t i = 0; i < hull.size(); ++i) {
+    const Eigen::Vector2d a = hull[(i + 1) % hull.size()] - hull[i];
+    const Eigen::Vector2d b = hull[(i + 2) % hull.size()] - hull[(i + 1) % hull.size()];
+    EXPECT_GT(a.x() * b.y() - a.y() * b.x(), 0.0) << i;
+  }
+  // Every module and board lies inside, at least the margin from each edge; the TDoA
+  // anchors (off the robot, 1 m out) do not.
+  auto edgeDistance = [&](const Eigen::Vector2d& p) {
+    double nearest = 1e9;
+    for (std::size_t i = 0; i < hull.size(); ++i) {
+      const Eigen::Vector2d e = (hull[(i + 1) % hull.size()] - hull[i]).normalized();
+      const Eigen::Vector2d d = p - hull[i];
+      nearest = std::min(nearest, e.x() * d.y() - e.y() * d.x());  // > 0 inside
+    }
+    return nearest;
+  };
+  for (const auto& m : layout.twr_modules) {
+    EXPECT_GE(edgeDistance(m.position.head<2>()), margin - 1e-9) << m.id;
+  }
+  for (const auto& b : layout.aoa_boards) {
+    EXPECT_GE(edgeDistance(b.position.head<2>()), margin - 1e-9) << b.id;
+  }
+  for (const auto& a : layout.tdoa_anchors) {
+    EXPECT_LT(edgeDistance(a.position.head<2>()), 0.0) << a.id;
+  }
+  // And not much more than the margin: the rear module's corner is at most 8 % further.
+  EXPECT_LT(edgeDistance(Eigen::Vector2d(-0.07 - margin * 1.09, -0.04)), 0.0);
 }
 
 TEST(Layout, MissingFileIsAParamError) {

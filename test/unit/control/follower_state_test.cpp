@@ -17,6 +17,18 @@ TEST(FollowerState, StopReasonsMapToStates) {
   EXPECT_EQ(stopText(StopReason::kTooClose), "Too close, stopping.");
 }
 
+TEST(FollowerState, NamesAreTheMessageConstantsInLowerCase) {
+  // FollowerStatus.STATE_<NAME> without the prefix; diagnostics show these, not numbers.
+  EXPECT_STREQ(toString(FollowerState::kDisabled), "disabled");
+  EXPECT_STREQ(toString(FollowerState::kWaitingForTarget), "waiting_for_target");
+  EXPECT_STREQ(toString(FollowerState::kFollowing), "following");
+  EXPECT_STREQ(toString(FollowerState::kTooClose), "too_close");
+  EXPECT_STREQ(toString(FollowerState::kTargetLost), "target_lost");
+  EXPECT_STREQ(toString(FollowerState::kArrived), "arrived");
+  EXPECT_STREQ(toString(FollowerState::kTargetAmbiguous), "target_ambiguous");
+  EXPECT_STREQ(toString(static_cast<FollowerState>(200)), "unknown");
+}
+
 TEST(StatusTracker, ReportsOnlyChanges) {
   StatusTracker tracker;
   EXPECT_TRUE(tracker.update(FollowerState::kDisabled, "a"));
