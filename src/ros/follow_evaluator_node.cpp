@@ -204,6 +204,9 @@ void FollowEvaluatorNode::onTick(const ros::TimerEvent& event) {
   s.target_speed = target_speed_;
   s.truth_x = relative->point.x;
   s.truth_y = relative->point.y;
+  if (estimate_) {
+    s.estimate_status = toString(static_cast<TargetStatus>(estimate_->status));
+  }
   const bool usable = estimate_ && hasPosition(*estimate_);
   // An estimate from the future is not available, whatever it claims (TimePolicy).
   const bool trusted =

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <sstream>
 
 #include "radio_follow/common/angles.hpp"
@@ -98,6 +99,7 @@ FollowReport FollowMetrics::report() const {
                            samples_.back().target_y - samples_.back().robot_y);
   std::vector<double> gaps_in_window;
   std::vector<double> errors;
+  std::map<std::string, int> status_counts;
   int within = 0;
   bool caught_up = false;
   r.gap_window_start = std::numeric_limits<double>::quiet_NaN();
@@ -125,6 +127,7 @@ FollowReport FollowMetrics::report() const {
       gaps_in_window.push_back(gap);
       within += within_now;
     }
+    ++status_counts[s.estimate_status];
     if (s.estimate_x && s.estimate_y) {
       errors.push_back(std::hypot(*s.estimate_x - s.truth_x, *s.estimate_y - s.truth_y));
     }
@@ -133,6 +136,9 @@ FollowReport FollowMetrics::report() const {
   r.gap_within_tolerance = gaps_in_window.empty() ? 0.0 : double(within) / gaps_in_window.size();
   r.gap_mean = mean(gaps_in_window);
   r.estimate_availability = double(errors.size()) / samples_.size();
+  for (const auto& [status, count] : status_counts) {
+    r.estimate_status_share[status] = double(count) / samples_.size();
+  }
   r.estimate_error_median = quantile(errors, 0.5);
   r.estimate_error_p95 = quantile(errors, 0.95);
   r.estimate_error_mean = mean(errors);
@@ -207,6 +213,13 @@ std::string FollowReport::toJson() const {
       << "  \"gap_samples\": " << gap_samples << ",\n"
       << "  \"gap_window_start_s\": " << jsonNumber(gap_window_start) << ",\n"
       << "  \"estimate_availability\": " << jsonNumber(estimate_availability) << ",\n"
+      << "  \"estimate_status_share\": {";
+  bool first = true;
+  for (const auto& [status, share] : estimate_status_share) {
+    out << (first ? "" : ", ") << jsonString(status) << ": " << jsonNumber(share);
+    first = false;
+  }
+  out << "},\n"
       << "  \"estimate_error_median_m\": " << jsonNumber(estimate_error_median) << ",\n"
       << "  \"estimate_error_p95_m\": " << jsonNumber(estimate_error_p95) << ",\n"
       << "  \"estimate_error_mean_m\": " << jsonNumber(estimate_error_mean) << ",\n"

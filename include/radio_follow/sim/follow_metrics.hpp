@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,6 +28,8 @@ struct FollowSample {
   /// there is an estimate (so the error is the locator's, not transport latency), else now.
   double truth_x = 0.0;
   double truth_y = 0.0;
+  /// Status of the newest estimate heard ("OK", "AMBIGUOUS", ...; "none" before the first).
+  std::string estimate_status = "none";
 };
 
 /// What the experiments assert and the demo reports.
@@ -66,6 +69,8 @@ struct FollowReport {
   double estimate_error_p95 = 0.0;     ///< m
   double estimate_error_mean = 0.0;    ///< m
   double estimate_availability = 0.0;  ///< fraction of samples with an estimate
+  /// Fraction of samples by the newest estimate's status (OK, DEGRADED, AMBIGUOUS, ...).
+  std::map<std::string, double> estimate_status_share;
   double path_deviation_median = 0.0;  ///< m, outside turns
   double path_deviation_max = 0.0;     ///< m, outside turns
   int path_samples = 0;

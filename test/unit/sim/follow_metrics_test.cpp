@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace radio_follow {
 namespace sim {
@@ -41,6 +42,49 @@ TEST(FollowMetrics, PerfectFollowerScoresPerfectly) {
   EXPECT_NEAR(r.path_deviation_median, 0.0, 1e-9);
   EXPECT_GT(r.path_samples, 200);
   EXPECT_NEAR(r.robot_distance, 20.0, 1e-9);
+}
+
+TEST(FollowMetrics, AWorkingClosedLoopPasses) {
+  const FollowReport r = straightRun(1.6, 0.0, 0.0).report();
+  EXPECT_TRUE(r.failures.empty());
+  EXPECT_NE(r.toJson().find("\"passed\": true"), std::string::npos);
+}
+
+// What the review saw: a launch that ran to the end, exit 0, the robot never moved.
+TEST(FollowMetrics, ARobotThatNeverMovesOrNeverHasAnEstimateFails) {
+  FollowMetrics metrics{FollowSettings{}};
+  for (int i = 0; i <= 400; ++i) {
+    FollowSample s;
+    s.t = i * 0.05;
+    s.target_x = 2.0 + s.t;  // walks 20 m away from a robot standing at 0
+    s.target_speed = 1.0;
+    s.estimate_status = "AMBIGUOUS";
+    metrics.add(s);
+  }
+  const FollowReport r = metrics.report();
+  ASSERT_EQ(r.failures.size(), 2u);
+  EXPECT_NE(r.failures[0].find("never moved"), std::string::npos) << r.failures[0];
+  EXPECT_NE(r.failures[1].find("never became usable"), std::string::npos) << r.failures[1];
+  EXPECT_DOUBLE_EQ(r.estimate_status_share.at("AMBIGUOUS"), 1.0);
+  const std::string json = r.toJson();
+  EXPECT_NE(json.find("\"passed\": false"), std::string::npos) << json;
+  EXPECT_NE(json.find("never moved"), std::string::npos) << json;
+  EXPECT_TRUE(FollowMetrics{FollowSettings{}}.report().failures.size() == 1u);  // no samples
+}
+
+// A person standing at the follow distance: a robot that stays put is right.
+TEST(FollowMetrics, StandingStillIsNoFailureWhenThereWasNothingToDo) {
+  FollowMetrics metrics{FollowSettings{}};
+  for (int i = 0; i <= 100; ++i) {
+    FollowSample s;
+    s.t = i * 0.05;
+    s.target_x = 1.6;
+    s.truth_x = 1.6;
+    s.estimate_x = 1.6;
+    s.estimate_y = 0.0;
+    metrics.add(s);
+  }
+  EXPECT_TRUE(metrics.report().failures.empty());
 }
 
 TEST(FollowMetrics, GapOutsideToleranceIsMeasured) {
