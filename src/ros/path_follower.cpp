@@ -175,6 +175,8 @@ ControllerBase::Output PathFollowerNode::compute(const ros::Time& now, double dt
   if (arrived_) {
     out.state = control::FollowerState::kArrived;
     out.text = "At follow distance, waiting.";
+  } else if (estimate_->status == TargetEstimate::STATUS_DEGRADED) {
+    out.text = "Following the path slowly, the position is uncertain.";
   } else {
     out.text = "Following the path.";
   }

@@ -107,6 +107,10 @@ ControllerBase::Output VelocityControllerNode::compute(const ros::Time& now, dou
   } else if (law_.arrived()) {
     out.state = control::FollowerState::kArrived;
     out.text = "At follow distance, waiting.";
+  } else if (estimate_->status == TargetEstimate::STATUS_DEGRADED) {
+    out.text = law_.driving_backwards()
+                   ? "Following backwards slowly, the position is uncertain."
+                   : "Following slowly, the position is uncertain.";
   } else {
     out.text = law_.driving_backwards() ? "Following backwards." : "Following.";
   }
