@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
-TEST(ClashDummy, Runs) { EXPECT_EQ(1 + 1, 2); }
+TEST(ClashDummy, Runs) {
+  EXPECT_EQ(1 + 1, 2);
+}
 
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);
