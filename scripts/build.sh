@@ -20,5 +20,6 @@ catkin_make -j"${RF_JOBS:-$(nproc)}" \
   -DPYTHON_EXECUTABLE=/usr/bin/python3 \
   -DCMAKE_BUILD_TYPE="${RF_BUILD_TYPE:-Release}" \
   -DCMAKE_EXPORT_COMPILE_COMMANDS=ON \
+  -DRADIO_FOLLOW_WERROR=ON -DRADIO_FOLLOW_BUILD_BENCHMARKS=ON \
   "$@"
 echo "build: workspace $ws"

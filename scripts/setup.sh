@@ -12,6 +12,10 @@ packages=(
   ros-base-dev libroscpp-dev librosbag-dev python3-rosbag python3-roslaunch python3-rostopic
   python3-rosnode rosbash python3-std-msgs python3-geometry-msgs python3-sensor-msgs
   python3-nav-msgs python3-visualization-msgs
+  # Python message and tool packages the docs' operator commands need (rosservice call
+  # .../set_enabled, rostopic echo /diagnostics, rosparam, rosmsg, dynparam)
+  python3-std-srvs python3-diagnostic-msgs python3-rosservice python3-rosparam python3-rosmsg
+  python3-tf2-msgs python3-rosgraph-msgs libdiagnostic-msgs-dev libxmlrpcpp-dev
   libstd-msgs-dev libstd-srvs-dev libgeometry-msgs-dev libnav-msgs-dev libsensor-msgs-dev
   libvisualization-msgs-dev libtf2-ros-dev libtf2-geometry-msgs-dev libdiagnostic-updater-dev
   libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure
@@ -20,7 +24,9 @@ packages=(
   # math, I/O, benchmarks
   libceres-dev libeigen3-dev libboost-system-dev libboost-dev libyaml-cpp-dev libbenchmark-dev
   # reports (demo plot)
-  python3-matplotlib
+  python3-matplotlib python3-numpy
+  # packaging (scripts/package.sh: rosdep check, bloom-generate rosdebian, .deb build)
+  python3-bloom python3-rosdep2 debhelper fakeroot dpkg-dev
 )
 
 missing=()

@@ -22,7 +22,22 @@ rm -rf "$results"
 (cd "$ws" && catkin_make run_tests -j1 -DPYTHON_EXECUTABLE=/usr/bin/python3) >"$ws/run_tests.log" 2>&1 || true
 grep -E '^\[ *(RUN|OK|FAILED|PASSED) |^\[ *FAILED|testcase|rostest|Summary' "$ws/run_tests.log" | tail -n 200 || true
 
-python3 "$repo/scripts/summarize_tests.py" "$results"
+status=0
+python3 "$repo/scripts/summarize_tests.py" "$results" || status=1
 
 # Every command README.md and doc/ show, run against the simulator (scripts/docs_test.py).
-python3 "$repo/scripts/docs_test.py"
+python3 "$repo/scripts/docs_test.py" || status=1
+
+# Packaging (doc/packaging.md), from nothing the dev build made: radio_follow configures
+# and builds next to a package with clashing target names, and the .deb builds, installs
+# into a clean prefix and runs the demo from there.
+packaging=0
+bash "$repo/scripts/check_target_clash.sh" || packaging=1
+bash "$repo/scripts/package.sh" || packaging=1
+if [ "$packaging" = 0 ]; then
+  echo "packaging: target clash check and .deb check passed"
+else
+  echo "packaging: FAILED (see above)" >&2
+  status=1
+fi
+exit "$status"

@@ -87,8 +87,6 @@ TEST(Dwm1001Driver, ConfiguresDecodesAndRecoversFromReplug) {
     EXPECT_EQ(rx.last_location.header.frame_id, "uwb_network");
     EXPECT_DOUBLE_EQ(rx.last_location.position.x, 2.57);
     EXPECT_EQ(rx.last_location.quality, 100);
-    // Every published ranges message is whole: the fake's cut lines never get through.
-    EXPECT_EQ(rx.ranges, rx.locations);
   }
   const std::string dialogue = device.received();
   EXPECT_EQ(dialogue, "\r\rsi\rlec\r");
@@ -101,6 +99,10 @@ TEST(Dwm1001Driver, ConfiguresDecodesAndRecoversFromReplug) {
   int before;
   {
     std::lock_guard<std::mutex> lock(rx.mutex);
+    // Every published ranges message is whole: the fake's cut lines never get through.
+    // The two topics come over two connections, so the counts are compared here, with the
+    // stream stopped, not while it runs (a loaded CI machine saw 7 ranges vs 5 locations).
+    EXPECT_EQ(rx.ranges, rx.locations);
     before = rx.ranges;
   }
   ASSERT_TRUE(device.appear());
