@@ -75,10 +75,15 @@ void solve(benchmark::State& state, const std::string& layout, int max_bearings)
 }
 
 // The node's whole per-epoch work for the Spot layout: fresh ranges and bearings from all
-// four boards (the one behind the robot included), selection, warm solve, filter.
-void locatorUpdate(benchmark::State& state) {
-  const rf::Layout layout = rf::loadLayoutFile(std::string(RF_CONFIG_DIR) + "/layouts/spot.yaml");
+// four boards (the one behind the robot included), selection, warm solve, filter, and the
+// mirror test with ambiguity_margin = the argument (0: off, the baseline; 2: the default:
+// one more warm solve per range-only epoch, and per epoch until the track is confirmed).
+// spot_twr: the same walk with ranges only (no boards in that layout).
+void locatorUpdate(benchmark::State& state, const std::string& name) {
+  const rf::Layout layout =
+      rf::loadLayoutFile(std::string(RF_CONFIG_DIR) + "/layouts/" + name + ".yaml");
   rf::LocatorConfig config;
+  config.ambiguity_margin = static_cast<double>(state.range(0));
   rf::Locator locator(layout, config);
   std::mt19937_64 rng(3);
   std::normal_distribution<double> noise(0.0, 1.0);
@@ -112,6 +117,13 @@ BENCHMARK_CAPTURE(solve, tracked, std::string("tracked"), 0)->Unit(benchmark::kM
 BENCHMARK_CAPTURE(solve, cube_1_bearing, std::string("cube"), 1)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(solve, spot_1_bearing, std::string("spot"), 1)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(solve, spot_all_in_fov, std::string("spot"), 4)->Unit(benchmark::kMicrosecond);
-BENCHMARK(locatorUpdate)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(locatorUpdate, spot, std::string("spot"))
+    ->Arg(0)
+    ->Arg(2)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(locatorUpdate, spot_twr, std::string("spot_twr"))
+    ->Arg(0)
+    ->Arg(2)
+    ->Unit(benchmark::kMicrosecond);
 
 BENCHMARK_MAIN();

@@ -269,11 +269,19 @@ bool Locator::mirrorAmbiguous(const ObservationSet& obs, const SolveResult& solu
   if (config_.ambiguity_margin <= 0.0 || !config_.planar) {
     return false;
   }
+  if (side_confirmed_ && (!obs.bearings.empty() || !obs.tdoas.empty())) {
+    // A bearing (or a distance difference) of a confirmed track: the mirror's residual is
+    // tens of sigmas, the test would only repeat what it found. Range-only epochs keep
+    // testing, so that a track that drifts onto the wrong side is caught.
+    return false;
+  }
   const std::optional<Eigen::Vector3d> mirrored = mirrorImage(obs, solution.position);
   if (!mirrored || (*mirrored - solution.position).head<2>().norm() <= kMinMirrorSeparation) {
     return false;  // on the modules' axis both sides meet: nothing to tell apart
   }
-  const SolveResult other = solver_->solveCold(obs, *mirrored);
+  // The mirror of a solution is where the ranges of collinear modules fit as well, so a
+  // warm solve from there finds the other minimum (no convex stage, no covariance).
+  const SolveResult other = solver_->solveCostOnly(obs, *mirrored);
   const double separation = (other.position - solution.position).head<2>().norm();
   const auto vote = [this] {
     side_confirmed_ = side_confirmed_ || ++side_votes_ >= kSideConfirmEpochs;

@@ -99,6 +99,11 @@ SolveResult PositionSolver::solve(const ObservationSet& observations,
   return solveOnce(observations, initial, true, false);
 }
 
+SolveResult PositionSolver::solveCostOnly(const ObservationSet& observations,
+                                          const Eigen::Vector3d& initial) const {
+  return solveOnce(observations, initial, false, false);
+}
+
 SolveResult PositionSolver::solveCold(const ObservationSet& observations,
                                       const Eigen::Vector3d& initial) const {
   const SolveResult first = solveOnce(observations, initial, false, true);

@@ -71,6 +71,11 @@ class PositionSolver {
   /// started far away can settle where the residuals it ignores are the good ones.
   SolveResult solveCold(const ObservationSet& observations, const Eigen::Vector3d& initial) const;
 
+  /// Like solve(), without the covariance: where a start leads and at what cost (the
+  /// locator's mirror test).
+  SolveResult solveCostOnly(const ObservationSet& observations,
+                            const Eigen::Vector3d& initial) const;
+
   /// Convex first stage from every start, the lowest cost wins, then the configured losses
   /// from there (covariance only for the result).
   SolveResult solveMultiStart(const ObservationSet& observations,
