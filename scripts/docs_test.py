@@ -152,6 +152,13 @@ class Demo:
         self.log.close()
 
 
+def clone_state():
+    """What `git status` says of the clone: a documented command must not write into it."""
+    result = subprocess.run(["git", "status", "--porcelain", "--untracked-files=all"],
+                            cwd=REPO, stdout=subprocess.PIPE, text=True)
+    return set(result.stdout.splitlines()) if result.returncode == 0 else set()
+
+
 def check_launch_args(env):
     """Failures in `roslaunch --ros-args` of every launch file (required or undocumented)."""
     failures = []
@@ -186,6 +193,7 @@ def main():
     scratch = Path(tempfile.mkdtemp(prefix="radio_follow_docs_"))
     env = environment(scratch)
     failures, ran, skipped = [], 0, 0
+    before = clone_state()
     for problem in check_launch_args(env):
         print(f"docs_test: FAIL {problem}")
         failures.append("launch arguments")
@@ -222,6 +230,9 @@ def main():
     finally:
         if demo is not None:
             demo.stop()
+    for change in sorted(clone_state() - before):
+        print(f"docs_test: FAIL a documented command changed the clone: {change}")
+        failures.append("clone written")
     print(f"docs_test: {ran} blocks run, {skipped} skipped, {len(failures)} failed"
           + (": " + ", ".join(failures) if failures else ""))
     return 1 if failures else 0

@@ -73,12 +73,9 @@ Dwm1001DriverNode::Dwm1001DriverNode(ros::NodeHandle& nh, ros::NodeHandle& priva
         status.add("tag id", params_.configure ? shell_.tagId() : params_.tag_id);
         status.add("shell restarts", shell_.restarts());
       });
-  // Stamps are the host's receive time: one older than silence_timeout at publishing sat
-  // that long in the queue. A module may give no position (tag_location): no lower rate.
-  OutputDiagnostic::Bounds bounds;
-  bounds.min_hz = 1.0 / params_.silence_timeout;
-  bounds.max_hz = kMaxLineRate;
-  bounds.max_age = params_.silence_timeout;
+  // A module may give no position (tag_location): no lower rate there.
+  OutputDiagnostic::Bounds bounds =
+      OutputDiagnostic::Bounds::forDriver(params_.silence_timeout, kMaxLineRate);
   ranges_diagnostic_.emplace(diagnostics_->updater(), "dwm1001 " + params_.port + " output",
                              ranges_pub_, bounds, true);
   bounds.min_hz = 0.0;

@@ -3,6 +3,15 @@
 
 namespace radio_follow {
 
+OutputDiagnostic::Bounds OutputDiagnostic::Bounds::forDriver(double silence_timeout,
+                                                             double max_hz) {
+  Bounds bounds;
+  bounds.min_hz = 1.0 / silence_timeout;
+  bounds.max_hz = max_hz;
+  bounds.max_age = silence_timeout;
+  return bounds;
+}
+
 OutputDiagnostic::OutputDiagnostic(diagnostic_updater::Updater& updater, const std::string& label,
                                    const ros::Publisher& publisher, const Bounds& bounds,
                                    bool stamped)

@@ -2,12 +2,28 @@
 #include "radio_follow/ros/target_estimate.hpp"
 
 #include <cmath>
+#include <cstdint>
+
+#include "radio_follow/estimation/locator.hpp"
 
 namespace radio_follow {
+namespace {
+
+constexpr std::uint8_t value(TargetStatus status) {
+  return static_cast<std::uint8_t>(status);
+}
+static_assert(TargetEstimate::STATUS_UNSET == value(TargetStatus::kUnset) &&
+                  TargetEstimate::STATUS_OK == value(TargetStatus::kOk) &&
+                  TargetEstimate::STATUS_HEADING_ONLY == value(TargetStatus::kHeadingOnly) &&
+                  TargetEstimate::STATUS_DEGRADED == value(TargetStatus::kDegraded) &&
+                  TargetEstimate::STATUS_LOST == value(TargetStatus::kLost) &&
+                  TargetEstimate::STATUS_AMBIGUOUS == value(TargetStatus::kAmbiguous),
+              "TargetStatus must equal TargetEstimate.STATUS_* (locator_node copies them)");
+
+}  // namespace
 
 bool hasPosition(const TargetEstimate& estimate) {
-  return estimate.status == TargetEstimate::STATUS_OK ||
-         estimate.status == TargetEstimate::STATUS_DEGRADED;
+  return radio_follow::hasPosition(static_cast<TargetStatus>(estimate.status));
 }
 
 control::EstimateQuality estimateQuality(const TargetEstimate& estimate) {

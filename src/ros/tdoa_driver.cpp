@@ -39,11 +39,9 @@ TdoaDriverNode::TdoaDriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
   diagnostics_.add("TDoA anchors", this, &TdoaDriverNode::diagnose);
   // A blink is stamped with its first report's arrival and published when its window
   // passes (or when it is complete): a stamp older than data_timeout sat in the queue.
-  OutputDiagnostic::Bounds bounds;
-  bounds.min_hz = 1.0 / params_.data_timeout;
-  bounds.max_hz = kMaxBlinkRate;
-  bounds.max_age = params_.data_timeout;
-  output_diagnostic_.emplace(diagnostics_, "TDoA anchors output", pub_, bounds, true);
+  output_diagnostic_.emplace(
+      diagnostics_, "TDoA anchors output", pub_,
+      OutputDiagnostic::Bounds::forDriver(params_.data_timeout, kMaxBlinkRate), true);
   last_datagram_ = last_diagnosis_ = ros::WallTime::now();
   // Incomplete blinks are published when their window passes; check twice per window.
   timer_ =

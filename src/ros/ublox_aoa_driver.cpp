@@ -75,14 +75,9 @@ UbloxAoaDriverNode::UbloxAoaDriverNode(ros::NodeHandle& nh, ros::NodeHandle& pri
   diagnostics_ = std::make_unique<DriverDiagnostics>(
       nh, private_nh, "ublox aoa " + params_.port,
       params_.port + " (board " + params_.frame_id + ")", stats_, params_.silence_timeout);
-  // Stamps are the host's receive time: one older than silence_timeout at publishing sat
-  // that long in the queue.
-  OutputDiagnostic::Bounds bounds;
-  bounds.min_hz = 1.0 / params_.silence_timeout;
-  bounds.max_hz = kMaxEventRate;
-  bounds.max_age = params_.silence_timeout;
-  bearing_diagnostic_.emplace(diagnostics_->updater(), "ublox aoa " + params_.port + " output",
-                              bearing_pub_, bounds, true);
+  bearing_diagnostic_.emplace(
+      diagnostics_->updater(), "ublox aoa " + params_.port + " output", bearing_pub_,
+      OutputDiagnostic::Bounds::forDriver(params_.silence_timeout, kMaxEventRate), true);
 
   drivers::SerialTransport::Options options;
   options.port = params_.port;

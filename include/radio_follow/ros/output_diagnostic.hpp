@@ -23,6 +23,11 @@ class OutputDiagnostic {
     double max_hz = 1e9;
     double min_age = -1.0;  ///< s
     double max_age = 5.0;   ///< s
+
+    /// A driver's output: at least one message per `silence_timeout`, at most the device's
+    /// `max_hz`; stamps are the host's receive time, so one older than silence_timeout at
+    /// publishing sat that long in the queue.
+    static Bounds forDriver(double silence_timeout, double max_hz);
   };
 
   /// `stamped` = the messages have a header: the stamp's age is checked too.

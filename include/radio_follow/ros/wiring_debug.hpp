@@ -9,7 +9,7 @@
 namespace radio_follow {
 
 /// Debug lines for a user tracing a wiring problem (logger `ros.radio_follow.wiring`,
-/// doc/debugging.md): which fully resolved topic a node reads or writes, and when the
+/// doc/diagnostics.md): which fully resolved topic a node reads or writes, and when the
 /// first message of an input arrived. Silent unless the logger is at DEBUG.
 void debugSubscribed(const ros::Subscriber& subscriber);
 void debugAdvertised(const ros::Publisher& publisher);
