@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/control/path_follower.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+
+#include "radio_follow/common/param_error.hpp"
 
 namespace radio_follow {
 namespace control {
@@ -77,6 +80,88 @@ PursuitTarget purePursuit(const std::deque<Eigen::Vector2d>& path, const Pose2& 
   target.curvature = l2 > 1e-12 ? 2.0 * target.local.y() / l2 : 0.0;
   target.valid = true;
   return target;
+}
+
+void PathFollowParams::load(const ParamSource& p) {
+  p.param("path_spacing", path_spacing, path_spacing);
+  p.param("max_path_points", max_path_points, max_path_points);
+  p.param("lookahead", lookahead, lookahead);
+  p.param("reached_radius", reached_radius, reached_radius);
+  p.param("turn_gain", turn_gain, turn_gain);
+}
+
+void PathFollowParams::validate() const {
+  require(path_spacing > 0.0, "~path_spacing", path_spacing, "a spacing > 0 in metres");
+  require(max_path_points >= 2, "~max_path_points", max_path_points, "a count >= 2");
+  require(lookahead > 0.0, "~lookahead", lookahead, "a distance > 0 in metres");
+  require(reached_radius > 0.0, "~reached_radius", reached_radius, "a distance > 0 in metres");
+  require(turn_gain > 0.0, "~turn_gain", turn_gain, "a gain > 0 in 1/s");
+}
+
+PathFollowLaw::PathFollowLaw(const PathFollowParams& params, const VelocityLawParams& law)
+    : params_(params),
+      law_(law),
+      fallback_(law),
+      speed_pid_(law.linear),
+      path_(params.path_spacing, static_cast<std::size_t>(params.max_path_points)) {}
+
+void PathFollowLaw::setLawParams(const VelocityLawParams& law) {
+  law_ = law;
+  fallback_.setParams(law);
+  speed_pid_.setGains(law.linear);
+}
+
+void PathFollowLaw::reset() {
+  fallback_.reset();
+  speed_pid_.reset();
+  arrived_ = false;
+}
+
+LawOutput PathFollowLaw::step(const TargetPolar& target, const std::optional<Pose2>& robot,
+                              std::optional<double> walking_speed, double dt) {
+  if (!robot || path_.empty() || !target.range_valid) {
+    // Without self-localisation no path can be stored: drive straight at the target.
+    TargetPolar straight = target;
+    straight.receding_speed = 0.0;
+    LawOutput out = fallback_.step(straight, dt);
+    if (target.range_valid && !fallback_.arrived()) {
+      out.text = "No odometry, driving straight to the target.";
+    }
+    return out;
+  }
+
+  LawOutput out;
+  path_.prune(robot->position(), params_.reached_radius);
+  const PursuitTarget goal = purePursuit(path_.points(), *robot, params_.lookahead);
+  // A path built from noisy estimates zig-zags and is longer than the walk; the straight
+  // range is never longer than the walk. The smaller of the two keeps the robot from
+  // closing in on a person who has stopped because their path looked long.
+  const double along = path_.lengthFrom(robot->position());
+  const double gap =
+      governingGap(std::min(along, target.range) - law_.follow_distance, target.module_gap, law_);
+  const double alpha = std::atan2(goal.local.y(), goal.local.x());
+  // The person walks the path ahead: the feed-forward is their whole ground speed.
+  const double speed_ahead = walking_speed.value_or(0.0);
+  double speed = gapSpeed(gap, speed_ahead, dt, speed_pid_, law_);
+  speed *= std::max(0.0, std::cos(alpha));
+  if (target.degraded) {
+    speed *= law_.degraded_speed_factor;
+  }
+  out.command.linear = speed;
+  // Pure pursuit steers along the arc; a goal behind the robot (after it stopped and the
+  // person walked around it) needs turning in place first.
+  out.command.angular =
+      std::abs(alpha) > 0.5 * M_PI ? params_.turn_gain * alpha : speed * goal.curvature;
+  arrived_ = updateArrived(arrived_, gap, speed_ahead);
+  if (arrived_) {
+    out.state = FollowerState::kArrived;
+    out.text = "At follow distance, waiting.";
+  } else if (target.degraded) {
+    out.text = "Following the path slowly, the position is uncertain.";
+  } else {
+    out.text = "Following the path.";
+  }
+  return out;
 }
 
 }  // namespace control

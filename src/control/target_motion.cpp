@@ -50,5 +50,28 @@ std::optional<Eigen::Vector2d> TargetMotion::velocity(double now) const {
   return Eigen::Vector2d(tp / tt);
 }
 
+void TargetTrack::add(double t, const Eigen::Vector2d& robot, const Eigen::Vector2d& target) {
+  robot_ = robot;
+  target_ = target;
+  motion_.add(t, target);
+}
+
+std::optional<double> TargetTrack::speed(double now) const {
+  const std::optional<Eigen::Vector2d> v = motion_.velocity(now);
+  if (!v) {
+    return std::nullopt;
+  }
+  return v->norm();
+}
+
+std::optional<double> TargetTrack::recedingSpeed(double now) const {
+  const std::optional<Eigen::Vector2d> v = motion_.velocity(now);
+  const Eigen::Vector2d line = target_ - robot_;
+  if (!v || !(line.norm() > 1e-6)) {
+    return std::nullopt;
+  }
+  return v->dot(line.normalized());
+}
+
 }  // namespace control
 }  // namespace radio_follow

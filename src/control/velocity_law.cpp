@@ -6,6 +6,7 @@
 
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/control/command_pipeline.hpp"
 
 namespace radio_follow {
 namespace control {
@@ -118,6 +119,50 @@ VelocityCommand VelocityLaw::update(const TargetPolar& target, double dt) {
   }
   cmd.linear = backwards_ ? -speed : speed;
   return cmd;
+}
+
+LawOutput VelocityLaw::step(const TargetPolar& target, double dt) {
+  LawOutput out;
+  out.command = update(target, dt);
+  if (!target.range_valid) {
+    out.text = "Direction only, turning to the target.";
+  } else if (arrived()) {
+    out.state = FollowerState::kArrived;
+    out.text = "At follow distance, waiting.";
+  } else if (target.degraded) {
+    out.text = driving_backwards() ? "Following backwards slowly, the position is uncertain."
+                                   : "Following slowly, the position is uncertain.";
+  } else {
+    out.text = driving_backwards() ? "Following backwards." : "Following.";
+  }
+  return out;
+}
+
+VelocityLawParams loadVelocityLawParams(const ParamSource& p, const CommandPipelineParams& common) {
+  VelocityLawParams law;
+  p.param("follow_distance", law.follow_distance, law.follow_distance);
+  p.param("slowdown_distance", law.slowdown_distance, law.slowdown_distance);
+  p.param("closing_distance", law.closing_distance, law.closing_distance);
+  p.param("stop_margin", law.stop_margin, law.stop_margin);
+  p.param("feed_forward", law.feed_forward, law.feed_forward);
+  p.param("degraded_speed_factor", law.degraded_speed_factor, law.degraded_speed_factor);
+  p.param("allow_backwards", law.allow_backwards, law.allow_backwards);
+  double backwards_deg = rad2deg(law.backwards_angle);
+  p.param("backwards_angle_deg", backwards_deg, backwards_deg);
+  law.backwards_angle = deg2rad(backwards_deg);
+  p.param("backwards_cycles", law.backwards_cycles, law.backwards_cycles);
+  loadPidGains(p, "linear_pid", law.linear);
+  loadPidGains(p, "angular_pid", law.angular);
+  return lawWithCommon(law, common);
+}
+
+VelocityLawParams lawWithCommon(VelocityLawParams law, const CommandPipelineParams& common) {
+  law.max_linear = common.limits.max_linear;
+  law.safe_distance = common.safety.safe_distance;
+  law.linear.output_limit = common.limits.max_linear;
+  law.angular.output_limit = common.limits.max_angular;
+  law.validate();
+  return law;
 }
 
 }  // namespace control

@@ -35,46 +35,13 @@ void ControllerCommonParams::load(const ParamReader& pnh) {
   pnh.param("rate", rate, rate);
   pnh.param("start_enabled", start_enabled, start_enabled);
   pnh.param("layout_file", layout_file, layout_file);
-  pnh.param("calibrate_ranges", calibrate_ranges, calibrate_ranges);
+  std::optional<Layout> layout;
   if (!layout_file.empty()) {
-    // Explicit parameters below still win over what the layout implies.
-    const Layout layout = loadLayoutFile(layout_file);
-    range_topics = conventionalTopics(layout).uwb;
-    target_anchor_id = layout.target_anchor_id;
-    if (calibrate_ranges) {
-      for (const TwrModule& module : layout.twr_modules) {
-        calibrated_modules[module.id] = module;  // normalised by the parser
-      }
-    }
+    layout = loadLayoutFile(layout_file);
+    range_topics = conventionalTopics(*layout).uwb;  // ~range_topics below still wins
   }
   pnh.param("range_topics", range_topics, range_topics);
-  pnh.param("target_anchor_id", target_anchor_id, target_anchor_id);
-  target_anchor_id = normalizeId(target_anchor_id);
-  pnh.param("use_scan", use_scan, use_scan);
-  pnh.param("scan_timeout", scan_timeout, scan_timeout);
-  pnh.param("safe_distance", safety.safe_distance, safety.safe_distance);
-  pnh.param("estimate_timeout", safety.estimate_timeout, safety.estimate_timeout);
-  pnh.param("range_timeout", safety.range_timeout, safety.range_timeout);
-  pnh.param("hold_time", safety.hold_time, safety.hold_time);
-  pnh.param("max_linear", limits.max_linear, limits.max_linear);
-  pnh.param("max_angular", limits.max_angular, limits.max_angular);
-  pnh.param("max_linear_accel", limits.max_linear_accel, limits.max_linear_accel);
-  pnh.param("max_linear_decel", limits.max_linear_decel, limits.max_linear_decel);
-  pnh.param("max_angular_accel", limits.max_angular_accel, limits.max_angular_accel);
-  pnh.param("avoidance/obstacle_threshold", avoidance.obstacle_threshold,
-            avoidance.obstacle_threshold);
-  pnh.param("avoidance/stop_threshold", avoidance.stop_threshold, avoidance.stop_threshold);
-  pnh.param("avoidance/side_threshold", avoidance.side_threshold, avoidance.side_threshold);
-  pnh.param("avoidance/turn_rate", avoidance.turn_rate, avoidance.turn_rate);
-}
-
-void loadPidGains(const ParamReader& pnh, const std::string& ns, control::PidGains& gains) {
-  pnh.param(ns + "/kp", gains.kp, gains.kp);
-  pnh.param(ns + "/ki", gains.ki, gains.ki);
-  pnh.param(ns + "/kd", gains.kd, gains.kd);
-  pnh.param(ns + "/integral_limit", gains.integral_limit, gains.integral_limit);
-  pnh.param(ns + "/derivative_time_constant", gains.derivative_time_constant,
-            gains.derivative_time_constant);
+  control::CommandPipelineParams::load(pnh, layout ? &*layout : nullptr);
 }
 
 void ControllerCommonParams::validate() const {
@@ -83,22 +50,7 @@ void ControllerCommonParams::validate() const {
   for (const auto& topic : range_topics) {
     requireGraphName("~range_topics", topic);
   }
-  require(scan_timeout > 0.0, "~scan_timeout", scan_timeout, "a timeout > 0 in seconds");
-  // A calibration that moves the stop threshold far, or turns it around, is more likely a
-  // typo in the layout than a module: the safety stop must not silently depend on it.
-  const double d = safety.safe_distance;
-  for (const auto& [id, module] : calibrated_modules) {
-    const double shift = module.correctRange(d) - d;
-    const double slope = (module.correctRange(d + 0.1) - module.correctRange(d)) / 0.1;
-    require(std::abs(shift) <= kMaxSafetyCalibrationShift && slope > 0.5 && slope < 2.0,
-            "~layout_file twr_modules[" + id + "].calibration", module.correctRange(d),
-            "a corrected range at safe_distance (" + std::to_string(d) + " m) within " +
-                std::to_string(kMaxSafetyCalibrationShift) +
-                " m of it and a slope in (0.5, 2) there (or ~calibrate_ranges: false)");
-  }
-  safety.validate();
-  limits.validate();
-  avoidance.validate();
+  control::CommandPipelineParams::validate();
 }
 
 ControllerBase::ControllerBase(ros::NodeHandle& nh, ros::NodeHandle& private_nh,
@@ -118,8 +70,7 @@ ControllerBase::ControllerBase(ros::NodeHandle& nh, ros::NodeHandle& private_nh,
         p.validate();
         return p;
       }()),
-      monitor_(common_.safety),
-      limiter_(common_.limits) {}
+      pipeline_(common_) {}
 
 ControllerBase::~ControllerBase() {
   // The safety thread calls into this object: end it before any member goes.
@@ -181,8 +132,7 @@ void ControllerBase::start() {
       makeControllerReconfigure(private_nh_, common_, [this](const ControllerCommonParams& params) {
         onCommonChange(params);  // the law checks the new limits first; throws to refuse
         const std::lock_guard<std::mutex> lock(safety_mutex_);
-        monitor_.setParams(params.safety);  // both validated by the caller: no partial update
-        limiter_.setLimits(params.limits);
+        pipeline_.setParams(params);  // validated by the caller: no partial update
         common_ = params;
       });
 
@@ -198,7 +148,7 @@ bool ControllerBase::noteEstimate(const ros::Time& stamp, control::EstimateQuali
   first_estimate_("the target input (estimate or bearing)");
   const ros::Time now = ros::Time::now();
   const std::lock_guard<std::mutex> lock(safety_mutex_);
-  if (monitor_.onEstimate((stamp.isZero() ? now : stamp).toSec(), now.toSec(), quality)) {
+  if (pipeline_.onEstimate((stamp.isZero() ? now : stamp).toSec(), now.toSec(), quality)) {
     return true;
   }
   ROS_WARN_THROTTLE(2.0, "%s: estimate stamped %.3f s ahead of this node's clock refused; stopping",
@@ -208,7 +158,7 @@ bool ControllerBase::noteEstimate(const ros::Time& stamp, control::EstimateQuali
 
 double ControllerBase::moduleGap(const ros::Time& now) const {
   const std::lock_guard<std::mutex> lock(safety_mutex_);
-  return monitor_.nearestRange(now.toSec()) - monitor_.params().safe_distance;
+  return pipeline_.moduleGap(now.toSec());
 }
 
 void ControllerBase::onRanges(const std::string& topic, const UwbRanges::ConstPtr& msg) {
@@ -217,18 +167,13 @@ void ControllerBase::onRanges(const std::string& topic, const UwbRanges::ConstPt
   const double stamp = (msg->header.stamp.isZero() ? now : msg->header.stamp).toSec();
   first_range_.at(topic)(topic);
   const std::lock_guard<std::mutex> lock(safety_mutex_);
-  const std::uint64_t future_before = monitor_.time().futureRefused();
+  const std::uint64_t future_before = pipeline_.monitor().time().futureRefused();
   bool violation = false;
   for (const auto& r : msg->ranges) {
-    if (!common_.target_anchor_id.empty() && normalizeId(r.anchor_id) != common_.target_anchor_id) {
-      continue;
-    }
-    const auto module = common_.calibrated_modules.find(normalizeId(msg->tag_id));
-    const double range =
-        module == common_.calibrated_modules.end() ? r.range : module->second.correctRange(r.range);
-    violation |= monitor_.onRange(stamp, now.toSec(), topic + "/" + msg->tag_id, range);
+    violation |= pipeline_.onRange(stamp, now.toSec(), topic + "/" + msg->tag_id, msg->tag_id,
+                                   r.anchor_id, r.range);
   }
-  const bool future = monitor_.time().futureRefused() != future_before;
+  const bool future = pipeline_.monitor().time().futureRefused() != future_before;
   if (future) {
     ROS_WARN_THROTTLE(2.0, "%s: range on %s stamped %.3f s ahead of this node's clock refused",
                       ros::this_node::getName().c_str(), topic.c_str(), stamp - now.toSec());
@@ -236,15 +181,17 @@ void ControllerBase::onRanges(const std::string& topic, const UwbRanges::ConstPt
   // Do not wait for the next tick: a person stepping in front of the robot must stop
   // it within one range update. The law's own reset (onStopped) follows on the main
   // thread at the next tick, which sees the same verdict.
-  if (violation && monitor_.enabled()) {
+  if (violation && pipeline_.enabled()) {
     publishStopLocked(future ? control::StopReason::kFutureStamp : control::StopReason::kTooClose);
   }
 }
 
 void ControllerBase::onScan(const sensor_msgs::LaserScan::ConstPtr& msg) {
-  sectors_ = control::scanSectors(msg->ranges, msg->angle_min, msg->angle_increment, msg->range_min,
-                                  msg->range_max);
-  scan_stamp_ = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;
+  const control::SectorRanges sectors = control::scanSectors(
+      msg->ranges, msg->angle_min, msg->angle_increment, msg->range_min, msg->range_max);
+  const ros::Time stamp = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;
+  const std::lock_guard<std::mutex> lock(safety_mutex_);
+  pipeline_.onScan(sectors, stamp.toSec());
 }
 
 void ControllerBase::onEnableTopic(const std_msgs::Bool::ConstPtr& msg) {
@@ -262,7 +209,7 @@ bool ControllerBase::onEnableService(std_srvs::SetBool::Request& req,
 void ControllerBase::setEnabled(bool enabled) {
   {
     const std::lock_guard<std::mutex> lock(safety_mutex_);
-    monitor_.setEnabled(enabled);
+    pipeline_.setEnabled(enabled);
   }
   if (!enabled) {
     stopNow(control::StopReason::kDisabled);
@@ -278,9 +225,12 @@ void ControllerBase::stopNow(control::StopReason reason) {
 }
 
 void ControllerBase::publishStopLocked(control::StopReason reason) {
-  limiter_.reset();
-  publishCommand(control::VelocityCommand{});
-  publishStatus(control::stateFor(reason), control::stopText(reason));
+  publishLocked(pipeline_.stop(reason));
+}
+
+void ControllerBase::publishLocked(const control::PipelineResult& result) {
+  publishCommand(result.command);
+  publishStatus(result.state, result.text);
 }
 
 void ControllerBase::onStopCheck(const ros::WallTimerEvent& /*event*/) {
@@ -309,7 +259,7 @@ void ControllerBase::onTick(const ros::TimerEvent& event) {
   control::SafetyDecision decision;
   {
     const std::lock_guard<std::mutex> lock(safety_mutex_);
-    decision = monitor_.evaluate(now.toSec());
+    decision = pipeline_.check(now.toSec());
   }
   if (!decision.may_move) {
     stopNow(decision.reason);
@@ -318,31 +268,19 @@ void ControllerBase::onTick(const ros::TimerEvent& event) {
     return;
   }
 
-  Output out = compute(now, dt);
-  control::VelocityCommand request = out.command;
-  if (common_.use_scan) {
-    const bool scan_fresh = sectors_ && (now - scan_stamp_).toSec() <= common_.scan_timeout;
-    if (scan_fresh) {
-      request = control::avoidObstacles(request, *sectors_, common_.avoidance);
-    } else {
-      // Avoidance was asked for but cannot see: turning in place is the only safe motion.
-      request.linear = 0.0;
-      out.text = "No laser scan, not driving.";
-      ROS_WARN_THROTTLE(5.0, "%s: no laser scan within %.2f s, forward motion blocked",
-                        ros::this_node::getName().c_str(), common_.scan_timeout);
-    }
-  }
+  // The law runs without the lock: a range may stop the robot meanwhile, and the
+  // pipeline takes the verdict again at the time of sending.
+  const Output out = compute(now, dt);
+  bool scan_missing = false;
   {
-    // The law ran without the lock; a range that arrived meanwhile may have stopped the
-    // robot, so the verdict is taken again, at the time of publishing.
     const std::lock_guard<std::mutex> lock(safety_mutex_);
-    decision = monitor_.evaluate(ros::Time::now().toSec());
-    if (decision.may_move) {
-      publishCommand(control::gateCommand(decision, limiter_.update(request, dt)));
-      publishStatus(out.state, out.text.empty() ? control::defaultText(out.state) : out.text);
-    } else {
-      publishStopLocked(decision.reason);
-    }
+    const control::PipelineResult result = pipeline_.finish(out, ros::Time::now().toSec(), dt);
+    scan_missing = result.scan_missing;
+    publishLocked(result);
+  }
+  if (scan_missing) {
+    ROS_WARN_THROTTLE(5.0, "%s: no laser scan within %.2f s, forward motion blocked",
+                      ros::this_node::getName().c_str(), common_.scan_timeout);
   }
   diagnostics_.update();
 }
@@ -381,8 +319,8 @@ void ControllerBase::diagnose(diagnostic_updater::DiagnosticStatusWrapper& statu
   status.add("state", control::toString(state_));
   status.add("cmd_vel topic", cmd_pub_.getTopic());
   status.add("stopped ticks", stopped_ticks_);
-  status.add("stamps from the future refused", monitor_.time().futureRefused());
-  status.add("clock jumps back", monitor_.time().clockJumps());
+  status.add("stamps from the future refused", pipeline_.monitor().time().futureRefused());
+  status.add("clock jumps back", pipeline_.monitor().time().clockJumps());
 }
 
 }  // namespace radio_follow

@@ -114,24 +114,34 @@ void convert(const std::string& name, XmlRpcValue& v, std::vector<double>& out) 
 ParamReader::ParamReader(const ros::NodeHandle& private_nh) : nh_(private_nh) {}
 
 template <typename T>
-void ParamReader::param(const std::string& name, T& out, const T& fallback) const {
+bool ParamReader::readAs(const std::string& name, T& out) const {
   known_.insert(name);
   XmlRpcValue value;
   if (!nh_.getParam(name, value)) {
-    out = fallback;
-    return;
+    return false;
   }
   convert(name, value, out);
+  return true;
 }
 
-template void ParamReader::param(const std::string&, bool&, const bool&) const;
-template void ParamReader::param(const std::string&, int&, const int&) const;
-template void ParamReader::param(const std::string&, double&, const double&) const;
-template void ParamReader::param(const std::string&, std::string&, const std::string&) const;
-template void ParamReader::param(const std::string&, std::vector<std::string>&,
-                                 const std::vector<std::string>&) const;
-template void ParamReader::param(const std::string&, std::vector<double>&,
-                                 const std::vector<double>&) const;
+bool ParamReader::read(const std::string& name, bool& out) const {
+  return readAs(name, out);
+}
+bool ParamReader::read(const std::string& name, int& out) const {
+  return readAs(name, out);
+}
+bool ParamReader::read(const std::string& name, double& out) const {
+  return readAs(name, out);
+}
+bool ParamReader::read(const std::string& name, std::string& out) const {
+  return readAs(name, out);
+}
+bool ParamReader::read(const std::string& name, std::vector<std::string>& out) const {
+  return readAs(name, out);
+}
+bool ParamReader::read(const std::string& name, std::vector<double>& out) const {
+  return readAs(name, out);
+}
 
 bool ParamReader::getRaw(const std::string& name, XmlRpcValue& out) const {
   known_.insert(name);

@@ -18,22 +18,14 @@ namespace radio_follow {
 void PathFollowerNode::Params::load(const ParamReader& pnh) {
   pnh.param("odom_frame", odom_frame, odom_frame);
   pnh.param("base_frame", base_frame, base_frame);
-  pnh.param("path_spacing", path_spacing, path_spacing);
-  pnh.param("max_path_points", max_path_points, max_path_points);
-  pnh.param("lookahead", lookahead, lookahead);
-  pnh.param("reached_radius", reached_radius, reached_radius);
-  pnh.param("turn_gain", turn_gain, turn_gain);
   pnh.param("tf_timeout", tf_timeout, tf_timeout);
+  path.load(pnh);
 }
 
 void PathFollowerNode::Params::validate() const {
   require(!odom_frame.empty(), "~odom_frame", odom_frame, "a frame id");
   require(!base_frame.empty(), "~base_frame", base_frame, "a frame id");
-  require(path_spacing > 0.0, "~path_spacing", path_spacing, "a spacing > 0 in metres");
-  require(max_path_points >= 2, "~max_path_points", max_path_points, "a count >= 2");
-  require(lookahead > 0.0, "~lookahead", lookahead, "a distance > 0 in metres");
-  require(reached_radius > 0.0, "~reached_radius", reached_radius, "a distance > 0 in metres");
-  require(turn_gain > 0.0, "~turn_gain", turn_gain, "a gain > 0 in 1/s");
+  path.validate();
   require(tf_timeout >= 0.0 && tf_timeout < 1.0, "~tf_timeout", tf_timeout,
           "a timeout in [0, 1) seconds");
 }
@@ -41,10 +33,7 @@ void PathFollowerNode::Params::validate() const {
 PathFollowerNode::PathFollowerNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
     : ControllerBase(nh, private_nh, true),
       params_(loadValidated<Params>(params())),
-      law_params_(loadVelocityLawParams(params(), common())),
-      fallback_law_(law_params_),
-      speed_pid_(law_params_.linear),
-      path_(params_.path_spacing, static_cast<std::size_t>(params_.max_path_points)),
+      law_(params_.path, loadVelocityLawParams(params(), common())),
       tf_listener_(tf_buffer_),
       motion_(tf_buffer_, params_.odom_frame, params_.tf_timeout) {
   requireKnownParams();
@@ -53,8 +42,8 @@ PathFollowerNode::PathFollowerNode(ros::NodeHandle& nh, ros::NodeHandle& private
   debugSubscribed(estimate_sub_);
   debugAdvertised(path_pub_);
   law_reconfigure_ = makeFollowLawReconfigure(
-      private_nh, law_params_, [this](const control::VelocityLawParams& p) {
-        applyLaw(lawWithCommon(p, common()));  // against the safety layer as it is now
+      private_nh, law_.lawParams(), [this](const control::VelocityLawParams& p) {
+        law_.setLawParams(lawWithCommon(p, common()));  // against the safety layer as it is now
       });
   start();
 }
@@ -62,19 +51,11 @@ PathFollowerNode::PathFollowerNode(ros::NodeHandle& nh, ros::NodeHandle& private
 PathFollowerNode::~PathFollowerNode() = default;
 
 void PathFollowerNode::onCommonChange(const ControllerCommonParams& next) {
-  applyLaw(lawWithCommon(law_params_, next));  // throws to refuse the change
-}
-
-void PathFollowerNode::applyLaw(const control::VelocityLawParams& p) {
-  law_params_ = p;
-  fallback_law_.setParams(p);
-  speed_pid_.setGains(p.linear);
+  law_.setLawParams(lawWithCommon(law_.lawParams(), next));  // throws to refuse the change
 }
 
 void PathFollowerNode::onStopped() {
-  fallback_law_.reset();
-  speed_pid_.reset();
-  arrived_ = false;
+  law_.reset();
 }
 
 void PathFollowerNode::onEstimate(const TargetEstimate::ConstPtr& msg) {
@@ -92,7 +73,7 @@ void PathFollowerNode::onEstimate(const TargetEstimate::ConstPtr& msg) {
                       msg->header.frame_id.c_str(), motion_.lastError().c_str());
     return;
   }
-  if (path_.add(*point)) {
+  if (law_.addTarget(*point)) {
     publishPath(msg->header.stamp);
   }
 }
@@ -116,7 +97,7 @@ void PathFollowerNode::publishPath(const ros::Time& stamp) {
   nav_msgs::Path msg;
   msg.header.stamp = stamp;
   msg.header.frame_id = params_.odom_frame;
-  for (const auto& p : path_.points()) {
+  for (const auto& p : law_.path().points()) {
     geometry_msgs::PoseStamped pose;
     pose.header = msg.header;
     pose.pose.position.x = p.x();
@@ -128,57 +109,12 @@ void PathFollowerNode::publishPath(const ros::Time& stamp) {
 }
 
 ControllerBase::Output PathFollowerNode::compute(const ros::Time& now, double dt) {
-  Output out;
-  const bool heading_only = estimate_->status == TargetEstimate::STATUS_HEADING_ONLY;
   const std::optional<control::Pose2> robot = path_mode_ ? robotPose() : std::nullopt;
-  if (!robot || path_.empty() || heading_only) {
-    // Without self-localisation no path can be stored: drive straight at the target.
-    out.command = fallback_law_.update(targetPolar(*estimate_, std::nullopt, moduleGap(now)), dt);
-    if (heading_only) {
-      out.text = "Direction only, turning to the target.";
-    } else if (fallback_law_.arrived()) {
-      out.state = control::FollowerState::kArrived;
-      out.text = "At follow distance, waiting.";
-    } else {
-      out.text = "No odometry, driving straight to the target.";
-    }
-    return out;
-  }
-
-  const std::size_t before = path_.points().size();
-  path_.prune(robot->position(), params_.reached_radius);
-  if (path_.points().size() != before) {
-    publishPath(now);
-  }
-  const control::PursuitTarget goal =
-      control::purePursuit(path_.points(), *robot, params_.lookahead);
-  // A path built from noisy estimates zig-zags and is longer than the walk; the straight
-  // range is never longer than the walk. The smaller of the two keeps the robot from
-  // closing in on a person who has stopped because their path looked long.
-  const double along = path_.lengthFrom(robot->position());
-  const double gap = control::governingGap(
-      std::min(along, estimate_->range) - law_params_.follow_distance, moduleGap(now), law_params_);
-  const double alpha = std::atan2(goal.local.y(), goal.local.x());
-  // The person walks the path ahead: the feed-forward is their whole ground speed.
-  const double walking_speed = motion_.speed(now).value_or(0.0);
-  double speed = control::gapSpeed(gap, walking_speed, dt, speed_pid_, law_params_);
-  speed *= std::max(0.0, std::cos(alpha));
-  if (estimate_->status == TargetEstimate::STATUS_DEGRADED) {
-    speed *= law_params_.degraded_speed_factor;
-  }
-  out.command.linear = speed;
-  // Pure pursuit steers along the arc; a goal behind the robot (after it stopped and the
-  // person walked around it) needs turning in place first.
-  out.command.angular =
-      std::abs(alpha) > 0.5 * M_PI ? params_.turn_gain * alpha : speed * goal.curvature;
-  arrived_ = control::updateArrived(arrived_, gap, walking_speed);
-  if (arrived_) {
-    out.state = control::FollowerState::kArrived;
-    out.text = "At follow distance, waiting.";
-  } else if (estimate_->status == TargetEstimate::STATUS_DEGRADED) {
-    out.text = "Following the path slowly, the position is uncertain.";
-  } else {
-    out.text = "Following the path.";
+  const std::size_t before = law_.path().points().size();
+  Output out = law_.step(targetPolar(*estimate_, std::nullopt, moduleGap(now)), robot,
+                         motion_.speed(now), dt);
+  if (law_.path().points().size() != before) {
+    publishPath(now);  // the robot passed some points
   }
   return out;
 }

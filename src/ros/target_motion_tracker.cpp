@@ -39,11 +39,11 @@ std::optional<Eigen::Vector2d> TargetMotionTracker::add(const TargetEstimate& es
     }
     geometry_msgs::Point target;
     tf2::doTransform(estimate.position, target, t);
-    robot_ = {t.transform.translation.x, t.transform.translation.y};
-    target_ = {target.x, target.y};
-    motion_.add(estimate.header.stamp.toSec(), target_);
+    const Eigen::Vector2d in_odom(target.x, target.y);
+    track_.add(estimate.header.stamp.toSec(),
+               Eigen::Vector2d(t.transform.translation.x, t.transform.translation.y), in_odom);
     last_error_.clear();
-    return target_;
+    return in_odom;
   } catch (const tf2::TransformException& e) {
     last_error_ = e.what();
     return std::nullopt;
@@ -51,20 +51,11 @@ std::optional<Eigen::Vector2d> TargetMotionTracker::add(const TargetEstimate& es
 }
 
 std::optional<double> TargetMotionTracker::speed(const ros::Time& now) const {
-  const std::optional<Eigen::Vector2d> v = motion_.velocity(now.toSec());
-  if (!v) {
-    return std::nullopt;
-  }
-  return v->norm();
+  return track_.speed(now.toSec());
 }
 
 std::optional<double> TargetMotionTracker::recedingSpeed(const ros::Time& now) const {
-  const std::optional<Eigen::Vector2d> v = motion_.velocity(now.toSec());
-  const Eigen::Vector2d line = target_ - robot_;
-  if (!v || !(line.norm() > 1e-6)) {
-    return std::nullopt;
-  }
-  return v->dot(line.normalized());
+  return track_.recedingSpeed(now.toSec());
 }
 
 }  // namespace radio_follow

@@ -9,35 +9,6 @@
 
 namespace radio_follow {
 
-control::VelocityLawParams loadVelocityLawParams(const ParamReader& pnh,
-                                                 const ControllerCommonParams& common) {
-  control::VelocityLawParams p;
-  pnh.param("follow_distance", p.follow_distance, p.follow_distance);
-  pnh.param("slowdown_distance", p.slowdown_distance, p.slowdown_distance);
-  pnh.param("closing_distance", p.closing_distance, p.closing_distance);
-  pnh.param("stop_margin", p.stop_margin, p.stop_margin);
-  pnh.param("feed_forward", p.feed_forward, p.feed_forward);
-  pnh.param("degraded_speed_factor", p.degraded_speed_factor, p.degraded_speed_factor);
-  pnh.param("allow_backwards", p.allow_backwards, p.allow_backwards);
-  double backwards_deg = rad2deg(p.backwards_angle);
-  pnh.param("backwards_angle_deg", backwards_deg, backwards_deg);
-  p.backwards_angle = deg2rad(backwards_deg);
-  pnh.param("backwards_cycles", p.backwards_cycles, p.backwards_cycles);
-  loadPidGains(pnh, "linear_pid", p.linear);
-  loadPidGains(pnh, "angular_pid", p.angular);
-  return lawWithCommon(p, common);
-}
-
-control::VelocityLawParams lawWithCommon(control::VelocityLawParams law,
-                                         const ControllerCommonParams& common) {
-  law.max_linear = common.limits.max_linear;
-  law.safe_distance = common.safety.safe_distance;
-  law.linear.output_limit = common.limits.max_linear;
-  law.angular.output_limit = common.limits.max_angular;
-  law.validate();
-  return law;
-}
-
 control::TargetPolar targetPolar(const TargetEstimate& estimate,
                                  std::optional<double> receding_speed, double module_gap) {
   control::TargetPolar t;
@@ -98,23 +69,9 @@ void VelocityControllerNode::onEstimate(const TargetEstimate::ConstPtr& msg) {
 }
 
 ControllerBase::Output VelocityControllerNode::compute(const ros::Time& now, double dt) {
-  Output out;
   const std::optional<double> receding =
       params_.odom_frame.empty() ? std::nullopt : motion_.recedingSpeed(now);
-  out.command = law_.update(targetPolar(*estimate_, receding, moduleGap(now)), dt);
-  if (estimate_->status == TargetEstimate::STATUS_HEADING_ONLY) {
-    out.text = "Direction only, turning to the target.";
-  } else if (law_.arrived()) {
-    out.state = control::FollowerState::kArrived;
-    out.text = "At follow distance, waiting.";
-  } else if (estimate_->status == TargetEstimate::STATUS_DEGRADED) {
-    out.text = law_.driving_backwards()
-                   ? "Following backwards slowly, the position is uncertain."
-                   : "Following slowly, the position is uncertain.";
-  } else {
-    out.text = law_.driving_backwards() ? "Following backwards." : "Following.";
-  }
-  return out;
+  return law_.step(targetPolar(*estimate_, receding, moduleGap(now)), dt);
 }
 
 }  // namespace radio_follow

@@ -17,7 +17,7 @@
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/ros/locator_node.hpp"
 #include "radio_follow/ros/locator_replay.hpp"
-#include "radio_follow/ros/yaml_params.hpp"
+#include "radio_follow/common/yaml_params.hpp"
 
 namespace rf = radio_follow;
 

@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <string>
 
+#include "radio_follow/control/rate_limiter.hpp"
+
 namespace radio_follow {
 namespace control {
 
@@ -68,6 +70,13 @@ class StatusTracker {
   bool has_last_ = false;
   FollowerState last_state_ = FollowerState::kDisabled;
   std::string last_text_;
+};
+
+/// What a control law wants this tick.
+struct LawOutput {
+  VelocityCommand command;
+  FollowerState state = FollowerState::kFollowing;
+  std::string text;  ///< empty: defaultText(state)
 };
 
 }  // namespace control

@@ -43,5 +43,28 @@ class TargetMotion {
   std::deque<Sample> samples_;
 };
 
+/// The target as the speed feed-forward needs it: its positions placed in the odometry
+/// frame (with the robot's pose at each estimate's stamp), its ground speed and its speed
+/// away from the robot along the line of sight.
+class TargetTrack {
+ public:
+  TargetTrack() = default;
+  explicit TargetTrack(const TargetMotion::Config& config) : motion_(config) {}
+
+  /// The target at `target` and the robot at `robot` (odometry frame, m) at time t (s).
+  void add(double t, const Eigen::Vector2d& robot, const Eigen::Vector2d& target);
+  /// Ground speed, m/s; nullopt while TargetMotion has no velocity.
+  std::optional<double> speed(double now) const;
+  /// Ground velocity along the line robot -> target at the newest estimate, m/s
+  /// (negative: walking towards the robot).
+  std::optional<double> recedingSpeed(double now) const;
+  void reset() { motion_.reset(); }
+
+ private:
+  TargetMotion motion_;
+  Eigen::Vector2d robot_ = Eigen::Vector2d::Zero();
+  Eigen::Vector2d target_ = Eigen::Vector2d::Zero();
+};
+
 }  // namespace control
 }  // namespace radio_follow

@@ -4,6 +4,8 @@
 #include <limits>
 #include <string>
 
+#include "radio_follow/common/param_source.hpp"
+#include "radio_follow/control/follower_state.hpp"
 #include "radio_follow/control/pid.hpp"
 #include "radio_follow/control/rate_limiter.hpp"
 
@@ -77,6 +79,9 @@ class VelocityLaw {
   explicit VelocityLaw(const VelocityLawParams& params);
 
   VelocityCommand update(const TargetPolar& target, double dt);
+  /// update() with the state and status text the controller reports: turning to a
+  /// direction-only target, arrived, following (slowly when degraded, backwards).
+  LawOutput step(const TargetPolar& target, double dt);
   /// New parameters (live tuning; validated by the caller): the PIDs keep their state.
   void setParams(const VelocityLawParams& params);
   const VelocityLawParams& params() const { return params_; }
@@ -128,6 +133,17 @@ double governingGap(double gap, double module_gap, const VelocityLawParams& para
 /// within [0, slowdownCap()]. Shared by the velocity law and the path follower.
 double gapSpeed(double gap, double target_speed, double dt, Pid& pid,
                 const VelocityLawParams& params);
+
+struct CommandPipelineParams;
+
+/// The follow law's parameters from their names (doc/nodes/velocity_controller.md:
+/// follow_distance, ..., linear_pid/*, angular_pid/*), with the speed cap and stop
+/// distance taken from the pipeline's (lawWithCommon). Throws ParamError.
+VelocityLawParams loadVelocityLawParams(const ParamSource& source,
+                                        const CommandPipelineParams& common);
+/// `law` with max_linear, safe_distance and the PIDs' output limits from `common`,
+/// validated (throws ParamError): the law must stop before the safety stop trips.
+VelocityLawParams lawWithCommon(VelocityLawParams law, const CommandPipelineParams& common);
 
 }  // namespace control
 }  // namespace radio_follow

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "radio_follow/common/param_source.hpp"
 #include "radio_follow/common/time_policy.hpp"
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/estimation/aoa_selector.hpp"
@@ -75,6 +76,9 @@ struct LocatorConfig {
   /// AMBIGUOUS until a few epochs in a row have preferred one side by more. 0 disables.
   double ambiguity_margin = 2.0;
 
+  /// Reads the fields from their parameters (the locator node's names, e.g. `range_sigma`,
+  /// `azimuth_sigma_deg`, `measurement_covariance`); absent keys keep their value.
+  void load(const ParamSource& source);
   /// Throws ParamError naming the first invalid field (names match the ROS parameters).
   void validate() const;
 };

@@ -17,11 +17,8 @@
 
 #include "radio_follow/UwbRanges.h"
 #include "radio_follow/config/layout.hpp"
+#include "radio_follow/control/command_pipeline.hpp"
 #include "radio_follow/control/follower_state.hpp"
-#include "radio_follow/control/obstacle_avoidance.hpp"
-#include "radio_follow/control/pid.hpp"
-#include "radio_follow/control/rate_limiter.hpp"
-#include "radio_follow/control/safety_monitor.hpp"
 #include "radio_follow/ros/output_diagnostic.hpp"
 #include "radio_follow/ros/params.hpp"
 #include "radio_follow/ros/wiring_debug.hpp"
@@ -36,11 +33,9 @@ class ControllerTuningConfig;
 /// worth so that a burst after a reconnect is not dropped before the stop sees it.
 constexpr std::uint32_t kRangeQueueSize = 100;
 
-/// Largest change a module's calibration may make to a range at safe_distance, m.
-constexpr double kMaxSafetyCalibrationShift = 0.3;
-
-/// Parameters every controller shares (doc/nodes/velocity_controller.md lists them).
-struct ControllerCommonParams {
+/// Parameters every controller shares (doc/nodes/velocity_controller.md lists them): the
+/// command pipeline's (safety stop, scan gate, limits) and the node's wiring.
+struct ControllerCommonParams : control::CommandPipelineParams {
   std::string cmd_vel_topic = "cmd_vel";
   double rate = 20.0;  ///< Hz
   bool start_enabled = false;
@@ -49,32 +44,17 @@ struct ControllerCommonParams {
   std::string layout_file;
   /// UwbRanges topics whose raw ranges feed the safety stop.
   std::vector<std::string> range_topics{"uwb_ranges"};
-  /// Anchor carried by the target; empty = every anchor counts.
-  std::string target_anchor_id;
-  /// Apply each module's range calibration from the layout to its raw ranges before the
-  /// safe_distance check (a sensor correction; the estimator is still not involved).
-  bool calibrate_ranges = true;
-  /// Range calibration per module ID (upper case), from the layout when calibrate_ranges.
-  /// Ranges of a module not listed are compared raw.
-  std::map<std::string, TwrModule> calibrated_modules;
-  bool use_scan = false;
-  double scan_timeout = 0.5;  ///< s
-  control::SafetyParams safety;
-  control::MotionLimits limits;
-  control::AvoidanceParams avoidance;
 
   void load(const ParamReader& private_nh);
   void validate() const;
 };
 
-/// Reads `<ns>/kp`, `ki`, `kd`, `integral_limit`, `derivative_time_constant` into `gains`
-/// (the output limit is set by the node from its speed limits).
-void loadPidGains(const ParamReader& private_nh, const std::string& ns, control::PidGains& gains);
+using control::loadPidGains;
 
-/// The safety layer and plumbing shared by the three controllers: raw-range safety stop
-/// (published from the range callback, not only at the next tick), enable service and
-/// topic, status on change, optional laser-scan avoidance, rate and acceleration
-/// limits, cmd_vel at a fixed rate, and a last zero command on SIGINT/SIGTERM.
+/// The ROS side of the command pipeline (control::CommandPipeline) shared by the three
+/// controllers: raw-range safety stop on its own thread (published from the range
+/// callback, not only at the next tick), enable service and topic, status on change, the
+/// laser scan, cmd_vel at a fixed rate, and a last zero command on SIGINT/SIGTERM.
 ///
 /// A derived node loads and validates its own parameters, creates its subscribers and
 /// then calls start(); the base calls compute() on every tick in which the safety
@@ -87,11 +67,7 @@ class ControllerBase {
 
  protected:
   /// What the control law wants this tick.
-  struct Output {
-    control::VelocityCommand command;
-    control::FollowerState state = control::FollowerState::kFollowing;
-    std::string text;
-  };
+  using Output = control::LawOutput;
 
   /// Loads and validates the common parameters (throws ParamError); subscribes nothing.
   /// `watch_ranges_default` decides whether ranges are watched when ~range_topics is unset.
@@ -142,25 +118,24 @@ class ControllerBase {
   void stopNow(control::StopReason reason);
   /// Any thread, safety_mutex_ held: zero command and status, limiter reset.
   void publishStopLocked(control::StopReason reason);
+  /// safety_mutex_ held: sends what the pipeline decided.
+  void publishLocked(const control::PipelineResult& result);
   void publishCommand(const control::VelocityCommand& cmd);
   void publishStatus(control::FollowerState state, const std::string& text);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
 
   ParamReader params_in_;
   /// Guards what the safety thread (range callbacks) and the main thread share: the
-  /// monitor, the limiter, the published state, common_ during live tuning.
+  /// pipeline, the published state, common_ during live tuning.
   mutable std::mutex safety_mutex_;
   ros::CallbackQueue safety_queue_;
   std::unique_ptr<ros::AsyncSpinner> safety_spinner_;
   bool params_checked_ = false;
   ControllerCommonParams common_;
-  control::SafetyMonitor monitor_;
-  control::CommandLimiter limiter_;
+  control::CommandPipeline pipeline_;
   control::StatusTracker status_tracker_;
   control::FollowerState state_ = control::FollowerState::kDisabled;
   std::string status_text_;
-  std::optional<control::SectorRanges> sectors_;
-  ros::Time scan_stamp_;
   unsigned long stopped_ticks_ = 0;
 
   std::vector<ros::Subscriber> range_subs_;

@@ -47,11 +47,10 @@ class LocatorNode {
     int path_length = 200;
     LocatorConfig locator;  ///< the core's tuning
 
-    /// Reads every parameter from the private node handle (names in doc/nodes/locator.md).
-    /// Reads the private parameters from `source`: a ros::NodeHandle, or a YamlParams
-    /// (a parameter file, for tools without a master) - the same keys either way.
-    template <typename Source>
-    void load(const Source& source);
+    /// Reads the private parameters from `source`: the node's namespace (ParamReader) or
+    /// a YamlParams (a parameter file, for tools without a master), the same keys either
+    /// way (doc/nodes/locator.md).
+    void load(const ParamSource& source);
     /// Throws ParamError naming the first invalid parameter.
     void validate() const;
   };

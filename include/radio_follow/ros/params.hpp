@@ -7,46 +7,49 @@
 #include <string>
 #include <vector>
 
+#include "radio_follow/common/param_source.hpp"
+
 namespace radio_follow {
 
 /// The one way a node reads its private parameters (doc/configuration.md, "Strict
-/// parameters"). Unlike ros::NodeHandle::param, which silently keeps the default when a
-/// value has the wrong type, every read is strict:
+/// parameters"): a ParamSource on the ROS parameter server. Unlike
+/// ros::NodeHandle::param, which silently keeps the default when a value has the wrong
+/// type, every read is strict:
 /// - a value of the wrong type (`_safe_distance:=abc`, a string where a list is expected)
 ///   or a non-finite number throws ParamError naming the parameter, value and type;
 /// - an int is accepted where a double is expected (`_safe_distance:=2`), nothing else;
 /// - every name read is remembered, so that requireAllKnown() can refuse the keys nobody
 ///   read (`_safe_distanse:=2.0`, a file meant for another node).
-/// It has ros::NodeHandle::param()'s shape, so the same loading code can run on a
-/// YamlParams (tools without a master).
-class ParamReader {
+/// The same loading code runs on a YamlParams (tools without a master).
+class ParamReader : public ParamSource {
  public:
   explicit ParamReader(const ros::NodeHandle& private_nh);
-
-  /// `out` = the value of `name` (relative to the private namespace), or `fallback` when
-  /// the parameter is not set. Supported: bool, int, double, std::string,
-  /// std::vector<std::string>, std::vector<double>.
-  template <typename T>
-  void param(const std::string& name, T& out, const T& fallback) const;
 
   /// Raw access for structured values (lists of mappings); marks `name` as known.
   /// Returns false when the parameter is not set.
   bool getRaw(const std::string& name, XmlRpc::XmlRpcValue& out) const;
-
   /// Keys below `ns` belong to another component (a dynamic_reconfigure server's
   /// namespace, which it rewrites itself) and are never reported as unknown.
   void own(const std::string& ns) const;
-  /// Marks `name` as known without reading it (a key another component reads).
-  void allow(const std::string& name) const;
-
+  void allow(const std::string& name) const override;
   /// Throws ParamError for the first parameter in the private namespace that no load
   /// function read: call it once every parameter struct of the node has been loaded,
   /// before any subscriber exists.
-  void requireAllKnown() const;
+  void requireAllKnown() const override;
 
   const ros::NodeHandle& handle() const { return nh_; }
 
+ protected:
+  bool read(const std::string& name, bool& out) const override;
+  bool read(const std::string& name, int& out) const override;
+  bool read(const std::string& name, double& out) const override;
+  bool read(const std::string& name, std::string& out) const override;
+  bool read(const std::string& name, std::vector<std::string>& out) const override;
+  bool read(const std::string& name, std::vector<double>& out) const override;
+
  private:
+  template <typename T>
+  bool readAs(const std::string& name, T& out) const;
   std::string relative(const std::string& resolved) const;
 
   ros::NodeHandle nh_;

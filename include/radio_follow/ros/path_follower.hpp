@@ -12,7 +12,6 @@
 
 #include "radio_follow/TargetEstimate.h"
 #include "radio_follow/control/path_follower.hpp"
-#include "radio_follow/control/pid.hpp"
 #include "radio_follow/control/velocity_law.hpp"
 #include "radio_follow/ros/controller_base.hpp"
 #include "radio_follow/ros/params.hpp"
@@ -27,15 +26,12 @@ class FollowLawTuningConfig;
 /// the odometry transform it drives straight to the target and says so.
 class PathFollowerNode : public ControllerBase {
  public:
+  /// The node's frames and TF tolerance; the law's own parameters are `path`.
   struct Params {
     std::string odom_frame = "odom";
     std::string base_frame = "base_link";
-    double path_spacing = 0.1;  ///< m
-    int max_path_points = 2000;
-    double lookahead = 1.5;       ///< m (shorter chases the noise of a path built from estimates)
-    double reached_radius = 0.3;  ///< m
-    double turn_gain = 1.5;       ///< 1/s, turning in place towards a goal behind
-    double tf_timeout = 0.05;     ///< s
+    double tf_timeout = 0.05;  ///< s
+    control::PathFollowParams path;
 
     void load(const ParamReader& private_nh);
     void validate() const;
@@ -48,18 +44,12 @@ class PathFollowerNode : public ControllerBase {
   Output compute(const ros::Time& now, double dt) override;
   void onStopped() override;
   void onCommonChange(const ControllerCommonParams& next) override;
-  /// Installs validated law parameters in the fallback law and the path speed PID.
-  void applyLaw(const control::VelocityLawParams& p);
   void onEstimate(const TargetEstimate::ConstPtr& msg);
   std::optional<control::Pose2> robotPose();
   void publishPath(const ros::Time& stamp);
 
   Params params_;
-  control::VelocityLawParams law_params_;
-  control::VelocityLaw fallback_law_;
-  control::Pid speed_pid_;
-  control::PathBuffer path_;
-  bool arrived_ = false;  ///< for the status only (with hysteresis)
+  control::PathFollowLaw law_;
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;
   TargetMotionTracker motion_;

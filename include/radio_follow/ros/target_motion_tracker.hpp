@@ -32,7 +32,7 @@ class TargetMotionTracker {
   /// to the target: positive when the target walks away, m/s.
   std::optional<double> recedingSpeed(const ros::Time& now) const;
 
-  void reset() { motion_.reset(); }
+  void reset() { track_.reset(); }
   const std::string& lastError() const { return last_error_; }
   const std::string& odomFrame() const { return odom_frame_; }
 
@@ -40,9 +40,7 @@ class TargetMotionTracker {
   const tf2_ros::Buffer& buffer_;
   std::string odom_frame_;
   ros::Duration tf_timeout_;
-  control::TargetMotion motion_;
-  Eigen::Vector2d robot_ = Eigen::Vector2d::Zero();   ///< odometry frame, last estimate
-  Eigen::Vector2d target_ = Eigen::Vector2d::Zero();  ///< odometry frame, last estimate
+  control::TargetTrack track_;
   std::string last_error_;
 };
 

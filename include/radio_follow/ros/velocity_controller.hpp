@@ -19,16 +19,10 @@ namespace radio_follow {
 
 class FollowLawTuningConfig;
 
-/// Loads the velocity law's parameters (shared by velocity_controller and the
-/// path_follower's straight-line fallback); speed limits come from `common`.
-control::VelocityLawParams loadVelocityLawParams(const ParamReader& private_nh,
-                                                 const ControllerCommonParams& common);
-
-/// `law` with the safety layer's values it depends on (safe_distance, the speed limits as
-/// the PIDs' output limits), validated: throws ParamError when the law no longer clears
-/// the stop. The one check at start, in live tuning of the law and of the common values.
-control::VelocityLawParams lawWithCommon(control::VelocityLawParams law,
-                                         const ControllerCommonParams& common);
+// The law's parameter loading and its tie to the safety layer live in the core
+// (control/velocity_law.hpp), so that the lockstep closed loop loads the same keys.
+using control::lawWithCommon;
+using control::loadVelocityLawParams;
 
 /// Converts an estimate into the law's input (HEADING_ONLY -> no range, DEGRADED flag,
 /// the target's receding speed when known, the nearest module's gap to the stop:

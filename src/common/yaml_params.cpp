@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "radio_follow/ros/yaml_params.hpp"
+#include "radio_follow/common/yaml_params.hpp"
 
+#include <cmath>
+#include <type_traits>
+
+#include "radio_follow/common/param_error.hpp"
 #include "radio_follow/common/param_keys.hpp"
 
 namespace radio_follow {
@@ -47,6 +51,48 @@ YamlParams YamlParams::fromFile(const std::string& path) {
     throw ParamError("parameter file", "'" + path + "'", "a YAML mapping of parameters");
   }
   return YamlParams(root.IsNull() ? YAML::Node(YAML::NodeType::Map) : root);
+}
+
+template <typename T>
+bool YamlParams::readAs(const std::string& name, T& out) const {
+  known_.insert(name);
+  const YAML::Node value = lookup(name);
+  if (!value.IsDefined() || value.IsNull()) {
+    return false;
+  }
+  try {
+    out = value.as<T>();
+  } catch (const YAML::Exception&) {
+    throw ParamError("~" + name, YAML::Dump(value), "a value of the parameter's type");
+  }
+  if constexpr (std::is_floating_point_v<T>) {
+    require(std::isfinite(out), "~" + name, out, "a finite number");
+  }
+  if constexpr (std::is_same_v<T, std::vector<double>>) {
+    for (const double v : out) {
+      require(std::isfinite(v), "~" + name, v, "a list of finite numbers");
+    }
+  }
+  return true;
+}
+
+bool YamlParams::read(const std::string& name, bool& out) const {
+  return readAs(name, out);
+}
+bool YamlParams::read(const std::string& name, int& out) const {
+  return readAs(name, out);
+}
+bool YamlParams::read(const std::string& name, double& out) const {
+  return readAs(name, out);
+}
+bool YamlParams::read(const std::string& name, std::string& out) const {
+  return readAs(name, out);
+}
+bool YamlParams::read(const std::string& name, std::vector<std::string>& out) const {
+  return readAs(name, out);
+}
+bool YamlParams::read(const std::string& name, std::vector<double>& out) const {
+  return readAs(name, out);
 }
 
 YAML::Node YamlParams::lookup(const std::string& name) const {
