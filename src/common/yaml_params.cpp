@@ -37,7 +37,27 @@ YAML::Node child(const YAML::Node& node, const std::string& name, std::size_t st
   return child(next, name, slash + 1);
 }
 
+/// `over`'s keys into `base` (recursively for mappings), as a second `rosparam load`.
+void mergeInto(YAML::Node base, const YAML::Node& over) {
+  for (const auto& kv : over) {
+    const std::string key = kv.first.as<std::string>();
+    if (kv.second.IsMap() && base[key].IsMap()) {
+      mergeInto(base[key], kv.second);
+    } else {
+      base[key] = YAML::Clone(kv.second);
+    }
+  }
+}
+
 }  // namespace
+
+YamlParams YamlParams::fromFiles(const std::vector<std::string>& paths) {
+  YAML::Node merged(YAML::NodeType::Map);
+  for (const std::string& path : paths) {
+    mergeInto(merged, fromFile(path).root());
+  }
+  return YamlParams(merged);
+}
 
 YamlParams YamlParams::fromFile(const std::string& path) {
   YAML::Node root;

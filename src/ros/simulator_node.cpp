@@ -141,7 +141,7 @@ void SimulatorNode::onTick(const ros::WallTimerEvent&) {
     publish(events);
   }
   if (scan_pub_ && world_->time() >= next_scan_) {
-    next_scan_ = world_->time() + 1.0 / params_.scan_rate;
+    next_scan_ = world_->time() + 1.0 / params_.scan.rate;
     publishScan(now);
   }
 }
@@ -162,7 +162,7 @@ void SimulatorNode::publishScan(const ros::Time& stamp) {
   scan.angle_max = static_cast<float>(params_.scan.angle_max);
   scan.angle_increment = static_cast<float>((params_.scan.angle_max - params_.scan.angle_min) /
                                             (params_.scan.beams - 1));
-  scan.scan_time = static_cast<float>(1.0 / params_.scan_rate);
+  scan.scan_time = static_cast<float>(1.0 / params_.scan.rate);
   scan.range_min = static_cast<float>(params_.scan.range_min);
   scan.range_max = static_cast<float>(params_.scan.range_max);
   std::normal_distribution<double> noise(0.0, params_.scan.sigma);

@@ -108,8 +108,6 @@ void SimulatorNode::Params::validate() const {
           "no faults unless ~output is 'serial'");
   world.validate();
   scan.validate();
-  require(std::isfinite(scan_rate) && scan_rate > 0.0 && scan_rate <= 100.0, "~scan/rate",
-          scan_rate, "a rate in (0, 100] Hz");
 }
 
 SimulatorNode::Params loadSimulatorParams(const ParamReader& pnh) {
@@ -123,42 +121,13 @@ SimulatorNode::Params loadSimulatorParams(const ParamReader& pnh) {
   pnh.param("shutdown_on_finish", p.shutdown_on_finish, p.shutdown_on_finish);
   pnh.param("odom_frame", p.odom_frame, p.odom_frame);
   sim::WorldConfig& w = p.world;
-  pnh.param("robot/max_linear", w.robot.max_linear, w.robot.max_linear);
-  pnh.param("robot/max_angular", w.robot.max_angular, w.robot.max_angular);
-  pnh.param("robot/max_linear_accel", w.robot.max_linear_accel, w.robot.max_linear_accel);
-  pnh.param("robot/max_linear_decel", w.robot.max_linear_decel, w.robot.max_linear_decel);
-  pnh.param("robot/max_angular_accel", w.robot.max_angular_accel, w.robot.max_angular_accel);
-  pnh.param("twr_rate", w.rates.twr_hz, w.rates.twr_hz);
-  pnh.param("aoa_rate", w.rates.aoa_hz, w.rates.aoa_hz);
-  pnh.param("tdoa_rate", w.rates.tdoa_hz, w.rates.tdoa_hz);
-  pnh.param("twr_table_bias", w.twr.use_table_bias, w.twr.use_table_bias);
-  pnh.param("twr_sigma_scale", w.twr.sigma_scale, w.twr.sigma_scale);
-  pnh.param("twr_dropout", w.twr.dropout_probability, w.twr.dropout_probability);
-  pnh.param("aoa_table_bias", w.aoa.use_table_bias, w.aoa.use_table_bias);
-  pnh.param("aoa_sigma_scale", w.aoa.sigma_scale, w.aoa.sigma_scale);
-  pnh.param("aoa_dropout", w.aoa.dropout_probability, w.aoa.dropout_probability);
-  pnh.param("aoa_max_range", w.aoa.max_range, w.aoa.max_range);
-  pnh.param("tdoa_sigma", w.tdoa_sigma, w.tdoa_sigma);
-  int reference = 0;
-  pnh.param("tdoa_reference", reference, reference);
-  require(reference >= 0, "~tdoa_reference", reference, "an anchor index >= 0");
-  w.tdoa_reference = static_cast<std::size_t>(reference);
+  w.load(pnh);
   w.seed = static_cast<std::uint64_t>(std::max(0, p.seed));
   w.twr.occlusions = loadOcclusions(pnh);
   pnh.param("output", p.output, p.output);
   pnh.param("serial_dir", p.serial_dir, p.serial_dir);
   p.unplug = loadUnplugFaults(pnh);
-  pnh.param("scan/rate", p.scan_rate, p.scan_rate);
-  double angle_min_deg = rad2deg(p.scan.angle_min);
-  double angle_max_deg = rad2deg(p.scan.angle_max);
-  pnh.param("scan/angle_min_deg", angle_min_deg, angle_min_deg);
-  pnh.param("scan/angle_max_deg", angle_max_deg, angle_max_deg);
-  p.scan.angle_min = deg2rad(angle_min_deg);
-  p.scan.angle_max = deg2rad(angle_max_deg);
-  pnh.param("scan/beams", p.scan.beams, p.scan.beams);
-  pnh.param("scan/range_min", p.scan.range_min, p.scan.range_min);
-  pnh.param("scan/range_max", p.scan.range_max, p.scan.range_max);
-  pnh.param("scan/sigma", p.scan.sigma, p.scan.sigma);
+  p.scan.load(pnh);
   p.validate();
   return p;
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
 
 namespace radio_follow {
@@ -49,7 +50,23 @@ double hitWall(double ox, double oy, double dx, double dy, const WallObstacle& w
 
 }  // namespace
 
+void ScanConfig::load(const ParamSource& p) {
+  p.param("scan/rate", rate, rate);
+  double angle_min_deg = rad2deg(angle_min);
+  double angle_max_deg = rad2deg(angle_max);
+  p.param("scan/angle_min_deg", angle_min_deg, angle_min_deg);
+  p.param("scan/angle_max_deg", angle_max_deg, angle_max_deg);
+  angle_min = deg2rad(angle_min_deg);
+  angle_max = deg2rad(angle_max_deg);
+  p.param("scan/beams", beams, beams);
+  p.param("scan/range_min", range_min, range_min);
+  p.param("scan/range_max", range_max, range_max);
+  p.param("scan/sigma", sigma, sigma);
+}
+
 void ScanConfig::validate() const {
+  require(std::isfinite(rate) && rate > 0.0 && rate <= 100.0, "~scan/rate", rate,
+          "a rate in (0, 100] Hz");
   require(std::isfinite(angle_min) && std::isfinite(angle_max) && angle_min < angle_max,
           "scan.angle_min", angle_min, "angle_min < angle_max, radians");
   require(beams >= 2 && beams <= 100000, "scan.beams", beams, "a beam count in [2, 100000]");

@@ -19,6 +19,29 @@ double uniform(Rng& rng, double hi) {
 
 }  // namespace
 
+void WorldConfig::load(const ParamSource& p) {
+  p.param("robot/max_linear", robot.max_linear, robot.max_linear);
+  p.param("robot/max_angular", robot.max_angular, robot.max_angular);
+  p.param("robot/max_linear_accel", robot.max_linear_accel, robot.max_linear_accel);
+  p.param("robot/max_linear_decel", robot.max_linear_decel, robot.max_linear_decel);
+  p.param("robot/max_angular_accel", robot.max_angular_accel, robot.max_angular_accel);
+  p.param("twr_rate", rates.twr_hz, rates.twr_hz);
+  p.param("aoa_rate", rates.aoa_hz, rates.aoa_hz);
+  p.param("tdoa_rate", rates.tdoa_hz, rates.tdoa_hz);
+  p.param("twr_table_bias", twr.use_table_bias, twr.use_table_bias);
+  p.param("twr_sigma_scale", twr.sigma_scale, twr.sigma_scale);
+  p.param("twr_dropout", twr.dropout_probability, twr.dropout_probability);
+  p.param("aoa_table_bias", aoa.use_table_bias, aoa.use_table_bias);
+  p.param("aoa_sigma_scale", aoa.sigma_scale, aoa.sigma_scale);
+  p.param("aoa_dropout", aoa.dropout_probability, aoa.dropout_probability);
+  p.param("aoa_max_range", aoa.max_range, aoa.max_range);
+  p.param("tdoa_sigma", tdoa_sigma, tdoa_sigma);
+  int reference = static_cast<int>(tdoa_reference);
+  p.param("tdoa_reference", reference, reference);
+  require(reference >= 0, "~tdoa_reference", reference, "an anchor index >= 0");
+  tdoa_reference = static_cast<std::size_t>(reference);
+}
+
 void WorldConfig::validate() const {
   robot.validate();
   require(rateOk(rates.twr_hz), "twr_rate", rates.twr_hz, "a rate in (0, 1000] Hz");

@@ -20,6 +20,9 @@ class YamlParams : public ParamSource {
   explicit YamlParams(YAML::Node root) : root_(std::move(root)) {}
   /// Loads a file; throws ParamError naming the file when it is not a readable mapping.
   static YamlParams fromFile(const std::string& path);
+  /// Loads several files into one namespace as `rosparam load` does one after the other:
+  /// a later file's keys replace an earlier one's, mappings merge key by key.
+  static YamlParams fromFiles(const std::vector<std::string>& paths);
 
   void allow(const std::string& name) const override { known_.insert(name); }
   /// Throws ParamError for the first key (nested keys as "a/b") that no param() read.

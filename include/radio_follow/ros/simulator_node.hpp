@@ -36,7 +36,6 @@ class SimulatorNode {
     std::string odom_frame = "odom";
     sim::WorldConfig world;
     sim::ScanConfig scan;
-    double scan_rate = 10.0;  ///< Hz; a scan is published only when the scenario has obstacles
     /// "messages": publish driver messages; "serial": speak the devices' protocols on
     /// pseudo-terminals under serial_dir so the real drivers run in the loop.
     std::string output = "messages";

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "radio_follow/common/param_source.hpp"
 #include "radio_follow/sim/robot.hpp"
 
 namespace radio_follow {
@@ -36,7 +37,11 @@ struct ScanConfig {
   double range_min = 0.05;  ///< m
   double range_max = 10.0;  ///< m
   double sigma = 0.01;      ///< m, range noise
+  double rate = 10.0;       ///< Hz; a scan is published only when the scenario has obstacles
 
+  /// Reads `scan/rate`, `scan/angle_min_deg`, `scan/angle_max_deg`, `scan/beams`,
+  /// `scan/range_min`, `scan/range_max`, `scan/sigma` (config/simulator.yaml).
+  void load(const ParamSource& source);
   void validate() const;
 };
 

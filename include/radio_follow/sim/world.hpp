@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "radio_follow/common/param_source.hpp"
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/sim/robot.hpp"
 #include "radio_follow/sim/target_path.hpp"
@@ -29,6 +30,9 @@ struct WorldConfig {
   std::size_t tdoa_reference = 0;
   std::uint64_t seed = 1;
 
+  /// Reads the simulator's world parameters (config/simulator.yaml: robot/*, *_rate,
+  /// twr_*, aoa_*, tdoa_*; not the seed nor twr_occlusions, which the caller sets).
+  void load(const ParamSource& source);
   void validate() const;
 };
 
