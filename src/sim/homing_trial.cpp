@@ -22,7 +22,7 @@ std::vector<HomingNoise> seed000NoiseConfigurations() {
   };
 }
 
-HomingResult runHomingTrial(const HomingController& controller, double target_x, double target_y,
+HomingResult runHomingTrial(const HomingStep& controller, double target_x, double target_y,
                             const HomingNoise& noise, const HomingTrialConfig& config,
                             std::uint64_t seed) {
   std::mt19937_64 rng(seed);
@@ -64,23 +64,20 @@ HomingResult runHomingTrial(const HomingController& controller, double target_x,
   return result;
 }
 
-HomingController hybridHomingController(const control::HomingParams& params, double search_speed) {
-  auto homing = std::make_shared<control::HybridHoming>(params);
-  return [homing, params, search_speed](const HomingMeasurement& m) {
-    const Eigen::Vector2d robot = m.odom.position();
-    homing->update(robot, m.odom.yaw + m.bearing, m.distance);
+HomingStep homingControllerStep(const control::HomingControllerParams& params) {
+  auto law = std::make_shared<control::HomingController>(params);
+  return [law](const HomingMeasurement& m) {
+    law->onOdometry(m.odom, m.t, m.t);
+    law->onRange(m.distance, m.t);
+    law->onBearing(m.bearing, std::numeric_limits<double>::quiet_NaN(), m.t);
+    const control::HomingOutput out = law->compute(m.t);
     HomingCommand c;
-    if (const auto& goal = homing->goal()) {
+    c.linear = out.command.linear;
+    c.angular = out.command.angular;
+    c.arrived = out.state == control::FollowerState::kArrived;
+    if (const auto& goal = law->goal()) {
       c.goal_x = goal->x();
       c.goal_y = goal->y();
-      c.arrived = homing->arrived(robot);
-      const auto v = control::homingVelocity(m.odom, *goal, params);
-      c.linear = v.linear;
-      c.angular = v.angular;
-    } else {
-      c.linear = std::abs(m.bearing) < kPi / 2.0 ? search_speed : 0.0;
-      c.angular =
-          std::clamp(params.angular_gain * m.bearing, -params.max_angular, params.max_angular);
     }
     return c;
   };

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Reproduces seed 000's Tables 2-3 with the homing controller's core (HybridHoming and
-// the eq 15 velocity law) on the simulator's unicycle robot: the robot starts at the
+// Reproduces seed 000's Tables 2-3 with the homing_controller node's law
+// (control::HomingController, config/homing_controller.yaml's defaults, the distance as a
+// UWB range) on the simulator's unicycle robot: the robot starts at the
 // origin facing +x, 10 random beacons per quadrant of the -10..10 m square, the five
 // uniform-noise configurations of Table 2. Prints a Markdown table beside the paper's.
 //   homing_experiment [--per-quadrant N] [--seed S] [--max-linear V] [--arrival D] [--tau T]
@@ -10,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "radio_follow/control/homing.hpp"
+#include "radio_follow/control/homing_controller.hpp"
 #include "radio_follow/sim/homing_trial.hpp"
 
 namespace {
@@ -29,7 +30,8 @@ int main(int argc, char** argv) {
   int per_quadrant = 10;
   unsigned long seed = 1;
   double max_linear = 1.0;
-  radio_follow::control::HomingParams params;
+  radio_follow::control::HomingControllerParams params;
+  params.distance_source = "uwb";
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string flag = argv[i];
     if (flag == "--per-quadrant") {
@@ -39,9 +41,9 @@ int main(int argc, char** argv) {
     } else if (flag == "--max-linear") {
       max_linear = std::atof(argv[i + 1]);
     } else if (flag == "--arrival") {
-      params.arrival_distance = std::atof(argv[i + 1]);
+      params.homing.arrival_distance = std::atof(argv[i + 1]);
     } else if (flag == "--tau") {
-      params.tau = std::atof(argv[i + 1]);
+      params.homing.tau = std::atof(argv[i + 1]);
     } else {
       std::fprintf(stderr, "unknown option %s\n", flag.c_str());
       return 2;
@@ -51,7 +53,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "--per-quadrant must be >= 1 and --max-linear > 0\n");
     return 2;
   }
-  params.max_linear = max_linear;
+  params.homing.max_linear = max_linear;
   params.validate();
   radio_follow::sim::HomingTrialConfig config;
   config.robot.max_linear = max_linear;
@@ -65,7 +67,7 @@ int main(int argc, char** argv) {
     std::vector<radio_follow::sim::HomingResult> results;
     for (std::size_t t = 0; t < targets.size(); ++t) {
       results.push_back(radio_follow::sim::runHomingTrial(
-          radio_follow::sim::hybridHomingController(params), targets[t].first, targets[t].second,
+          radio_follow::sim::homingControllerStep(params), targets[t].first, targets[t].second,
           configurations[c], config, seed * 1000 + c * 100 + t));
     }
     const auto s = radio_follow::sim::summarize(results);

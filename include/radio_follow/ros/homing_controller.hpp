@@ -4,42 +4,34 @@
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 
-#include <optional>
 #include <string>
 
 #include "radio_follow/AoaBearing.h"
 #include "radio_follow/UwbRanges.h"
-#include "radio_follow/common/time_policy.hpp"
-#include "radio_follow/control/homing.hpp"
-#include "radio_follow/control/rssi_model.hpp"
+#include "radio_follow/control/homing_controller.hpp"
 #include "radio_follow/ros/controller_base.hpp"
 #include "radio_follow/ros/params.hpp"
 
 namespace radio_follow {
 
+/// Reads the law's parameters (config/homing_controller.yaml) from the private
+/// namespace, with eq 15's max_linear and the yaw-rate limit from the common limits.
+/// Not validated here: control::HomingController's constructor does that.
+control::HomingControllerParams loadHomingControllerParams(const ParamReader& private_nh,
+                                                           const ControllerCommonParams& common);
+
 /// homing_controller (seed 000): homes to a static target of unknown position from
 /// AoA bearings and odometry. Publishes the hybrid goal as a PoseStamped (for a planner
-/// such as move_base) and drives there itself with eq 15.
+/// such as move_base) and drives there itself with eq 15. The law is
+/// control::HomingController; this class converts messages to its inputs.
 class HomingControllerNode : public ControllerBase {
  public:
+  /// The node's own (ROS-side) parameters; the law's are control::HomingControllerParams.
   struct Params {
     /// Only bearings of this tag count; empty = every tag.
     std::string tag_id;
-    /// AoA board mounting in base_link: position (m) and yaw of its boresight (rad).
-    double board_x = 0.0;
-    double board_y = 0.0;
-    double board_yaw = 0.0;
-    /// "rssi" (log-distance model) or "uwb" (newest range on distance_range_topic).
-    std::string distance_source = "rssi";
+    /// UwbRanges topic of the target's ranges (distance_source "uwb").
     std::string distance_range_topic = "uwb_ranges";
-    /// A UWB range older than this is not used as the vector estimate's distance, s.
-    double distance_max_age = 0.5;
-    /// Odometry older than this (at a bearing or a tick) is not used, s.
-    double odom_timeout = 0.5;
-    /// Forward speed while no goal exists yet (building the parallax baseline), m/s.
-    double search_speed = 0.15;
-    control::RssiModel rssi;
-    control::HomingParams homing;
 
     void load(const ParamReader& private_nh);
     void validate() const;
@@ -54,17 +46,8 @@ class HomingControllerNode : public ControllerBase {
   void onDistanceRanges(const UwbRanges::ConstPtr& msg);
 
   Params params_;
-  control::HybridHoming homing_;
-  std::optional<control::Pose2> robot_;
-  std::optional<double> last_bearing_;  // odometry frame, rad
-  ros::Time odom_stamp_;
-  TimePolicy time_;
-  unsigned long odom_refused_ = 0;
-  /// Forgets the pose, the distance and the homing estimate (clock jump).
-  void resetTrack(const char* why);
+  control::HomingController law_;
   std::string odom_frame_;
-  double uwb_distance_ = 0.0;
-  ros::Time uwb_stamp_;
   ros::Publisher goal_pub_;
   ros::Subscriber bearing_sub_;
   ros::Subscriber odom_sub_;

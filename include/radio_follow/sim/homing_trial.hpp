@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "radio_follow/control/homing.hpp"
+#include "radio_follow/control/homing_controller.hpp"
 #include "radio_follow/sim/robot.hpp"
 
 namespace radio_follow {
@@ -44,7 +44,8 @@ struct HomingCommand {
   bool arrived = false;  ///< the controller believes it has reached the beacon
 };
 
-using HomingController = std::function<HomingCommand(const HomingMeasurement&)>;
+/// One cycle of a homing controller under test: a measurement in, its command out.
+using HomingStep = std::function<HomingCommand(const HomingMeasurement&)>;
 
 struct HomingTrialConfig {
   RobotLimits robot;
@@ -65,15 +66,17 @@ struct HomingResult {
 
 /// Drives a robot from the origin (facing +x) with `controller` towards a static beacon
 /// at (target_x, target_y), feeding it noisy bearings and distances. Deterministic per seed.
-HomingResult runHomingTrial(const HomingController& controller, double target_x, double target_y,
+HomingResult runHomingTrial(const HomingStep& controller, double target_x, double target_y,
                             const HomingNoise& noise, const HomingTrialConfig& config,
                             std::uint64_t seed);
 
-/// The homing controller's core (control::HybridHoming and the eq 15 velocity law) as a
-/// HomingController, as the homing_controller node runs it: while no goal exists yet it
-/// creeps along the bearing at `search_speed` (m/s) so the parallax gets a baseline.
-HomingController hybridHomingController(const control::HomingParams& params,
-                                        double search_speed = 0.3);
+/// A fresh control::HomingController (the homing_controller node's law) as a HomingStep.
+/// Each cycle feeds it the odometry pose, the distance as a UWB range and the bearing as
+/// the azimuth of a board at the robot's centre facing forward, all stamped with the
+/// measurement's time, then ticks it at that time. The command is its command, `arrived`
+/// its ARRIVED state. `params.distance_source` should be "uwb": the measurement carries
+/// no RSSI.
+HomingStep homingControllerStep(const control::HomingControllerParams& params);
 
 /// Seed 000's target set: `per_quadrant` uniform random targets in each quadrant of the
 /// (-half_size, half_size) square, at least `min_distance` from the origin.

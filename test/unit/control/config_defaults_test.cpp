@@ -8,6 +8,7 @@
 
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/control/homing.hpp"
+#include "radio_follow/control/homing_controller.hpp"
 #include "radio_follow/control/obstacle_avoidance.hpp"
 #include "radio_follow/control/rate_limiter.hpp"
 #include "radio_follow/control/rssi_model.hpp"
@@ -83,6 +84,14 @@ TEST(ConfigDefaults, HomingYamlMatchesHomingParams) {
   const RssiModel rssi;
   EXPECT_DOUBLE_EQ(y["rssi_at_1m"].as<double>(), rssi.rssi_at_1m);
   EXPECT_DOUBLE_EQ(y["rssi_exponent"].as<double>(), rssi.exponent);
+  const HomingControllerParams law;
+  EXPECT_DOUBLE_EQ(y["board_x"].as<double>(), law.board_x);
+  EXPECT_DOUBLE_EQ(y["board_y"].as<double>(), law.board_y);
+  EXPECT_DOUBLE_EQ(y["board_yaw"].as<double>(), law.board_yaw);
+  EXPECT_EQ(y["distance_source"].as<std::string>(), law.distance_source);
+  EXPECT_DOUBLE_EQ(y["distance_max_age"].as<double>(), law.distance_max_age);
+  EXPECT_DOUBLE_EQ(y["odom_timeout"].as<double>(), law.odom_timeout);
+  EXPECT_DOUBLE_EQ(y["search_speed"].as<double>(), law.search_speed);
 }
 
 }  // namespace

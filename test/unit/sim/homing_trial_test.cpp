@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "radio_follow/common/angles.hpp"
-#include "radio_follow/control/homing.hpp"
+#include "radio_follow/control/homing_controller.hpp"
 
 namespace radio_follow {
 namespace sim {
@@ -99,17 +99,18 @@ TEST(HomingTrial, SummaryAveragesSuccessfulRunsOnly) {
   EXPECT_DOUBLE_EQ(s.goal_error, 0.1);
 }
 
-TEST(HomingTrial, HybridHomingReachesBeaconsInEveryQuadrantUnderTheWorstNoise) {
-  // The homing controller's core in the loop, seed 000's noisiest configuration.
-  control::HomingParams params;
-  params.max_linear = 1.0;
+TEST(HomingTrial, HomingControllerReachesBeaconsInEveryQuadrantUnderTheWorstNoise) {
+  // The homing_controller node's law in the loop, seed 000's noisiest configuration.
+  control::HomingControllerParams params;
+  params.distance_source = "uwb";
+  params.homing.max_linear = 1.0;
   HomingTrialConfig config;
   config.robot.max_linear = 1.0;
   const HomingNoise noise = seed000NoiseConfigurations()[4];
   std::vector<HomingResult> results;
   int seed = 0;
   for (const auto& [x, y] : homingTargets(2, 10.0, 1.0, 11)) {
-    results.push_back(runHomingTrial(hybridHomingController(params), x, y, noise, config, ++seed));
+    results.push_back(runHomingTrial(homingControllerStep(params), x, y, noise, config, ++seed));
   }
   const HomingSummary s = summarize(results);
   EXPECT_DOUBLE_EQ(s.success_rate, 1.0);

@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "radio_follow/common/pose2.hpp"
+#include "radio_follow/common/time_policy.hpp"
+#include "radio_follow/control/follower_state.hpp"
+#include "radio_follow/control/homing.hpp"
+#include "radio_follow/control/rssi_model.hpp"
+
+namespace radio_follow {
+namespace control {
+
+/// Parameters of the homing controller's law. The names in ParamError messages are the
+/// homing_controller node's private parameters (config/homing_controller.yaml).
+struct HomingControllerParams {
+  /// AoA board mounting in base_link: position (m) and yaw of its boresight (rad).
+  double board_x = 0.0;
+  double board_y = 0.0;
+  double board_yaw = 0.0;
+  /// "rssi" (log-distance model on each bearing's RSSI) or "uwb" (the newest onRange()).
+  std::string distance_source = "rssi";
+  /// A UWB range older than this is not used as the vector estimate's distance, s.
+  double distance_max_age = 0.5;
+  /// Odometry older than this (at a bearing or a tick) is not used, s.
+  double odom_timeout = 0.5;
+  /// Forward speed while no goal exists yet (building the parallax baseline), m/s.
+  double search_speed = 0.15;
+  RssiModel rssi;
+  /// The estimator and eq 15; a node copies its common max_linear and max_angular here.
+  HomingParams homing;
+
+  bool usesUwb() const { return distance_source == "uwb"; }
+  void validate() const;
+};
+
+/// What the law wants this tick (the fields of a controller's output).
+struct HomingOutput {
+  VelocityCommand command;
+  FollowerState state = FollowerState::kFollowing;
+  std::string text;
+};
+
+/// The homing_controller's law (seed 000 Section 5), clock-free: odometry, bearings and
+/// UWB ranges go in with their times (seconds on one clock), and each tick returns the
+/// command, the follower state and the sentence to report. The ROS node and the homing
+/// benchmark (sim::runHomingTrial) both run this class.
+///
+/// Before a goal exists it creeps along the newest bearing at search_speed, so that the
+/// parallax estimate gets its baseline; then it drives to the hybrid goal with eq 15 and
+/// stops once HybridHoming::arrived().
+class HomingController {
+ public:
+  /// Validates `params` (throws ParamError).
+  explicit HomingController(const HomingControllerParams& params);
+
+  /// What became of an odometry pose.
+  struct OdometryResult {
+    bool accepted = false;
+    /// `now` ran back beyond kClockJumpTolerance: the track was forgotten (reset()).
+    bool clock_jumped = false;
+  };
+  /// Robot pose in the odometry frame, stamped `stamp`, received at `now`. A non-finite
+  /// pose or a stamp from the future (TimePolicy) is refused and counted: one NaN pose
+  /// would otherwise enter every later goal through the parallax estimate.
+  OdometryResult onOdometry(const Pose2& pose, double stamp, double now);
+
+  /// A range to the target, m (used with distance_source "uwb"). Non-finite or negative
+  /// ranges are ignored.
+  void onRange(double range, double stamp);
+
+  enum class BearingResult {
+    kUsed,
+    kNoOdometry,  ///< no pose within odom_timeout of the bearing's stamp
+    kNotFinite,   ///< the azimuth is NaN or infinite
+  };
+  /// One angle of arrival in the board frame (rad, CCW) with its RSSI (dBm; NaN when
+  /// none), stamped `stamp`: feeds the hybrid estimate with the board's pose in the
+  /// odometry frame and the distance of distance_source.
+  BearingResult onBearing(double azimuth, double rssi, double stamp);
+
+  /// The command at `now`: waiting without fresh odometry, searching before a goal,
+  /// homing with eq 15, zero once arrived.
+  HomingOutput compute(double now) const;
+
+  /// Forgets the pose, the distance, the bearing and the estimate (homing starts over).
+  void reset();
+
+  const std::optional<Eigen::Vector2d>& goal() const { return homing_.goal(); }
+  /// The goal facing the target from where the robot is now (what a planner should aim
+  /// for); nullopt without a goal or a pose.
+  std::optional<Pose2> goalPose() const;
+  const HybridHoming& homing() const { return homing_; }
+  const HomingControllerParams& params() const { return params_; }
+  /// Odometry poses refused (non-finite or from the future).
+  std::uint64_t odometryRefused() const { return odom_refused_; }
+
+ private:
+  /// The vector estimate's distance for a bearing at `stamp` with `rssi`; NaN when none.
+  double distanceAt(double stamp, double rssi) const;
+
+  HomingControllerParams params_;
+  HybridHoming homing_;
+  TimePolicy time_;
+  std::optional<Pose2> robot_;
+  double odom_stamp_ = 0.0;
+  std::optional<double> last_bearing_;  ///< odometry frame, rad
+  std::optional<double> range_stamp_;
+  double range_ = 0.0;
+  std::uint64_t odom_refused_ = 0;
+};
+
+}  // namespace control
+}  // namespace radio_follow
