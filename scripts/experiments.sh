@@ -1,16 +1,25 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
-# Runs the closed-loop experiments (test/ros/experiments/*.test: the thesis's Experiment 3
-# analogues and the fault runs) one by one and prints the table of doc/experiments.md.
-# Arguments: [--seed N] experiment names to run (default: all). --seed sets the simulated
-# noise seed of every run (default 1, what the test command runs; the .test files read it
-# from RF_SEED). The test command runs the same experiments as part of every test run.
+# The closed-loop experiments of doc/experiments.md (test/experiments.yaml: the thesis's
+# Experiment 3 analogues and the fault runs).
+#   bash scripts/experiments.sh [--seeds N] [name ...]
+#       the lockstep runs (tool `experiments`): deterministic, seeds 1..N (default 8), a
+#       few seconds; prints the table and every broken threshold.
+#   bash scripts/experiments.sh --ros [--seed N] [name ...]
+#       the ROS smoke runs (test/ros/experiments/*.test: the real nodes, demo.launch) at
+#       noise seed N (default 1), then the table of their reports. Each also checks that it
+#       agrees with the lockstep run of the same seed.
+# The test command runs both (the lockstep runs in the closed_loop gtest).
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$repo/scripts/setup.sh"
 bash "$repo/scripts/build.sh" tests
 # shellcheck disable=SC1091
 source "$repo/scripts/env.sh"
+if [ "${1:-}" != "--ros" ]; then
+  exec "$RF_WS/devel/lib/radio_follow/experiments" "$@"
+fi
+shift
 export ROS_HOME="${ROS_HOME:-$RF_WS/ros_home}"
 root="$ROS_HOME/radio_follow_experiments"
 if [ "${1:-}" = "--seed" ]; then

@@ -136,5 +136,32 @@ HomingOutput HomingController::compute(double now) const {
   return out;
 }
 
+void HomingControllerParams::load(const ParamSource& pnh, const MotionLimits& limits) {
+  HomingControllerParams& p = *this;
+  pnh.param("board_x", p.board_x, p.board_x);
+  pnh.param("board_y", p.board_y, p.board_y);
+  pnh.param("board_yaw", p.board_yaw, p.board_yaw);
+  pnh.param("distance_source", p.distance_source, p.distance_source);
+  pnh.param("distance_max_age", p.distance_max_age, p.distance_max_age);
+  pnh.param("odom_timeout", p.odom_timeout, p.odom_timeout);
+  pnh.param("search_speed", p.search_speed, p.search_speed);
+  pnh.param("rssi_at_1m", p.rssi.rssi_at_1m, p.rssi.rssi_at_1m);
+  pnh.param("rssi_exponent", p.rssi.exponent, p.rssi.exponent);
+  HomingParams& h = p.homing;
+  pnh.param("tau", h.tau, h.tau);
+  pnh.param("window", h.window, h.window);
+  pnh.param("kohonen_k", h.k, h.k);
+  pnh.param("min_baseline", h.min_baseline, h.min_baseline);
+  pnh.param("min_parallax_angle", h.min_parallax_angle, h.min_parallax_angle);
+  pnh.param("error_threshold", h.error_threshold, h.error_threshold);
+  pnh.param("z_threshold", h.z_threshold, h.z_threshold);
+  pnh.param("arrival_distance", h.arrival_distance, h.arrival_distance);
+  pnh.param("agreement_distance", h.agreement_distance, h.agreement_distance);
+  pnh.param("linear_gain", h.linear_gain, h.linear_gain);
+  pnh.param("angular_gain", h.angular_gain, h.angular_gain);
+  h.max_linear = limits.max_linear;
+  h.max_angular = limits.max_angular;
+}
+
 }  // namespace control
 }  // namespace radio_follow

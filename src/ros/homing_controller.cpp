@@ -11,35 +11,6 @@
 
 namespace radio_follow {
 
-control::HomingControllerParams loadHomingControllerParams(const ParamReader& pnh,
-                                                           const ControllerCommonParams& common) {
-  control::HomingControllerParams p;
-  pnh.param("board_x", p.board_x, p.board_x);
-  pnh.param("board_y", p.board_y, p.board_y);
-  pnh.param("board_yaw", p.board_yaw, p.board_yaw);
-  pnh.param("distance_source", p.distance_source, p.distance_source);
-  pnh.param("distance_max_age", p.distance_max_age, p.distance_max_age);
-  pnh.param("odom_timeout", p.odom_timeout, p.odom_timeout);
-  pnh.param("search_speed", p.search_speed, p.search_speed);
-  pnh.param("rssi_at_1m", p.rssi.rssi_at_1m, p.rssi.rssi_at_1m);
-  pnh.param("rssi_exponent", p.rssi.exponent, p.rssi.exponent);
-  control::HomingParams& h = p.homing;
-  pnh.param("tau", h.tau, h.tau);
-  pnh.param("window", h.window, h.window);
-  pnh.param("kohonen_k", h.k, h.k);
-  pnh.param("min_baseline", h.min_baseline, h.min_baseline);
-  pnh.param("min_parallax_angle", h.min_parallax_angle, h.min_parallax_angle);
-  pnh.param("error_threshold", h.error_threshold, h.error_threshold);
-  pnh.param("z_threshold", h.z_threshold, h.z_threshold);
-  pnh.param("arrival_distance", h.arrival_distance, h.arrival_distance);
-  pnh.param("agreement_distance", h.agreement_distance, h.agreement_distance);
-  pnh.param("linear_gain", h.linear_gain, h.linear_gain);
-  pnh.param("angular_gain", h.angular_gain, h.angular_gain);
-  h.max_linear = common.limits.max_linear;
-  h.max_angular = common.limits.max_angular;
-  return p;
-}
-
 void HomingControllerNode::Params::load(const ParamReader& pnh) {
   pnh.param("tag_id", tag_id, tag_id);
   tag_id = normalizeId(tag_id);
@@ -51,9 +22,11 @@ void HomingControllerNode::Params::validate() const {
 }
 
 HomingControllerNode::HomingControllerNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
-    : ControllerBase(nh, private_nh, false),
-      params_(loadValidated<Params>(params())),
-      law_(loadHomingControllerParams(params(), common())) {
+    : ControllerBase(nh, private_nh, false), params_(loadValidated<Params>(params())), law_([&] {
+        control::HomingControllerParams p;
+        p.load(params(), common().limits);
+        return p;
+      }()) {
   requireKnownParams();
   goal_pub_ = private_nh_.advertise<geometry_msgs::PoseStamped>("goal", 1, true);
   odom_sub_ = nh_.subscribe("odom", 10, &HomingControllerNode::onOdom, this);

@@ -328,7 +328,7 @@ void ClosedLoop::runController(double now) {
     }
     result = pipeline_.finish(out, now, dt);
   }
-  (result.moving && !result.command.isZero() ? moving_ticks_ : stopped_ticks_) += 1;
+  commands_.push_back(CommandSample{now, result.command, !result.moving});
   command_ = result.command;
   command_time_ = now;
 }

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "radio_follow/common/param_source.hpp"
 #include "radio_follow/common/pose2.hpp"
 #include "radio_follow/common/time_policy.hpp"
 #include "radio_follow/control/follower_state.hpp"
@@ -35,15 +36,14 @@ struct HomingControllerParams {
   HomingParams homing;
 
   bool usesUwb() const { return distance_source == "uwb"; }
+  /// Reads the law's parameters by their names (doc/nodes/homing_controller.md); the
+  /// speed caps come from the controller's common `limits`. Absent keys keep their value.
+  void load(const ParamSource& source, const MotionLimits& limits);
   void validate() const;
 };
 
 /// What the law wants this tick (the fields of a controller's output).
-struct HomingOutput {
-  VelocityCommand command;
-  FollowerState state = FollowerState::kFollowing;
-  std::string text;
-};
+using HomingOutput = LawOutput;  ///< command, state and the sentence to report
 
 /// The homing_controller's law (seed 000 Section 5), clock-free: odometry, bearings and
 /// UWB ranges go in with their times (seconds on one clock), and each tick returns the

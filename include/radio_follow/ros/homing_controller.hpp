@@ -14,12 +14,6 @@
 
 namespace radio_follow {
 
-/// Reads the law's parameters (config/homing_controller.yaml) from the private
-/// namespace, with eq 15's max_linear and the yaw-rate limit from the common limits.
-/// Not validated here: control::HomingController's constructor does that.
-control::HomingControllerParams loadHomingControllerParams(const ParamReader& private_nh,
-                                                           const ControllerCommonParams& common);
-
 /// homing_controller (seed 000): homes to a static target of unknown position from
 /// AoA bearings and odometry. Publishes the hybrid goal as a PoseStamped (for a planner
 /// such as move_base) and drives there itself with eq 15. The law is

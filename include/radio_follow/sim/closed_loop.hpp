@@ -96,9 +96,14 @@ class ClosedLoop {
   const FollowMetrics& metrics() const { return metrics_; }
   const World& world() const { return world_; }
   const LocatorStats& locatorStats() const { return locator_.stats(); }
-  /// Number of controller ticks that sent a non-zero command, and that were stopped.
-  std::size_t movingTicks() const { return moving_ticks_; }
-  std::size_t stoppedTicks() const { return stopped_ticks_; }
+  /// One controller tick's command, on the simulator's clock (scenario time + 1 s, as
+  /// the ROS simulator stamps).
+  struct CommandSample {
+    double t;
+    control::VelocityCommand command;
+    bool stopped;  ///< the safety layer forbade motion
+  };
+  const std::vector<CommandSample>& commands() const { return commands_; }
 
  private:
   struct Timer {
@@ -136,9 +141,7 @@ class ClosedLoop {
   double command_time_ = -1e9;
   std::deque<PoseAt> poses_;                              ///< odometry history (TF buffer)
   std::deque<std::pair<double, Eigen::Vector3d>> truth_;  ///< target in the robot frame
-  double previous_tick_ = -1.0;
-  std::size_t moving_ticks_ = 0;
-  std::size_t stopped_ticks_ = 0;
+  std::vector<CommandSample> commands_;
 };
 
 }  // namespace sim
