@@ -78,13 +78,13 @@ void FollowEvaluatorNode::Params::validate() const {
 }
 
 FollowEvaluatorNode::FollowEvaluatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
-    : metrics_(sim::FollowSettings{}) {
+    : metrics_(evaluation::FollowSettings{}) {
   const ParamReader reader(private_nh);
   reader.param("report_dir", params_.report_dir, params_.report_dir);
   reader.param("rate", params_.rate, params_.rate);
   reader.param("write_period", params_.write_period, params_.write_period);
   reader.param("end_launch", params_.end_launch, params_.end_launch);
-  sim::FollowSettings& s = params_.settings;
+  evaluation::FollowSettings& s = params_.settings;
   reader.param("follow_distance", s.follow_distance, s.follow_distance);
   reader.param("safe_distance", s.safe_distance, s.safe_distance);
   reader.param("gap_tolerance", s.gap_tolerance, s.gap_tolerance);
@@ -98,7 +98,7 @@ FollowEvaluatorNode::FollowEvaluatorNode(ros::NodeHandle& nh, ros::NodeHandle& p
     require(!error, "~report_dir", params_.report_dir,
             "a directory that exists or can be created (" + error.message() + ")");
   }
-  metrics_ = sim::FollowMetrics(params_.settings);
+  metrics_ = evaluation::FollowMetrics(params_.settings);
 
   odom_sub_ = nh.subscribe<nav_msgs::Odometry>(
       "odom", 10, [this](const nav_msgs::OdometryConstPtr& m) { odom_ = m; });
@@ -147,7 +147,7 @@ void FollowEvaluatorNode::onFinished(const std_msgs::BoolConstPtr& msg) {
   timer_.stop();
   write_timer_.stop();
   writeFiles();
-  const sim::FollowReport result = metrics_.report();
+  const evaluation::FollowReport result = metrics_.report();
   std_msgs::String report;
   report.data = result.toJson();
   report_pub_.publish(report);
@@ -157,7 +157,7 @@ void FollowEvaluatorNode::onFinished(const std_msgs::BoolConstPtr& msg) {
   }
 }
 
-void FollowEvaluatorNode::logVerdict(const sim::FollowReport& report) const {
+void FollowEvaluatorNode::logVerdict(const evaluation::FollowReport& report) const {
   if (report.failures.empty()) {
     ROS_INFO(
         "follow_evaluator: closed loop OK: the robot drove %.1f m, the estimate was usable "
@@ -182,7 +182,7 @@ void FollowEvaluatorNode::onTick(const ros::TimerEvent& event) {
   if (time_.jumpedBack(event.current_real.toSec())) {
     // A restarted simulator or a looped bag: the samples so far belong to another run.
     ROS_WARN("follow_evaluator: the clock jumped back, metrics start over");
-    metrics_ = sim::FollowMetrics(params_.settings);
+    metrics_ = evaluation::FollowMetrics(params_.settings);
     relative_history_.clear();
     estimate_.reset();
   }
@@ -190,7 +190,7 @@ void FollowEvaluatorNode::onTick(const ros::TimerEvent& event) {
     return;
   }
   const auto& relative = relative_history_.back();
-  sim::FollowSample s;
+  evaluation::FollowSample s;
   s.t = event.current_real.toSec();
   s.robot_x = odom_->pose.pose.position.x;
   s.robot_y = odom_->pose.pose.position.y;

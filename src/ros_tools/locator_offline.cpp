@@ -111,7 +111,7 @@ void writeFile(const std::string& path, const std::string& text) {
 }
 
 void printSummary(const rf::ReplayResult& r) {
-  const rf::ErrorSummary all = r.statistics.overall();
+  const rf::evaluation::ErrorSummary all = r.statistics.overall();
   std::cout << "updates " << r.rows.size() << ", with a position " << r.availability * 100.0
             << " %, compared with the ground truth " << all.count << "\n";
   if (all.count == 0) {
@@ -121,14 +121,14 @@ void printSummary(const rf::ReplayResult& r) {
   std::cout << "error (m): mean " << all.mean << ", median " << all.median << ", p95 " << all.p95
             << ", max " << all.max << "\n"
             << "by direction (sector centre deg: median / p95 m, count):\n";
-  for (std::size_t i = 0; i < rf::ErrorStatistics::kSectors; ++i) {
-    const rf::ErrorSummary s = r.statistics.sector(i);
+  for (std::size_t i = 0; i < rf::evaluation::ErrorStatistics::kSectors; ++i) {
+    const rf::evaluation::ErrorSummary s = r.statistics.sector(i);
     std::cout << "  " << i * 45 << ": " << s.median << " / " << s.p95 << " (" << s.count << ")\n";
   }
   std::cout << "by distance (median / p95 m, count):\n";
-  for (std::size_t i = 0; i <= rf::ErrorStatistics::kBandEdges.size(); ++i) {
-    const rf::ErrorSummary s = r.statistics.band(i);
-    std::cout << "  " << rf::ErrorStatistics::bandName(i) << ": " << s.median << " / " << s.p95
+  for (std::size_t i = 0; i <= rf::evaluation::ErrorStatistics::kBandEdges.size(); ++i) {
+    const rf::evaluation::ErrorSummary s = r.statistics.band(i);
+    std::cout << "  " << rf::evaluation::ErrorStatistics::bandName(i) << ": " << s.median << " / " << s.p95
               << " (" << s.count << ")\n";
   }
 }
@@ -150,7 +150,7 @@ int runSweep(const Options& o, const rf::BagData& bag, const rf::Layout& layout,
   }
   struct Run {
     std::string setting;
-    rf::ErrorSummary error;
+    rf::evaluation::ErrorSummary error;
     double availability;
   };
   std::vector<Run> runs;

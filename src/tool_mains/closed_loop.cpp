@@ -6,7 +6,7 @@
 //   closed_loop [--layout spot] [--scenario outdoor_loop] [--controller velocity_controller]
 //               [--seed 1] [--config-dir DIR] [--controller-params FILE]
 //               [--locator-overrides FILE] [--outage SENSOR:AT:DURATION]... [--csv FILE]
-#include "radio_follow/sim/closed_loop.hpp"
+#include "radio_follow/evaluation/closed_loop.hpp"
 
 #include <cstdio>
 #include <cstdlib>
@@ -30,7 +30,7 @@ int usage(const std::string& problem) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  using radio_follow::sim::FollowController;
+  using radio_follow::evaluation::FollowController;
   std::string layout = "spot";
   std::string scenario = "outdoor_loop";
   std::string controller = "velocity_controller";
@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
   std::string locator_overrides;
   std::string csv;
   int seed = 1;
-  std::vector<radio_follow::sim::SensorOutage> outages;
+  std::vector<radio_follow::evaluation::SensorOutage> outages;
   for (int i = 1; i < argc; i += 2) {
     const std::string flag = argv[i];
     if (i + 1 >= argc) {
@@ -78,14 +78,14 @@ int main(int argc, char** argv) {
     return usage("--controller must be velocity_controller or path_follower");
   }
   try {
-    radio_follow::sim::ClosedLoopConfig config = radio_follow::sim::loadClosedLoopConfig(
+    radio_follow::evaluation::ClosedLoopConfig config = radio_follow::evaluation::loadClosedLoopConfig(
         config_dir, layout, scenario,
         controller == "path_follower" ? FollowController::kPathFollower
                                       : FollowController::kVelocity,
         seed, controller_params, locator_overrides);
     config.outages = outages;
-    radio_follow::sim::ClosedLoop loop(config);
-    const radio_follow::sim::FollowReport report = loop.run();
+    radio_follow::evaluation::ClosedLoop loop(config);
+    const radio_follow::evaluation::FollowReport report = loop.run();
     std::printf("%s\n", report.toJson().c_str());
     if (!csv.empty()) {
       std::ofstream(csv) << loop.metrics().toCsv();

@@ -14,13 +14,13 @@
 #include <vector>
 
 #include "radio_follow/common/param_error.hpp"
-#include "radio_follow/sim/experiment.hpp"
+#include "radio_follow/evaluation/experiment.hpp"
 
 namespace {
 
 struct Column {
   const char* title;
-  double (*value)(const radio_follow::sim::FollowReport&);
+  double (*value)(const radio_follow::evaluation::FollowReport&);
   const char* format;  ///< of one number
   double scale;
 };
@@ -85,13 +85,13 @@ int main(int argc, char** argv) {
       std::printf("---|");
     }
     std::printf("\n");
-    for (const auto& experiment : radio_follow::sim::loadExperiments(file)) {
+    for (const auto& experiment : radio_follow::evaluation::loadExperiments(file)) {
       if (!names.empty() && std::find(names.begin(), names.end(), experiment.name) == names.end()) {
         continue;
       }
       std::vector<std::vector<double>> values(std::size(kColumns));
       for (int seed = 1; seed <= seeds; ++seed) {
-        const auto result = radio_follow::sim::runExperiment(experiment, config_dir, seed);
+        const auto result = radio_follow::evaluation::runExperiment(experiment, config_dir, seed);
         for (std::size_t i = 0; i < std::size(kColumns); ++i) {
           values[i].push_back(kColumns[i].value(result.report));
         }

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "radio_follow/control/homing_controller.hpp"
-#include "radio_follow/sim/homing_trial.hpp"
+#include "radio_follow/evaluation/homing_trial.hpp"
 
 namespace {
 
@@ -55,22 +55,22 @@ int main(int argc, char** argv) {
   }
   params.homing.max_linear = max_linear;
   params.validate();
-  radio_follow::sim::HomingTrialConfig config;
+  radio_follow::evaluation::HomingTrialConfig config;
   config.robot.max_linear = max_linear;
-  const auto targets = radio_follow::sim::homingTargets(per_quadrant, 10.0, 1.0, seed);
+  const auto targets = radio_follow::evaluation::homingTargets(per_quadrant, 10.0, 1.0, seed);
 
   std::printf(
       "| config | success %% | time s | net vel. m/s | goal err. m | final err. m | path eff. |\n");
   std::printf("| --- | --- | --- | --- | --- | --- | --- |\n");
-  const auto configurations = radio_follow::sim::seed000NoiseConfigurations();
+  const auto configurations = radio_follow::evaluation::seed000NoiseConfigurations();
   for (std::size_t c = 0; c < configurations.size(); ++c) {
-    std::vector<radio_follow::sim::HomingResult> results;
+    std::vector<radio_follow::evaluation::HomingResult> results;
     for (std::size_t t = 0; t < targets.size(); ++t) {
-      results.push_back(radio_follow::sim::runHomingTrial(
-          radio_follow::sim::homingControllerStep(params), targets[t].first, targets[t].second,
+      results.push_back(radio_follow::evaluation::runHomingTrial(
+          radio_follow::evaluation::homingControllerStep(params), targets[t].first, targets[t].second,
           configurations[c], config, seed * 1000 + c * 100 + t));
     }
-    const auto s = radio_follow::sim::summarize(results);
+    const auto s = radio_follow::evaluation::summarize(results);
     std::printf("| %s | %.0f | %.2f | %.2f | %.2f | %.2f | %.2f |\n",
                 configurations[c].name.c_str(), 100.0 * s.success_rate, s.time, s.net_velocity,
                 s.goal_error, s.final_error, s.path_efficiency);

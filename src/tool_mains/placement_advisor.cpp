@@ -24,12 +24,12 @@
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/config/layout.hpp"
-#include "radio_follow/tools/error_statistics.hpp"
+#include "radio_follow/evaluation/error_statistics.hpp"
 
 namespace rf = radio_follow;
 namespace fs = std::filesystem;
-using rf::jsonNumber;
-using rf::jsonString;
+using rf::evaluation::jsonNumber;
+using rf::evaluation::jsonString;
 
 namespace {
 

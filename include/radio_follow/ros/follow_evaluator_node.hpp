@@ -12,7 +12,7 @@
 #include <string>
 
 #include "radio_follow/common/time_policy.hpp"
-#include "radio_follow/sim/follow_metrics.hpp"
+#include "radio_follow/evaluation/follow_metrics.hpp"
 
 namespace radio_follow {
 
@@ -28,7 +28,7 @@ class FollowEvaluatorNode {
     /// When the scenario ends, end the roslaunch that started this node (demo.launch;
     /// false under rostest, whose test node ends the run).
     bool end_launch = false;
-    sim::FollowSettings settings;
+    evaluation::FollowSettings settings;
 
     void validate() const;
   };
@@ -45,11 +45,11 @@ class FollowEvaluatorNode {
   void onFinished(const std_msgs::BoolConstPtr& msg);
   void writeReport() const;
   /// One line saying whether the run worked as a closed loop, naming what failed.
-  void logVerdict(const sim::FollowReport& report) const;
+  void logVerdict(const evaluation::FollowReport& report) const;
   void writeFiles() const;
 
   Params params_;
-  sim::FollowMetrics metrics_;
+  evaluation::FollowMetrics metrics_;
   TimePolicy time_;
   ros::Subscriber odom_sub_, truth_sub_, relative_sub_, estimate_sub_, cmd_sub_;
   ros::Timer timer_;

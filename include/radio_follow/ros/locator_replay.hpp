@@ -12,7 +12,7 @@
 #include "radio_follow/UwbRanges.h"
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/estimation/locator.hpp"
-#include "radio_follow/tools/error_statistics.hpp"
+#include "radio_follow/evaluation/error_statistics.hpp"
 
 namespace radio_follow {
 
@@ -51,7 +51,7 @@ struct ReplayRow {
 
 struct ReplayResult {
   std::vector<ReplayRow> rows;
-  ErrorStatistics statistics;  ///< over the rows with a position (OK/DEGRADED) and a truth
+  evaluation::ErrorStatistics statistics;  ///< over the rows with a position (OK/DEGRADED) and a truth
   std::size_t refused = 0;     ///< measurements the locator refused (unknown sensors)
   double availability = 0.0;   ///< share of updates with a position
 };

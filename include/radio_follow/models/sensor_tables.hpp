@@ -6,7 +6,7 @@
 #include "radio_follow/config/layout.hpp"
 
 namespace radio_follow {
-namespace sim {
+namespace models {
 
 /// Measured error of one UWB TWR range at a true distance (thesis Table 3.1).
 struct RangeError {
@@ -37,5 +37,5 @@ AoaError aoaError(AoaBoardKind kind, double azimuth, double distance);
 /// The table's azimuth grid limit, radians (80 deg).
 double aoaTableAzimuthLimit();
 
-}  // namespace sim
+}  // namespace models
 }  // namespace radio_follow

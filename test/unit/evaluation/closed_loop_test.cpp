@@ -2,7 +2,7 @@
 // The lockstep closed loop (sim/closed_loop.hpp) on the shipped configuration: every
 // experiment of test/experiments.yaml (the thesis's Experiment 3 analogues and the fault
 // runs) meets its thresholds on several noise seeds, and a run is deterministic.
-#include "radio_follow/sim/closed_loop.hpp"
+#include "radio_follow/evaluation/closed_loop.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,10 +10,10 @@
 #include <vector>
 
 #include "radio_follow/common/param_error.hpp"
-#include "radio_follow/sim/experiment.hpp"
+#include "radio_follow/evaluation/experiment.hpp"
 
 namespace radio_follow {
-namespace sim {
+namespace evaluation {
 namespace {
 
 /// Noise seeds every experiment must pass (the ROS smoke runs use seed 1).
@@ -91,5 +91,5 @@ TEST(ClosedLoopConfigTest, RefusesUnknownSensorsAndBadFiles) {
 }
 
 }  // namespace
-}  // namespace sim
+}  // namespace evaluation
 }  // namespace radio_follow

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "radio_follow/sim/closed_loop.hpp"
+#include "radio_follow/evaluation/closed_loop.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include "radio_follow/common/yaml_params.hpp"
 
 namespace radio_follow {
-namespace sim {
+namespace evaluation {
 namespace {
 
 /// The simulator's clock reads this at the scenario's start (stamps are never zero).
@@ -82,7 +82,7 @@ ClosedLoopConfig loadClosedLoopConfig(const std::string& dir, const std::string&
   c.controller = controller;
   c.layout = loadLayoutFile(dir + "/layouts/" + layout + ".yaml");
   c.scenario =
-      loadScenarioFile(dir + "/scenarios/" + scenario + ".yaml", static_cast<std::uint64_t>(seed));
+      sim::loadScenarioFile(dir + "/scenarios/" + scenario + ".yaml", static_cast<std::uint64_t>(seed));
 
   // simulator.launch: config/simulator.yaml, seed from the launch.
   const YamlParams simulator = YamlParams::fromFile(dir + "/simulator.yaml");
@@ -91,7 +91,7 @@ ClosedLoopConfig loadClosedLoopConfig(const std::string& dir, const std::string&
   simulator.param("step_rate", c.step_rate, c.step_rate);
   simulator.param("cmd_timeout", c.cmd_timeout, c.cmd_timeout);
   // What only the ROS node uses (clock, frames, serial devices, the laser scan).
-  ScanConfig scan;  // the laser scan of scenarios with obstacles: the ROS simulator's
+  sim::ScanConfig scan;  // the laser scan of scenarios with obstacles: the ROS simulator's
   scan.load(simulator);
   for (const char* key : {"seed", "time_factor", "shutdown_on_finish", "odom_frame", "output",
                           "serial_dir", "unplug"}) {
@@ -190,7 +190,7 @@ bool ClosedLoop::step() {
   }
   // The base stops by itself when its command stream stops.
   const bool fresh = world_.time() + kClockStart - command_time_ <= config_.cmd_timeout;
-  const StepEvents events = world_.step(fresh ? command_.linear : 0.0,
+  const sim::StepEvents events = world_.step(fresh ? command_.linear : 0.0,
                                         fresh ? command_.angular : 0.0, 1.0 / config_.step_rate);
   const double now = kClockStart + world_.time();
   poses_.push_back(PoseAt{now, world_.robot().pose()});
@@ -221,9 +221,9 @@ bool ClosedLoop::silent(const std::string& sensor, double t) const {
   });
 }
 
-void ClosedLoop::feedSensors(const StepEvents& events, double now) {
+void ClosedLoop::feedSensors(const sim::StepEvents& events, double now) {
   const Layout& layout = config_.layout;
-  for (const TwrEvent& e : events.twr) {
+  for (const sim::TwrEvent& e : events.twr) {
     const TwrModule& module = layout.twr_modules[e.module];
     const double stamp = kClockStart + e.t;
     if (silent(module.id, stamp)) {
@@ -234,7 +234,7 @@ void ClosedLoop::feedSensors(const StepEvents& events, double now) {
     pipeline_.onRange(stamp, now, "uwb/" + module.id + "/ranges/" + module.id, module.id,
                       layout.target_anchor_id, e.range);
   }
-  for (const AoaEvent& e : events.aoa) {
+  for (const sim::AoaEvent& e : events.aoa) {
     const AoaBoard& board = layout.aoa_boards[e.board];
     const double stamp = kClockStart + e.t;
     if (silent(board.id, stamp)) {
@@ -242,7 +242,7 @@ void ClosedLoop::feedSensors(const StepEvents& events, double now) {
     }
     locator_.addBearing(board.id, e.sample.azimuth, e.sample.elevation, e.sample.rssi, stamp);
   }
-  for (const TdoaEvent& e : events.tdoa) {
+  for (const sim::TdoaEvent& e : events.tdoa) {
     const std::size_t ref = config_.world.tdoa_reference;
     const double variance = config_.world.tdoa_sigma * config_.world.tdoa_sigma;
     std::size_t k = 0;
@@ -367,5 +367,5 @@ void ClosedLoop::sample(double now) {
   metrics_.add(s);
 }
 
-}  // namespace sim
+}  // namespace evaluation
 }  // namespace radio_follow

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "radio_follow/sim/homing_trial.hpp"
+#include "radio_follow/evaluation/homing_trial.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include "radio_follow/common/angles.hpp"
 
 namespace radio_follow {
-namespace sim {
+namespace evaluation {
 
 std::vector<HomingNoise> seed000NoiseConfigurations() {
   return {
@@ -29,7 +29,7 @@ HomingResult runHomingTrial(const HomingStep& controller, double target_x, doubl
   auto uniform = [&rng](double half) {
     return half > 0.0 ? std::uniform_real_distribution<double>(-half, half)(rng) : 0.0;
   };
-  UnicycleRobot robot(config.robot);
+  sim::UnicycleRobot robot(config.robot);
   const double dt = 1.0 / config.rate;
   HomingResult result;
   HomingCommand command;
@@ -128,5 +128,5 @@ HomingSummary summarize(const std::vector<HomingResult>& results) {
   return s;
 }
 
-}  // namespace sim
+}  // namespace evaluation
 }  // namespace radio_follow

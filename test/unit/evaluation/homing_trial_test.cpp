@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "radio_follow/sim/homing_trial.hpp"
+#include "radio_follow/evaluation/homing_trial.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include "radio_follow/control/homing_controller.hpp"
 
 namespace radio_follow {
-namespace sim {
+namespace evaluation {
 namespace {
 
 /// A controller that trusts each reading: turn towards the bearing, drive when facing it,
@@ -119,5 +119,5 @@ TEST(HomingTrial, HomingControllerReachesBeaconsInEveryQuadrantUnderTheWorstNois
 }
 
 }  // namespace
-}  // namespace sim
+}  // namespace evaluation
 }  // namespace radio_follow

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "radio_follow/tools/error_statistics.hpp"
+#include "radio_follow/evaluation/error_statistics.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,6 +8,7 @@
 #include "radio_follow/common/angles.hpp"
 
 namespace radio_follow {
+namespace evaluation {
 namespace {
 
 TEST(ErrorSummary, QuantilesOfKnownValues) {
@@ -57,4 +58,5 @@ TEST(ErrorStatistics, SplitsByDirectionAndDistance) {
 }
 
 }  // namespace
+}  // namespace evaluation
 }  // namespace radio_follow

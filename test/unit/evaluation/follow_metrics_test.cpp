@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "radio_follow/sim/follow_metrics.hpp"
+#include "radio_follow/evaluation/follow_metrics.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <string>
 
 namespace radio_follow {
-namespace sim {
+namespace evaluation {
 namespace {
 
 /// The person walks along +x at 1 m/s; the robot trails `lag` metres behind at a
@@ -189,5 +189,5 @@ TEST(FollowMetrics, CsvHasAHeaderAndOneRowPerSample) {
 }
 
 }  // namespace
-}  // namespace sim
+}  // namespace evaluation
 }  // namespace radio_follow

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "radio_follow/tools/error_statistics.hpp"
+#include "radio_follow/evaluation/error_statistics.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,6 +10,7 @@
 #include "radio_follow/common/angles.hpp"
 
 namespace radio_follow {
+namespace evaluation {
 
 double quantile(std::vector<double> values, double q) {
   if (values.empty()) {
@@ -131,4 +132,5 @@ std::string ErrorStatistics::toJson() const {
   return out.str();
 }
 
+}  // namespace evaluation
 }  // namespace radio_follow

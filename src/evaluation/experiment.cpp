@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "radio_follow/sim/experiment.hpp"
+#include "radio_follow/evaluation/experiment.hpp"
 
 #include <yaml-cpp/yaml.h>
 
@@ -12,7 +12,7 @@
 #include "radio_follow/common/yaml_params.hpp"
 
 namespace radio_follow {
-namespace sim {
+namespace evaluation {
 namespace {
 
 template <typename... Args>
@@ -144,5 +144,5 @@ ExperimentResult runExperiment(const Experiment& experiment, const std::string& 
   return result;
 }
 
-}  // namespace sim
+}  // namespace evaluation
 }  // namespace radio_follow

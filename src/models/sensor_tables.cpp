@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "radio_follow/sim/sensor_tables.hpp"
+#include "radio_follow/models/sensor_tables.hpp"
 
 #include <algorithm>
 #include <array>
@@ -9,7 +9,7 @@
 #include "radio_follow/common/angles.hpp"
 
 namespace radio_follow {
-namespace sim {
+namespace models {
 namespace {
 
 // Thesis Table 3.1: true distance, measured mean, standard deviation (metres).
@@ -197,5 +197,5 @@ AoaError aoaError(AoaBoardKind kind, double azimuth, double distance) {
   return e;
 }
 
-}  // namespace sim
+}  // namespace models
 }  // namespace radio_follow

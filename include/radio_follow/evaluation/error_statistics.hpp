@@ -7,6 +7,7 @@
 #include <vector>
 
 namespace radio_follow {
+namespace evaluation {
 
 /// Nearest-rank quantile (q in [0, 1]); NaN for no values.
 double quantile(std::vector<double> values, double q);
@@ -59,4 +60,5 @@ class ErrorStatistics {
   std::array<std::vector<double>, kBandEdges.size() + 1> bands_;
 };
 
+}  // namespace evaluation
 }  // namespace radio_follow

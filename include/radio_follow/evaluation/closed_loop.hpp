@@ -12,12 +12,12 @@
 #include "radio_follow/control/target_motion.hpp"
 #include "radio_follow/control/velocity_law.hpp"
 #include "radio_follow/estimation/locator.hpp"
-#include "radio_follow/sim/follow_metrics.hpp"
+#include "radio_follow/evaluation/follow_metrics.hpp"
 #include "radio_follow/sim/target_path.hpp"
 #include "radio_follow/sim/world.hpp"
 
 namespace radio_follow {
-namespace sim {
+namespace evaluation {
 
 /// What the control laws take from an estimate: AMBIGUOUS is its own quality; a position
 /// or a direction with a finite range and bearing is usable; anything else is lost.
@@ -42,8 +42,8 @@ enum class FollowController { kVelocity, kPathFollower };
 /// simulator.launch get it (loadClosedLoopConfig reads the same shipped files).
 struct ClosedLoopConfig {
   Layout layout;
-  Scenario scenario;
-  WorldConfig world;
+  sim::Scenario scenario;
+  sim::WorldConfig world;
   double step_rate = 100.0;  ///< simulator physics steps per second
   double cmd_timeout = 0.5;  ///< s without a command before the base stops
   LocatorConfig locator;
@@ -94,7 +94,7 @@ class ClosedLoop {
   bool step();
 
   const FollowMetrics& metrics() const { return metrics_; }
-  const World& world() const { return world_; }
+  const sim::World& world() const { return world_; }
   const LocatorStats& locatorStats() const { return locator_.stats(); }
   /// One controller tick's command, on the simulator's clock (scenario time + 1 s, as
   /// the ROS simulator stamps).
@@ -117,7 +117,7 @@ class ClosedLoop {
   };
 
   bool silent(const std::string& sensor, double t) const;
-  void feedSensors(const StepEvents& events, double now);
+  void feedSensors(const sim::StepEvents& events, double now);
   void runLocator(double now);
   void runController(double now);
   void sample(double now);
@@ -125,7 +125,7 @@ class ClosedLoop {
   std::optional<Pose2> poseAt(double t) const;
 
   ClosedLoopConfig config_;
-  World world_;
+  sim::World world_;
   Locator locator_;
   control::CommandPipeline pipeline_;
   control::VelocityLaw velocity_law_;
@@ -144,5 +144,5 @@ class ClosedLoop {
   std::vector<CommandSample> commands_;
 };
 
-}  // namespace sim
+}  // namespace evaluation
 }  // namespace radio_follow

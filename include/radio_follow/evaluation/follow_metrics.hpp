@@ -7,7 +7,7 @@
 #include <vector>
 
 namespace radio_follow {
-namespace sim {
+namespace evaluation {
 
 /// One moment of a follow run, as the evaluator samples it (world = odometry frame).
 struct FollowSample {
@@ -97,5 +97,5 @@ class FollowMetrics {
   std::vector<FollowSample> samples_;
 };
 
-}  // namespace sim
+}  // namespace evaluation
 }  // namespace radio_follow

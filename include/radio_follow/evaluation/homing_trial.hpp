@@ -11,7 +11,7 @@
 #include "radio_follow/sim/robot.hpp"
 
 namespace radio_follow {
-namespace sim {
+namespace evaluation {
 
 /// Seed 000 Table 2: uniform noise within +-angle on the bearing and
 /// +-(distance_fraction * d + distance_offset) on the distance.
@@ -48,7 +48,7 @@ struct HomingCommand {
 using HomingStep = std::function<HomingCommand(const HomingMeasurement&)>;
 
 struct HomingTrialConfig {
-  RobotLimits robot;
+  sim::RobotLimits robot;
   double rate = 10.0;           ///< controller and measurement rate, Hz
   double time_limit = 120.0;    ///< s
   double success_radius = 1.0;  ///< m (seed 000: "< 1 m from the actual target")
@@ -95,5 +95,5 @@ struct HomingSummary {
 };
 HomingSummary summarize(const std::vector<HomingResult>& results);
 
-}  // namespace sim
+}  // namespace evaluation
 }  // namespace radio_follow

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "radio_follow/sim/follow_metrics.hpp"
+#include "radio_follow/evaluation/follow_metrics.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,10 +8,10 @@
 #include <sstream>
 
 #include "radio_follow/common/angles.hpp"
-#include "radio_follow/tools/error_statistics.hpp"
+#include "radio_follow/evaluation/error_statistics.hpp"
 
 namespace radio_follow {
-namespace sim {
+namespace evaluation {
 namespace {
 
 /// Path points closer than this are merged: the person's path at 5 cm resolution.
@@ -255,5 +255,5 @@ std::string FollowMetrics::toCsv() const {
   return out.str();
 }
 
-}  // namespace sim
+}  // namespace evaluation
 }  // namespace radio_follow

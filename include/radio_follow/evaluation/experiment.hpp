@@ -6,10 +6,10 @@
 #include <utility>
 #include <vector>
 
-#include "radio_follow/sim/closed_loop.hpp"
+#include "radio_follow/evaluation/closed_loop.hpp"
 
 namespace radio_follow {
-namespace sim {
+namespace evaluation {
 
 /// What an experiment asserts; absent thresholds are not checked (test/experiments.yaml).
 struct ExperimentCheck {
@@ -59,5 +59,5 @@ struct ExperimentResult {
 ExperimentResult runExperiment(const Experiment& experiment, const std::string& config_dir,
                                int seed);
 
-}  // namespace sim
+}  // namespace evaluation
 }  // namespace radio_follow
