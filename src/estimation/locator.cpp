@@ -13,28 +13,6 @@
 
 namespace radio_follow {
 
-const char* toString(TargetStatus status) {
-  switch (status) {
-    case TargetStatus::kUnset:
-      return "UNSET";
-    case TargetStatus::kOk:
-      return "OK";
-    case TargetStatus::kHeadingOnly:
-      return "HEADING_ONLY";
-    case TargetStatus::kDegraded:
-      return "DEGRADED";
-    case TargetStatus::kAmbiguous:
-      return "AMBIGUOUS";
-    case TargetStatus::kLost:
-      break;
-  }
-  return "LOST";
-}
-
-bool hasPosition(TargetStatus status) {
-  return status == TargetStatus::kOk || status == TargetStatus::kDegraded;
-}
-
 namespace {
 
 /// A second solution closer than this to the first is the same answer, m.

@@ -28,27 +28,6 @@ bool rateOk(double hz) {
 
 }  // namespace
 
-control::EstimateQuality estimateQuality(TargetStatus status, double range, double bearing) {
-  if (status == TargetStatus::kAmbiguous) {
-    return control::EstimateQuality::kAmbiguous;
-  }
-  const bool known = hasPosition(status) || status == TargetStatus::kHeadingOnly;
-  return known && std::isfinite(bearing) && std::isfinite(range) ? control::EstimateQuality::kUsable
-                                                                 : control::EstimateQuality::kLost;
-}
-
-control::TargetPolar targetPolar(TargetStatus status, double range, double bearing,
-                                 std::optional<double> receding_speed, double module_gap) {
-  control::TargetPolar t;
-  t.receding_speed = receding_speed.value_or(0.0);
-  t.module_gap = module_gap;
-  t.range = range;
-  t.bearing = bearing;
-  t.range_valid = hasPosition(status);
-  t.degraded = status == TargetStatus::kDegraded;
-  return t;
-}
-
 void ClosedLoopConfig::validate() const {
   world.validate();
   require(std::isfinite(step_rate) && step_rate >= 10.0 && step_rate <= 10000.0, "step_rate",
@@ -81,8 +60,8 @@ ClosedLoopConfig loadClosedLoopConfig(const std::string& dir, const std::string&
   ClosedLoopConfig c;
   c.controller = controller;
   c.layout = loadLayoutFile(dir + "/layouts/" + layout + ".yaml");
-  c.scenario =
-      sim::loadScenarioFile(dir + "/scenarios/" + scenario + ".yaml", static_cast<std::uint64_t>(seed));
+  c.scenario = sim::loadScenarioFile(dir + "/scenarios/" + scenario + ".yaml",
+                                     static_cast<std::uint64_t>(seed));
 
   // simulator.launch: config/simulator.yaml, seed from the launch.
   const YamlParams simulator = YamlParams::fromFile(dir + "/simulator.yaml");
@@ -190,8 +169,8 @@ bool ClosedLoop::step() {
   }
   // The base stops by itself when its command stream stops.
   const bool fresh = world_.time() + kClockStart - command_time_ <= config_.cmd_timeout;
-  const sim::StepEvents events = world_.step(fresh ? command_.linear : 0.0,
-                                        fresh ? command_.angular : 0.0, 1.0 / config_.step_rate);
+  const sim::StepEvents events = world_.step(
+      fresh ? command_.linear : 0.0, fresh ? command_.angular : 0.0, 1.0 / config_.step_rate);
   const double now = kClockStart + world_.time();
   poses_.push_back(PoseAt{now, world_.robot().pose()});
   truth_.emplace_back(now, world_.targetInRobot());

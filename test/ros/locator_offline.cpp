@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "radio_follow/ros/locator_node.hpp"
-#include "radio_follow/ros/locator_replay.hpp"
+#include "radio_follow/ros/locator/locator_node.hpp"
+#include "radio_follow/ros/replay/locator_replay.hpp"
 #include "radio_follow/common/yaml_params.hpp"
 
 namespace rf = radio_follow;

@@ -3,7 +3,7 @@
 // with the test packet builder, interleaved with malformed datagrams. Checks the
 // published distance differences and that the bad datagrams are counted in the
 // diagnostics without interrupting the stream.
-#include "radio_follow/ros/tdoa_driver.hpp"
+#include "radio_follow/ros/drivers/tdoa_driver.hpp"
 
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <gtest/gtest.h>

@@ -12,21 +12,13 @@
 #include "radio_follow/control/target_motion.hpp"
 #include "radio_follow/control/velocity_law.hpp"
 #include "radio_follow/estimation/locator.hpp"
+#include "radio_follow/evaluation/follow_inputs.hpp"
 #include "radio_follow/evaluation/follow_metrics.hpp"
 #include "radio_follow/sim/target_path.hpp"
 #include "radio_follow/sim/world.hpp"
 
 namespace radio_follow {
 namespace evaluation {
-
-/// What the control laws take from an estimate: AMBIGUOUS is its own quality; a position
-/// or a direction with a finite range and bearing is usable; anything else is lost.
-control::EstimateQuality estimateQuality(TargetStatus status, double range, double bearing);
-
-/// The velocity law's input from an estimate: HEADING_ONLY has no range, DEGRADED is
-/// flagged, the target's receding speed when known, the nearest module's gap to the stop.
-control::TargetPolar targetPolar(TargetStatus status, double range, double bearing,
-                                 std::optional<double> receding_speed, double module_gap);
 
 /// A sensor that goes silent for a while (an unplugged cable, a flat battery): its
 /// events are dropped from `at` for `duration` scenario seconds.
