@@ -21,7 +21,7 @@ std::vector<std::vector<std::uint8_t>> typicalPackets() {
   const std::uint64_t addresses[] = {0x2000, 0x2002, 0x2001};
   for (int seq = 0; seq < 64; ++seq) {
     for (std::uint64_t address : addresses) {
-      packets.push_back(TdoaPacketBuilder(address, static_cast<std::uint8_t>(seq))
+      packets.push_back(drivers::TdoaPacketBuilder(address, static_cast<std::uint8_t>(seq))
                             .mac(0x5A84)
                             .timestamp(1000000000ULL * seq + address, 40)
                             .quality(-80.5, -88.25, 2, 35.5)

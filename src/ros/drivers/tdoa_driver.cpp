@@ -23,7 +23,7 @@ constexpr double kMaxBlinkRate = 100.0;
 
 TdoaDriverNode::TdoaDriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh) {
   params_ = loadStrict<Params>(private_nh);
-  receiver_ = std::make_unique<TdoaReceiver>(params_.differenceConfig(), params_.group_window);
+  receiver_ = std::make_unique<drivers::TdoaReceiver>(params_.differenceConfig(), params_.group_window);
 
   pub_ = nh.advertise<TdoaMeasurements>("measurements", kQueueDepth);
   queue_ = std::make_unique<drivers::DeliveryQueue<TdoaMeasurements>>(
@@ -47,12 +47,12 @@ TdoaDriverNode::TdoaDriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
   timer_ =
       nh.createTimer(ros::Duration(params_.group_window / 2.0), &TdoaDriverNode::onTimer, this);
 
-  TdoaUdpTransport::Config config;
+  drivers::TdoaUdpTransport::Config config;
   config.address = params_.address;
   config.port = static_cast<std::uint16_t>(params_.port);
   config.initial_backoff = params_.initial_backoff;
   config.max_backoff = params_.max_backoff;
-  transport_ = std::make_unique<TdoaUdpTransport>(
+  transport_ = std::make_unique<drivers::TdoaUdpTransport>(
       config, [this](const std::uint8_t* data, std::size_t size) { onDatagram(data, size); },
       [this](const std::string& what, double retry_in) { onSocketError(what, retry_in); });
   transport_->start();
@@ -72,14 +72,14 @@ TdoaDriverNode::~TdoaDriverNode() {
 void TdoaDriverNode::onDatagram(const std::uint8_t* data, std::size_t size) {
   std::lock_guard<std::mutex> lock(mutex_);
   last_datagram_ = ros::WallTime::now();
-  const TdoaDecodeError error =
+  const drivers::TdoaDecodeError error =
       receiver_->onDatagram(data, size, ros::Time::now().toSec(), &blinks_);
-  const TdoaStats& stats = receiver_->stats();
+  const drivers::TdoaStats& stats = receiver_->stats();
   if (stats.rejected() != last_logged_rejections_) {
     last_logged_rejections_ = stats.rejected();
     // One line per 5 s at most, however many packets are bad.
     ROS_WARN_THROTTLE(5.0, "tdoa_driver: dropped a datagram (%s); %llu of %llu dropped so far",
-                      error == TdoaDecodeError::kOk ? "unknown anchor, missing TLV or duplicate"
+                      error == drivers::TdoaDecodeError::kOk ? "unknown anchor, missing TLV or duplicate"
                                                     : toString(error),
                       static_cast<unsigned long long>(stats.rejected()),
                       static_cast<unsigned long long>(stats.packets));
@@ -107,13 +107,13 @@ void TdoaDriverNode::onTimer(const ros::TimerEvent&) {
   diagnostics_.update();
 }
 
-void TdoaDriverNode::publish(const std::vector<TdoaBlink>& blinks) {
+void TdoaDriverNode::publish(const std::vector<drivers::TdoaBlink>& blinks) {
   const auto& anchors = receiver_->config().anchors;
   for (const auto& blink : blinks) {
     TdoaMeasurements msg;
     msg.header.stamp = ros::Time(blink.first_arrival);
     msg.header.frame_id = params_.frame_id;
-    msg.tag_id = tdoaTagIdString(blink.tag);
+    msg.tag_id = drivers::tdoaTagIdString(blink.tag);
     for (const auto& d : blink.differences) {
       TdoaDifference out;
       out.anchor_a = anchors[d.anchor_a].id;
@@ -131,7 +131,7 @@ void TdoaDriverNode::publish(const std::vector<TdoaBlink>& blinks) {
 
 void TdoaDriverNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
   std::lock_guard<std::mutex> lock(mutex_);
-  const TdoaStats& s = receiver_->stats();
+  const drivers::TdoaStats& s = receiver_->stats();
   const ros::WallTime now = ros::WallTime::now();
   const double span = std::max((now - last_diagnosis_).toSec(), 1e-3);
   const double silence = (now - last_datagram_).toSec();
@@ -149,8 +149,8 @@ void TdoaDriverNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& statu
   status.add("publish queue peak", queue_->peak());
   status.add("implausible differences", s.implausible_differences);
   status.add("rejected", s.rejected());
-  for (std::size_t i = 1; i < kTdoaDecodeErrorCount; ++i) {
-    status.add(std::string("rejected: ") + toString(static_cast<TdoaDecodeError>(i)),
+  for (std::size_t i = 1; i < drivers::kTdoaDecodeErrorCount; ++i) {
+    status.add(std::string("rejected: ") + toString(static_cast<drivers::TdoaDecodeError>(i)),
                s.decode_errors[i]);
   }
   status.add("rejected: unknown_anchor", s.unknown_anchor);

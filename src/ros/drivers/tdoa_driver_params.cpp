@@ -44,13 +44,13 @@ std::uint64_t parseAddress(const std::string& s, const std::string& name) {
   return std::strtoull(digits.c_str(), nullptr, 16);
 }
 
-TdoaAnchorConfig parseAnchor(XmlRpc::XmlRpcValue& v, const std::string& name) {
+drivers::TdoaAnchorConfig parseAnchor(XmlRpc::XmlRpcValue& v, const std::string& name) {
   if (v.getType() != XmlRpc::XmlRpcValue::TypeStruct || !v.hasMember("id") ||
       !v.hasMember("address") || !v.hasMember("position")) {
     throw ParamError(name, v.toXml(), "a map with id, address and position");
   }
   requireMembers(v, {"id", "address", "position"}, name);
-  TdoaAnchorConfig anchor;
+  drivers::TdoaAnchorConfig anchor;
   anchor.id = normalizeId(text(v["id"], name + ".id", "a string"));
   anchor.address =
       parseAddress(text(v["address"], name + ".address", "a hex string"), name + ".address");
@@ -64,7 +64,7 @@ TdoaAnchorConfig parseAnchor(XmlRpc::XmlRpcValue& v, const std::string& name) {
   return anchor;
 }
 
-std::size_t indexOf(const std::vector<TdoaAnchorConfig>& anchors, const std::string& id) {
+std::size_t indexOf(const std::vector<drivers::TdoaAnchorConfig>& anchors, const std::string& id) {
   std::size_t i = 0;
   while (i < anchors.size() && anchors[i].id != id) {
     ++i;
@@ -120,8 +120,8 @@ void TdoaDriverNode::Params::validate() const {
   differenceConfig().validate();  // anchors, variance, margin, min_anchors vs anchor count
 }
 
-TdoaDifferenceConfig TdoaDriverNode::Params::differenceConfig() const {
-  TdoaDifferenceConfig c;
+drivers::TdoaDifferenceConfig TdoaDriverNode::Params::differenceConfig() const {
+  drivers::TdoaDifferenceConfig c;
   c.anchors = anchors;
   c.master = indexOf(anchors, master);
   c.reference = indexOf(anchors, reference.empty() ? master : reference);

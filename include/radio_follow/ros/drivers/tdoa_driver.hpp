@@ -32,7 +32,7 @@ class TdoaDriverNode {
     std::string address = "0.0.0.0";  ///< Local address to bind.
     int port = 6666;
     std::string frame_id = "base_link";  ///< Frame of the anchor positions.
-    std::vector<TdoaAnchorConfig> anchors;
+    std::vector<drivers::TdoaAnchorConfig> anchors;
     std::string master;          ///< Anchor ID of the clock master (required).
     std::string reference;       ///< Anchor ID differences are taken against; empty = master.
     double group_window = 0.05;  ///< s
@@ -48,7 +48,7 @@ class TdoaDriverNode {
     /// Throws ParamError naming the first invalid value.
     void validate() const;
     /// The core configuration (anchor IDs resolved to indices). Call after validate().
-    TdoaDifferenceConfig differenceConfig() const;
+    drivers::TdoaDifferenceConfig differenceConfig() const;
   };
 
   TdoaDriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh);
@@ -58,13 +58,13 @@ class TdoaDriverNode {
   void onDatagram(const std::uint8_t* data, std::size_t size);
   void onSocketError(const std::string& what, double retry_in);
   void onTimer(const ros::TimerEvent& event);
-  void publish(const std::vector<TdoaBlink>& blinks);
+  void publish(const std::vector<drivers::TdoaBlink>& blinks);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
 
   Params params_;
   std::mutex mutex_;  // guards receiver_, blinks_, last_datagram_, rate counters
-  std::unique_ptr<TdoaReceiver> receiver_;
-  std::vector<TdoaBlink> blinks_;
+  std::unique_ptr<drivers::TdoaReceiver> receiver_;
+  std::vector<drivers::TdoaBlink> blinks_;
   ros::WallTime last_datagram_;
   ros::WallTime last_diagnosis_;
   std::uint64_t packets_at_last_diagnosis_ = 0;
@@ -78,7 +78,7 @@ class TdoaDriverNode {
   ros::Timer timer_;
   diagnostic_updater::Updater diagnostics_;
   std::optional<OutputDiagnostic> output_diagnostic_;  // ticked by the queue's thread
-  std::unique_ptr<TdoaUdpTransport> transport_;
+  std::unique_ptr<drivers::TdoaUdpTransport> transport_;
 };
 
 }  // namespace radio_follow
