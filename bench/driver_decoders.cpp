@@ -43,27 +43,27 @@ void runDecoder(benchmark::State& state, const std::vector<std::string>& lines, 
 }
 
 void BM_DwmDecodeMix(benchmark::State& state) {
-  runDecoder<decltype(&drivers::decodeDwmLine), drivers::DwmMeasurement>(state, kDwmLines, &drivers::decodeDwmLine);
+  runDecoder<decltype(&decodeDwmLine), DwmMeasurement>(state, kDwmLines, &decodeDwmLine);
 }
 BENCHMARK(BM_DwmDecodeMix);
 
 void BM_DwmDecodeLes(benchmark::State& state) {
-  runDecoder<decltype(&drivers::decodeDwmLine), drivers::DwmMeasurement>(state, {kDwmLines[0]}, &drivers::decodeDwmLine);
+  runDecoder<decltype(&decodeDwmLine), DwmMeasurement>(state, {kDwmLines[0]}, &decodeDwmLine);
 }
 BENCHMARK(BM_DwmDecodeLes);
 
 void BM_DwmDecodeLec(benchmark::State& state) {
-  runDecoder<decltype(&drivers::decodeDwmLine), drivers::DwmMeasurement>(state, {kDwmLines[1]}, &drivers::decodeDwmLine);
+  runDecoder<decltype(&decodeDwmLine), DwmMeasurement>(state, {kDwmLines[1]}, &decodeDwmLine);
 }
 BENCHMARK(BM_DwmDecodeLec);
 
 void BM_UudfDecodeMix(benchmark::State& state) {
-  runDecoder<decltype(&drivers::decodeUudfLine), drivers::UudfEvent>(state, kUudfLines, &drivers::decodeUudfLine);
+  runDecoder<decltype(&decodeUudfLine), UudfEvent>(state, kUudfLines, &decodeUudfLine);
 }
 BENCHMARK(BM_UudfDecodeMix);
 
 void BM_UudfDecodeEvent(benchmark::State& state) {
-  runDecoder<decltype(&drivers::decodeUudfLine), drivers::UudfEvent>(state, {kUudfLines[0]}, &drivers::decodeUudfLine);
+  runDecoder<decltype(&decodeUudfLine), UudfEvent>(state, {kUudfLines[0]}, &decodeUudfLine);
 }
 BENCHMARK(BM_UudfDecodeEvent);
 
@@ -73,14 +73,14 @@ void BM_FramerAndDwmDecoder(benchmark::State& state) {
   for (int i = 0; i < 100; ++i) {
     stream += kDwmLines[i % 2] + "\r\n";
   }
-  drivers::LineFramer framer;
-  drivers::DwmMeasurement out;
+  LineFramer framer;
+  DwmMeasurement out;
   std::size_t lines = 0;
   for (auto _ : state) {
     for (std::size_t pos = 0; pos < stream.size(); pos += 64) {
       const std::size_t n = std::min<std::size_t>(64, stream.size() - pos);
       framer.feed(stream.data() + pos, n, 0.0, [&](std::string_view line, double) {
-        benchmark::DoNotOptimize(drivers::decodeDwmLine(line, out));
+        benchmark::DoNotOptimize(decodeDwmLine(line, out));
         ++lines;
       });
     }

@@ -12,6 +12,7 @@
 #include "radio_follow/common/param_error.hpp"
 
 namespace radio_follow {
+namespace estimation {
 
 namespace {
 
@@ -451,4 +452,5 @@ LocatorEstimate Locator::update(double now) {
   return out;
 }
 
+}  // namespace estimation
 }  // namespace radio_follow

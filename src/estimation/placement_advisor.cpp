@@ -14,6 +14,7 @@
 #include "radio_follow/models/sensor_tables.hpp"
 
 namespace radio_follow {
+namespace estimation {
 
 namespace {
 
@@ -314,4 +315,5 @@ PlacementSummary summarize(const Layout& layout, const AdvisorConfig& config) {
   return summary;
 }
 
+}  // namespace estimation
 }  // namespace radio_follow

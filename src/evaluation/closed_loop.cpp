@@ -262,9 +262,10 @@ std::optional<Pose2> ClosedLoop::poseAt(double t) const {
 }
 
 void ClosedLoop::runLocator(double now) {
-  LocatorEstimate estimate = locator_.update(now);
+  estimation::LocatorEstimate estimate = locator_.update(now);
   // Stamped with its newest measurement; LOST with the current time (locator_node).
-  estimate_stamp_ = estimate.status == TargetStatus::kLost ? now : std::max(0.0, estimate.stamp);
+  estimate_stamp_ =
+      estimate.status == estimation::TargetStatus::kLost ? now : std::max(0.0, estimate.stamp);
   const double range = estimate.position.head<2>().norm();
   const double bearing = std::atan2(estimate.position.y(), estimate.position.x());
   // The controller's estimate callback: the safety layer first, then the odometry frame.
@@ -292,7 +293,7 @@ void ClosedLoop::runController(double now) {
     path_law_.reset();
     result = pipeline_.stop(decision.reason);
   } else {
-    const LocatorEstimate& e = *estimate_;  // may_move implies an estimate was heard
+    const estimation::LocatorEstimate& e = *estimate_;  // may_move implies an estimate was heard
     const double range = e.position.head<2>().norm();
     const double bearing = std::atan2(e.position.y(), e.position.x());
     const double module_gap = pipeline_.moduleGap(now);

@@ -36,7 +36,7 @@ struct Options {
   int trials = 200;
   unsigned long seed = 1;
   std::string layouts = "config/layouts";
-  rf::LossConfig range_loss = rf::SolverConfig{}.range_loss;
+  rf::estimation::LossConfig range_loss = rf::estimation::SolverConfig{}.range_loss;
   bool outliers = true;
 };
 
@@ -63,16 +63,17 @@ std::vector<Eigen::Vector3d> grid() {
   return points;
 }
 
-rf::SolveResult coldSolve(const rf::PositionSolver& solver, const rf::ObservationSet& obs,
-                          const rf::InitializerConfig& init) {
-  if (const auto guess = rf::trilaterate(obs.ranges, init)) {
+rf::estimation::SolveResult coldSolve(const rf::estimation::PositionSolver& solver,
+                                      const rf::estimation::ObservationSet& obs,
+                                      const rf::estimation::InitializerConfig& init) {
+  if (const auto guess = rf::estimation::trilaterate(obs.ranges, init)) {
     return solver.solveCold(obs, *guess);
   }
-  return solver.solveMultiStart(obs, rf::multiStartCandidates(obs, init));
+  return solver.solveMultiStart(obs, rf::estimation::multiStartCandidates(obs, init));
 }
 
-rf::SyntheticNoise noiseFor(const Case& c) {
-  rf::SyntheticNoise noise;
+rf::estimation::SyntheticNoise noiseFor(const Case& c) {
+  rf::estimation::SyntheticNoise noise;
   noise.range_sigma = kRangeSigma;
   noise.azimuth_sigma = rf::deg2rad(std::max(c.azimuth_deg, 1.0));
   noise.elevation_sigma = noise.azimuth_sigma;
@@ -84,11 +85,11 @@ void accuracyTable(const Options& opt, const std::vector<Case>& cases) {
       "| layout | az sigma | bearings | well-posed | RMSE/CRLB median | p90 | max | "
       "RMSE, CRLB (m, pooled) | ill-posed RMSE/CRLB median | failures | cold solve median / p99 "
       "(us) |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
-  rf::SolverConfig config;
+  rf::estimation::SolverConfig config;
   config.height = kHeight;
   config.range_loss = opt.range_loss;
-  const rf::PositionSolver solver(config);
-  rf::InitializerConfig init;
+  const rf::estimation::PositionSolver solver(config);
+  rf::estimation::InitializerConfig init;
   init.height = kHeight;
   std::vector<std::vector<double>> by_radius(cases.size());
   for (std::size_t ci = 0; ci < cases.size(); ++ci) {
@@ -106,16 +107,17 @@ void accuracyTable(const Options& opt, const std::vector<Case>& cases) {
     std::vector<double> radius_crlb(11, 0.0);
     const auto points = grid();
     for (const auto& truth : points) {
-      const rf::ObservationSet ideal =
-          rf::idealObservations(layout, truth, noiseFor(c), c.max_bearings);
-      const auto crlb = rf::positionCrlb(rf::fisherInformation(ideal, truth), true);
+      const rf::estimation::ObservationSet ideal =
+          rf::estimation::idealObservations(layout, truth, noiseFor(c), c.max_bearings);
+      const auto crlb =
+          rf::estimation::positionCrlb(rf::estimation::fisherInformation(ideal, truth), true);
       double se = 0.0;
       int n = 0;
       for (int t = 0; t < opt.trials; ++t) {
-        rf::ObservationSet obs = ideal;
-        rf::addGaussianNoise(obs, rng);
+        rf::estimation::ObservationSet obs = ideal;
+        rf::estimation::addGaussianNoise(obs, rng);
         const auto start = std::chrono::steady_clock::now();
-        const rf::SolveResult r = coldSolve(solver, obs, init);
+        const rf::estimation::SolveResult r = coldSolve(solver, obs, init);
         micros.push_back(
             std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start)
                 .count());
@@ -182,39 +184,39 @@ void outlierTable(const Options& opt, const std::vector<Case>& cases) {
       "tracking (warm start from the last epoch), bearing loss = range loss:\n\n| layout | az "
       "sigma | bearings | loss | clean | with "
       "outliers | ratio |\n|---|---|---|---|---|---|---|\n");
-  const std::vector<rf::LossConfig> losses{{rf::LossType::kNone, 1.0},
-                                           {rf::LossType::kHuber, 2.0},
-                                           {rf::LossType::kSoftL1, 1.0},
-                                           {rf::LossType::kCauchy, 1.0},
-                                           {rf::LossType::kCauchy, 2.0}};
+  const std::vector<rf::estimation::LossConfig> losses{{rf::estimation::LossType::kNone, 1.0},
+                                                       {rf::estimation::LossType::kHuber, 2.0},
+                                                       {rf::estimation::LossType::kSoftL1, 1.0},
+                                                       {rf::estimation::LossType::kCauchy, 1.0},
+                                                       {rf::estimation::LossType::kCauchy, 2.0}};
   for (const Case& c : cases) {
     const rf::Layout layout = rf::loadLayoutFile(opt.layouts + "/" + c.layout + ".yaml");
     for (const auto& loss : losses) {
-      rf::SolverConfig config;
+      rf::estimation::SolverConfig config;
       config.height = kHeight;
       config.range_loss = config.bearing_loss = loss;
-      const rf::PositionSolver solver(config);
+      const rf::estimation::PositionSolver solver(config);
       double se[2] = {0.0, 0.0};
       int n[2] = {0, 0};
       for (int pass = 0; pass < 2; ++pass) {
         std::mt19937_64 rng(opt.seed);
         std::uniform_real_distribution<double> unit(0.0, 1.0);
         for (const auto& truth : grid()) {
-          const rf::ObservationSet ideal =
-              rf::idealObservations(layout, truth, noiseFor(c), c.max_bearings);
+          const rf::estimation::ObservationSet ideal =
+              rf::estimation::idealObservations(layout, truth, noiseFor(c), c.max_bearings);
           // Tracking: the first epoch starts cold (and clean), the others from the last
           // estimate, as in the node.
           std::optional<Eigen::Vector3d> warm;
           for (int t = 0; t < opt.trials; ++t) {
-            rf::ObservationSet obs = ideal;
-            rf::addGaussianNoise(obs, rng);
+            rf::estimation::ObservationSet obs = ideal;
+            rf::estimation::addGaussianNoise(obs, rng);
             const double u = unit(rng);
             const auto which = static_cast<std::size_t>(unit(rng) * obs.ranges.size());
             if (pass == 1 && u < 0.1 && warm)
               obs.ranges[which].range += 2.0;
-            rf::InitializerConfig init;
+            rf::estimation::InitializerConfig init;
             init.height = kHeight;
-            const rf::SolveResult r =
+            const rf::estimation::SolveResult r =
                 warm ? solver.solve(obs, *warm) : coldSolve(solver, obs, init);
             if (r.success) {
               warm = r.position;
@@ -227,8 +229,8 @@ void outlierTable(const Options& opt, const std::vector<Case>& cases) {
       const double clean = std::sqrt(se[0] / n[0]);
       const double dirty = std::sqrt(se[1] / n[1]);
       std::printf("| %s | %.0f | %d | %s %.0f | %.3f | %.3f | %.2f |\n", c.layout.c_str(),
-                  c.azimuth_deg, c.max_bearings, rf::toString(loss.type).c_str(), loss.scale, clean,
-                  dirty, dirty / clean);
+                  c.azimuth_deg, c.max_bearings, rf::estimation::toString(loss.type).c_str(),
+                  loss.scale, clean, dirty, dirty / clean);
     }
   }
 }
@@ -247,7 +249,7 @@ int main(int argc, char** argv) {
       opt.layouts = argv[i + 1];
     } else if (key == "--range-loss") {
       try {
-        opt.range_loss.type = rf::parseLossType(argv[i + 1], "--range-loss");
+        opt.range_loss.type = rf::estimation::parseLossType(argv[i + 1], "--range-loss");
       } catch (const std::exception& e) {
         std::fprintf(stderr, "%s\n", e.what());
         return 2;
@@ -273,7 +275,7 @@ int main(int argc, char** argv) {
         "Target on the plane z = %.1f m (2D mode), range sigma %.2f m, elevation sigma = "
         "azimuth sigma, %d trials per grid point (1-10 m x 12 directions), range "
         "loss %s %.1f, bearing loss huber 2, cold start (trilateration or multi-start).\n\n",
-        kHeight, kRangeSigma, opt.trials, rf::toString(opt.range_loss.type).c_str(),
+        kHeight, kRangeSigma, opt.trials, rf::estimation::toString(opt.range_loss.type).c_str(),
         opt.range_loss.scale);
     accuracyTable(opt, {{"spot_twr", 0, 0},
                         {"tracked", 0, 0},

@@ -38,13 +38,13 @@ struct Options {
   std::optional<std::string> compare;
   std::string out;
   std::optional<std::string> plot_script;
-  rf::AdvisorConfig config;
+  rf::estimation::AdvisorConfig config;
 };
 
 struct Evaluated {
   std::string name;
   rf::Layout layout;
-  rf::PlacementSummary summary;
+  rf::estimation::PlacementSummary summary;
 };
 
 const char* kUsage =
@@ -110,14 +110,14 @@ std::string csvNumber(double value) {
   return std::isfinite(value) ? buffer : "inf";
 }
 
-void writeMap(const fs::path& path, const rf::BoundMap& map) {
+void writeMap(const fs::path& path, const rf::estimation::BoundMap& map) {
   std::ofstream out(path);
   out << "x,y,distance,direction_deg,rms_bound,worst_axis_bound,bearings,observable\n";
   for (std::size_t iy = 0; iy < map.coordinates.size(); ++iy) {
     for (std::size_t ix = 0; ix < map.coordinates.size(); ++ix) {
       const double x = map.coordinates[ix];
       const double y = map.coordinates[iy];
-      const rf::PointBound& b = map.at(ix, iy);
+      const rf::estimation::PointBound& b = map.at(ix, iy);
       out << csvNumber(x) << ',' << csvNumber(y) << ',' << csvNumber(std::hypot(x, y)) << ','
           << csvNumber(rf::rad2deg(std::atan2(y, x))) << ',' << csvNumber(b.rms) << ','
           << csvNumber(b.worst_axis) << ',' << b.bearings << ',' << (b.observable ? 1 : 0) << '\n';
@@ -128,8 +128,8 @@ void writeMap(const fs::path& path, const rf::BoundMap& map) {
   }
 }
 
-void writeSummary(const fs::path& path, const Evaluated& e, const rf::AdvisorConfig& config,
-                  const std::string& csv_name) {
+void writeSummary(const fs::path& path, const Evaluated& e,
+                  const rf::estimation::AdvisorConfig& config, const std::string& csv_name) {
   std::ofstream out(path);
   out << "{\n  \"layout\": " << jsonString(e.name) << ",\n  \"map_csv\": " << jsonString(csv_name)
       << ",\n  \"extent\": " << jsonNumber(config.extent)
@@ -189,7 +189,7 @@ std::string cell(double value) {
   return buffer;
 }
 
-void print(const Evaluated& e, const rf::AdvisorConfig& config) {
+void print(const Evaluated& e, const rf::estimation::AdvisorConfig& config) {
   std::printf("== %s (%s bound, target at %.2f m height)\n", e.name.c_str(),
               config.planar ? "2D" : "3D", config.target_height);
   std::printf("  ring    median sqrt(tr CRLB)   worst    unobservable\n");
@@ -218,9 +218,9 @@ Evaluated evaluate(const std::string& path, const Options& opt, const fs::path& 
   Evaluated e;
   e.name = fs::path(path).stem().string();
   e.layout = rf::loadLayoutFile(path);
-  e.summary = rf::summarize(e.layout, opt.config);
+  e.summary = rf::estimation::summarize(e.layout, opt.config);
   const std::string csv = e.name + "_map.csv";
-  writeMap(out / csv, rf::computeMap(e.layout, opt.config));
+  writeMap(out / csv, rf::estimation::computeMap(e.layout, opt.config));
   writeSummary(out / (e.name + "_summary.json"), e, opt.config, csv);
   print(e, opt.config);
   return e;

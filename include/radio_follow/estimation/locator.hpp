@@ -19,6 +19,7 @@
 #include "radio_follow/estimation/target_status.hpp"
 
 namespace radio_follow {
+namespace estimation {
 
 /// The locator's tuning (the sensor positions come from the Layout).
 struct LocatorConfig {
@@ -180,4 +181,5 @@ class Locator {
   TimePolicy time_;
 };
 
+}  // namespace estimation
 }  // namespace radio_follow

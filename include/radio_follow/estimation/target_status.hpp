@@ -6,6 +6,7 @@
 #include <cstdint>
 
 namespace radio_follow {
+namespace estimation {
 
 /// Same values as TargetEstimate.STATUS_*. Zero is no status: a zero-initialised message
 /// must never read as a usable estimate.
@@ -45,4 +46,5 @@ constexpr std::uint8_t kSourceTwr = 1;
 constexpr std::uint8_t kSourceTdoa = 2;
 constexpr std::uint8_t kSourceAoa = 4;
 
+}  // namespace estimation
 }  // namespace radio_follow

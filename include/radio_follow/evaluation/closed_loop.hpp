@@ -38,7 +38,7 @@ struct ClosedLoopConfig {
   sim::WorldConfig world;
   double step_rate = 100.0;  ///< simulator physics steps per second
   double cmd_timeout = 0.5;  ///< s without a command before the base stops
-  LocatorConfig locator;
+  estimation::LocatorConfig locator;
   double locator_rate = 20.0;  ///< Hz
   FollowController controller = FollowController::kVelocity;
   control::CommandPipelineParams pipeline;
@@ -87,7 +87,7 @@ class ClosedLoop {
 
   const FollowMetrics& metrics() const { return metrics_; }
   const sim::World& world() const { return world_; }
-  const LocatorStats& locatorStats() const { return locator_.stats(); }
+  const estimation::LocatorStats& locatorStats() const { return locator_.stats(); }
   /// One controller tick's command, on the simulator's clock (scenario time + 1 s, as
   /// the ROS simulator stamps).
   struct CommandSample {
@@ -118,7 +118,7 @@ class ClosedLoop {
 
   ClosedLoopConfig config_;
   sim::World world_;
-  Locator locator_;
+  estimation::Locator locator_;
   control::CommandPipeline pipeline_;
   control::VelocityLaw velocity_law_;
   control::PathFollowLaw path_law_;
@@ -127,7 +127,7 @@ class ClosedLoop {
   Timer locator_timer_;
   Timer controller_timer_;
   Timer evaluator_timer_;
-  std::optional<LocatorEstimate> estimate_;  ///< the newest one published
+  std::optional<estimation::LocatorEstimate> estimate_;  ///< the newest one published
   double estimate_stamp_ = 0.0;
   control::VelocityCommand command_;
   double command_time_ = -1e9;

@@ -16,26 +16,28 @@ namespace evaluation {
 
 /// AMBIGUOUS is its own quality; a position or a direction with a finite range and
 /// bearing is usable; anything else is lost.
-inline control::EstimateQuality estimateQuality(TargetStatus status, double range, double bearing) {
-  if (status == TargetStatus::kAmbiguous) {
+inline control::EstimateQuality estimateQuality(estimation::TargetStatus status, double range,
+                                                double bearing) {
+  if (status == estimation::TargetStatus::kAmbiguous) {
     return control::EstimateQuality::kAmbiguous;
   }
-  const bool known = hasPosition(status) || status == TargetStatus::kHeadingOnly;
+  const bool known = hasPosition(status) || status == estimation::TargetStatus::kHeadingOnly;
   return known && std::isfinite(bearing) && std::isfinite(range) ? control::EstimateQuality::kUsable
                                                                  : control::EstimateQuality::kLost;
 }
 
 /// The velocity law's input: HEADING_ONLY has no range, DEGRADED is flagged, the
 /// target's receding speed when known, the nearest module's gap to the stop.
-inline control::TargetPolar targetPolar(TargetStatus status, double range, double bearing,
-                                        std::optional<double> receding_speed, double module_gap) {
+inline control::TargetPolar targetPolar(estimation::TargetStatus status, double range,
+                                        double bearing, std::optional<double> receding_speed,
+                                        double module_gap) {
   control::TargetPolar t;
   t.receding_speed = receding_speed.value_or(0.0);
   t.module_gap = module_gap;
   t.range = range;
   t.bearing = bearing;
   t.range_valid = hasPosition(status);
-  t.degraded = status == TargetStatus::kDegraded;
+  t.degraded = status == estimation::TargetStatus::kDegraded;
   return t;
 }
 

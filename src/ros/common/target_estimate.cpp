@@ -10,26 +10,27 @@
 namespace radio_follow {
 namespace {
 
-constexpr std::uint8_t value(TargetStatus status) {
+constexpr std::uint8_t value(estimation::TargetStatus status) {
   return static_cast<std::uint8_t>(status);
 }
-static_assert(TargetEstimate::STATUS_UNSET == value(TargetStatus::kUnset) &&
-                  TargetEstimate::STATUS_OK == value(TargetStatus::kOk) &&
-                  TargetEstimate::STATUS_HEADING_ONLY == value(TargetStatus::kHeadingOnly) &&
-                  TargetEstimate::STATUS_DEGRADED == value(TargetStatus::kDegraded) &&
-                  TargetEstimate::STATUS_LOST == value(TargetStatus::kLost) &&
-                  TargetEstimate::STATUS_AMBIGUOUS == value(TargetStatus::kAmbiguous),
-              "TargetStatus must equal TargetEstimate.STATUS_* (locator_node copies them)");
+static_assert(
+    TargetEstimate::STATUS_UNSET == value(estimation::TargetStatus::kUnset) &&
+        TargetEstimate::STATUS_OK == value(estimation::TargetStatus::kOk) &&
+        TargetEstimate::STATUS_HEADING_ONLY == value(estimation::TargetStatus::kHeadingOnly) &&
+        TargetEstimate::STATUS_DEGRADED == value(estimation::TargetStatus::kDegraded) &&
+        TargetEstimate::STATUS_LOST == value(estimation::TargetStatus::kLost) &&
+        TargetEstimate::STATUS_AMBIGUOUS == value(estimation::TargetStatus::kAmbiguous),
+    "estimation::TargetStatus must equal TargetEstimate.STATUS_* (locator_node copies them)");
 
 }  // namespace
 
 bool hasPosition(const TargetEstimate& estimate) {
-  return radio_follow::hasPosition(static_cast<TargetStatus>(estimate.status));
+  return estimation::hasPosition(static_cast<estimation::TargetStatus>(estimate.status));
 }
 
 control::EstimateQuality estimateQuality(const TargetEstimate& estimate) {
-  return evaluation::estimateQuality(static_cast<TargetStatus>(estimate.status), estimate.range,
-                                     estimate.bearing);
+  return evaluation::estimateQuality(static_cast<estimation::TargetStatus>(estimate.status),
+                                     estimate.range, estimate.bearing);
 }
 
 }  // namespace radio_follow

@@ -12,8 +12,8 @@ namespace radio_follow {
 
 control::TargetPolar targetPolar(const TargetEstimate& estimate,
                                  std::optional<double> receding_speed, double module_gap) {
-  return evaluation::targetPolar(static_cast<TargetStatus>(estimate.status), estimate.range,
-                                 estimate.bearing, receding_speed, module_gap);
+  return evaluation::targetPolar(static_cast<estimation::TargetStatus>(estimate.status),
+                                 estimate.range, estimate.bearing, receding_speed, module_gap);
 }
 
 void VelocityControllerNode::Params::load(const ParamReader& pnh) {

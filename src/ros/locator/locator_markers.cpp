@@ -42,8 +42,9 @@ void color(visualization_msgs::Marker& m, float r, float g, float b, float a) {
 
 }  // namespace
 
-visualization_msgs::MarkerArray locatorMarkers(const Layout& layout, const LocatorConfig& config,
-                                               const LocatorEstimate& estimate,
+visualization_msgs::MarkerArray locatorMarkers(const Layout& layout,
+                                               const estimation::LocatorConfig& config,
+                                               const estimation::LocatorEstimate& estimate,
                                                const ros::Time& stamp) {
   visualization_msgs::MarkerArray array;
   // Sensors come and go between epochs: start from a clean slate every time.
@@ -78,13 +79,13 @@ visualization_msgs::MarkerArray locatorMarkers(const Layout& layout, const Locat
     }
   }
 
-  const double arrow_length = estimate.status == TargetStatus::kLost
+  const double arrow_length = estimate.status == estimation::TargetStatus::kLost
                                   ? config.default_range
                                   : std::max(0.5, estimate.position.head<2>().norm());
   for (std::size_t k = 0; k < estimate.bearings_fresh.size(); ++k) {
     const std::size_t index = estimate.bearings_fresh[k];
     const AoaBoard& board = layout.aoa_boards[index];
-    BearingObservation z;
+    estimation::BearingObservation z;
     z.board = board.position;
     z.rotation = board.orientation.toRotationMatrix();
     z.azimuth = estimate.bearing_angles[k](0);
@@ -107,14 +108,14 @@ visualization_msgs::MarkerArray locatorMarkers(const Layout& layout, const Locat
     array.markers.push_back(m);
   }
 
-  if (estimate.status == TargetStatus::kLost) {
+  if (estimate.status == estimation::TargetStatus::kLost) {
     return array;
   }
   // Small, so that the covariance ring around it stays visible from above.
   auto target = marker(layout, "estimate", 0, visualization_msgs::Marker::SPHERE, stamp);
   target.pose.position = point(estimate.position);
   target.scale.x = target.scale.y = target.scale.z = kEstimateSize;
-  if (estimate.status == TargetStatus::kOk) {
+  if (estimate.status == estimation::TargetStatus::kOk) {
     color(target, 1.0f, 0.2f, 0.2f, 1.0f);
   } else {
     color(target, 1.0f, 0.8f, 0.1f, 1.0f);  // heading only or degraded

@@ -18,7 +18,7 @@ constexpr double kSilentWarnPeriod = 10.0;
 
 }  // namespace
 
-TargetEstimate toMessage(const LocatorEstimate& estimate, const std::string& frame,
+TargetEstimate toMessage(const estimation::LocatorEstimate& estimate, const std::string& frame,
                          const ros::Time& stamp) {
   TargetEstimate msg;
   msg.header.frame_id = frame;
@@ -52,7 +52,7 @@ LocatorNode::LocatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
     params_.validate();
   }
   layout_ = loadLayoutFile(params_.layout_file);  // validated: target anchor set with TWR
-  locator_ = std::make_unique<Locator>(layout_, params_.locator);
+  locator_ = std::make_unique<estimation::Locator>(layout_, params_.locator);
   inputs_ = std::make_unique<LocatorInputs>(*locator_);
   if (params_.uwb_topics.empty() && params_.aoa_topics.empty() && params_.tdoa_topics.empty()) {
     const SensorTopics topics = conventionalTopics(layout_);
@@ -84,8 +84,8 @@ LocatorNode::LocatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
     resolved.push_back(s.getTopic());
   }
   inputs_watch_.emplace(resolved, params_.input_timeout, kSilentWarnPeriod, 0.0);
-  reconfigure_ =
-      makeLocatorReconfigure(private_nh, params_.locator, [this](const LocatorConfig& config) {
+  reconfigure_ = makeLocatorReconfigure(
+      private_nh, params_.locator, [this](const estimation::LocatorConfig& config) {
         if (!locator_->setConfig(config)) {
           ROS_INFO("locator: motion model changed, the filter restarts from the next solve");
         }
@@ -150,7 +150,7 @@ void LocatorNode::watchInputs(const ros::Time& now) {
                inputs_watch_->silenceSeconds(i, now.toSec()), input.messages);
     }
   }
-  const LocatorStats& s = locator_->stats();
+  const estimation::LocatorStats& s = locator_->stats();
   if (s.stale_dropped != last_stats_.stale_dropped) {
     ROS_DEBUG_THROTTLE_NAMED(2.0, "wiring",
                              "locator: %zu measurement(s) dropped, older than max_age %.2f s "
@@ -213,7 +213,7 @@ void LocatorNode::onTdoa(const TdoaMeasurements::ConstPtr& msg) {
 void LocatorNode::onTimer(const ros::TimerEvent& /*event*/) {
   const ros::Time now = ros::Time::now();
   const std::size_t solves_before = locator_->stats().solves;
-  const LocatorEstimate estimate = locator_->update(now.toSec());
+  const estimation::LocatorEstimate estimate = locator_->update(now.toSec());
   if (locator_->stats().solves != solves_before) {
     const double s = locator_->stats().last_solve_seconds;
     solve_seconds_sum_ += s;
@@ -229,10 +229,11 @@ void LocatorNode::onTimer(const ros::TimerEvent& /*event*/) {
   diagnostics_.update();
 }
 
-void LocatorNode::publish(const LocatorEstimate& estimate, const ros::Time& now) {
+void LocatorNode::publish(const estimation::LocatorEstimate& estimate, const ros::Time& now) {
   // The estimate is stamped with its newest measurement; LOST with the current time.
-  const ros::Time stamp =
-      estimate.status == TargetStatus::kLost ? now : ros::Time(std::max(0.0, estimate.stamp));
+  const ros::Time stamp = estimate.status == estimation::TargetStatus::kLost
+                              ? now
+                              : ros::Time(std::max(0.0, estimate.stamp));
   // Always published, LOST included: a controller must hear that the target is gone.
   target_pub_.publish(toMessage(estimate, layout_.fixed_frame, stamp));
   target_diagnostic_->tick(stamp);
@@ -276,7 +277,7 @@ void LocatorNode::publish(const LocatorEstimate& estimate, const ros::Time& now)
   }
 }
 
-void LocatorNode::extendPath(const LocatorEstimate& estimate, const ros::Time& stamp) {
+void LocatorNode::extendPath(const estimation::LocatorEstimate& estimate, const ros::Time& stamp) {
   if (params_.path_length == 0 || (!path_.poses.empty() && stamp == path_.header.stamp)) {
     return;  // no path, or the same estimate again (solving faster than the sensors)
   }
@@ -301,11 +302,11 @@ void LocatorNode::extendPath(const LocatorEstimate& estimate, const ros::Time& s
 }
 
 void LocatorNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
-  const LocatorStats& s = locator_->stats();
-  const KalmanFilter& f = locator_->filter();
-  if (last_status_ == TargetStatus::kOk) {
+  const estimation::LocatorStats& s = locator_->stats();
+  const estimation::KalmanFilter& f = locator_->filter();
+  if (last_status_ == estimation::TargetStatus::kOk) {
     status.summary(diagnostic_msgs::DiagnosticStatus::OK, "tracking");
-  } else if (last_status_ == TargetStatus::kLost) {
+  } else if (last_status_ == estimation::TargetStatus::kLost) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "target lost");
   } else {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN, toString(last_status_));

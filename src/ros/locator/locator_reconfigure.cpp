@@ -9,7 +9,7 @@
 
 namespace radio_follow {
 
-LocatorTuningConfig toTuning(const LocatorConfig& c) {
+LocatorTuningConfig toTuning(const estimation::LocatorConfig& c) {
   LocatorTuningConfig t = LocatorTuningConfig::__getDefault__();
   t.target_height = c.height;
   t.default_range = c.default_range;
@@ -41,7 +41,7 @@ LocatorTuningConfig toTuning(const LocatorConfig& c) {
   return t;
 }
 
-LocatorConfig fromTuning(const LocatorTuningConfig& t, LocatorConfig c) {
+estimation::LocatorConfig fromTuning(const LocatorTuningConfig& t, estimation::LocatorConfig c) {
   c.height = t.target_height;
   c.default_range = t.default_range;
   c.range_sigma = t.range_sigma;
@@ -50,16 +50,17 @@ LocatorConfig fromTuning(const LocatorTuningConfig& t, LocatorConfig c) {
   c.elevation_sigma = deg2rad(t.elevation_sigma_deg);
   c.use_elevation = t.use_elevation;
   c.max_age = t.max_age;
-  c.range_loss = {parseLossType(t.range_loss, "~range_loss"), t.range_loss_scale};
-  c.tdoa_loss = {parseLossType(t.tdoa_loss, "~tdoa_loss"), t.tdoa_loss_scale};
-  c.bearing_loss = {parseLossType(t.bearing_loss, "~bearing_loss"), t.bearing_loss_scale};
-  c.aoa.mode = parseAoaSelectionMode(t.aoa_selection, "~aoa_selection");
+  c.range_loss = {estimation::parseLossType(t.range_loss, "~range_loss"), t.range_loss_scale};
+  c.tdoa_loss = {estimation::parseLossType(t.tdoa_loss, "~tdoa_loss"), t.tdoa_loss_scale};
+  c.bearing_loss = {estimation::parseLossType(t.bearing_loss, "~bearing_loss"),
+                    t.bearing_loss_scale};
+  c.aoa.mode = estimation::parseAoaSelectionMode(t.aoa_selection, "~aoa_selection");
   // The windows are counts: a negative request must fail validation, not wrap around.
   require(t.aoa_rssi_window >= 1, "aoa_rssi_window", t.aoa_rssi_window, "at least 1");
   require(t.aoa_vote_window >= 1, "aoa_vote_window", t.aoa_vote_window, "at least 1");
   c.aoa.rssi_window = static_cast<std::size_t>(t.aoa_rssi_window);
   c.aoa.vote_window = static_cast<std::size_t>(t.aoa_vote_window);
-  c.motion_model = parseMotionModel(t.motion_model, "~motion_model");
+  c.motion_model = estimation::parseMotionModel(t.motion_model, "~motion_model");
   c.process_noise = t.process_noise;
   require(t.measurement_covariance == "fixed" || t.measurement_covariance == "solver",
           "~measurement_covariance", t.measurement_covariance, "fixed or solver");
@@ -75,8 +76,8 @@ LocatorConfig fromTuning(const LocatorTuningConfig& t, LocatorConfig c) {
 }
 
 std::unique_ptr<LocatorReconfigure> makeLocatorReconfigure(
-    const ros::NodeHandle& private_nh, const LocatorConfig& initial,
-    std::function<void(const LocatorConfig&)> apply) {
+    const ros::NodeHandle& private_nh, const estimation::LocatorConfig& initial,
+    std::function<void(const estimation::LocatorConfig&)> apply) {
   return std::make_unique<LocatorReconfigure>(private_nh, initial, toTuning, fromTuning,
                                               std::move(apply));
 }

@@ -83,10 +83,10 @@ bool truthAt(const std::vector<geometry_msgs::PointStamped>& truth, double t,
 
 }  // namespace
 
-ReplayResult replay(const BagData& bag, const Layout& layout, const LocatorConfig& config,
-                    double rate) {
+ReplayResult replay(const BagData& bag, const Layout& layout,
+                    const estimation::LocatorConfig& config, double rate) {
   ReplayResult result;
-  Locator locator(layout, config);
+  estimation::Locator locator(layout, config);
   LocatorInputs inputs(locator);
   const double period = 1.0 / rate;
   std::size_t next = 0;
@@ -129,7 +129,7 @@ std::string toCsv(const ReplayResult& result) {
   out.precision(9);
   out << "t,status,x,y,z,sigma_x,sigma_y,truth_x,truth_y,error\n";
   for (const ReplayRow& r : result.rows) {
-    const LocatorEstimate& e = r.estimate;
+    const estimation::LocatorEstimate& e = r.estimate;
     const bool position = hasPosition(e.status);
     out << r.t << "," << toString(e.status) << ",";
     if (position) {

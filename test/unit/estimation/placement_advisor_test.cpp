@@ -12,6 +12,7 @@
 #include "radio_follow/models/sensor_tables.hpp"
 
 namespace radio_follow {
+namespace estimation {
 namespace {
 
 TwrModule module(const std::string& id, double x, double y, double z) {
@@ -221,4 +222,5 @@ TEST(PlacementAdvisor, RejectsInvalidConfig) {
 }
 
 }  // namespace
+}  // namespace estimation
 }  // namespace radio_follow

@@ -18,7 +18,7 @@ namespace radio_follow {
 /// stamped with its message's header.
 class LocatorInputs {
  public:
-  explicit LocatorInputs(Locator& locator) : locator_(locator) {}
+  explicit LocatorInputs(estimation::Locator& locator) : locator_(locator) {}
 
   /// Each returns how many entries the locator refused (unknown sensor, invalid value).
   std::size_t add(const UwbRanges& msg);
@@ -32,7 +32,7 @@ class LocatorInputs {
   const std::map<std::string, std::size_t>& otherAnchors() const { return other_anchors_; }
 
  private:
-  Locator& locator_;
+  estimation::Locator& locator_;
   std::size_t target_ranges_ = 0;
   std::map<std::string, std::size_t> other_anchors_;
 };

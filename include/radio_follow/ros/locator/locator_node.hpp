@@ -18,10 +18,10 @@
 #include "radio_follow/UwbRanges.h"
 #include "radio_follow/common/input_watch.hpp"
 #include "radio_follow/estimation/locator.hpp"
-#include "radio_follow/ros/locator/locator_inputs.hpp"
-#include "radio_follow/ros/locator/locator_reconfigure.hpp"
 #include "radio_follow/ros/common/output_diagnostic.hpp"
 #include "radio_follow/ros/common/params.hpp"
+#include "radio_follow/ros/locator/locator_inputs.hpp"
+#include "radio_follow/ros/locator/locator_reconfigure.hpp"
 
 namespace radio_follow {
 
@@ -45,7 +45,7 @@ class LocatorNode {
     double input_timeout = 3.0;
     /// Estimates kept in `target_path` (nav_msgs/Path); 0 = no path topic.
     int path_length = 200;
-    LocatorConfig locator;  ///< the core's tuning
+    estimation::LocatorConfig locator;  ///< the core's tuning
 
     /// Reads the private parameters from `source`: the node's namespace (ParamReader) or
     /// a YamlParams (a parameter file, for tools without a master), the same keys either
@@ -62,20 +62,20 @@ class LocatorNode {
   void onBearing(const AoaBearing::ConstPtr& msg);
   void onTdoa(const TdoaMeasurements::ConstPtr& msg);
   void onTimer(const ros::TimerEvent& event);
-  void publish(const LocatorEstimate& estimate, const ros::Time& now);
+  void publish(const estimation::LocatorEstimate& estimate, const ros::Time& now);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
   /// A message arrived on input `index` (subscribers_ order).
   void noteInput(std::size_t index);
   /// Warns about silent inputs (rationed per input) and logs new measurement drops.
   void watchInputs(const ros::Time& now);
-  void extendPath(const LocatorEstimate& estimate, const ros::Time& stamp);
+  void extendPath(const estimation::LocatorEstimate& estimate, const ros::Time& stamp);
   template <typename Message>
   void subscribe(ros::NodeHandle& nh, const std::string& topic,
                  void (LocatorNode::*callback)(const typename Message::ConstPtr&));
 
   Params params_;
   Layout layout_;
-  std::unique_ptr<Locator> locator_;
+  std::unique_ptr<estimation::Locator> locator_;
   std::unique_ptr<LocatorInputs> inputs_;
   std::unique_ptr<LocatorReconfigure> reconfigure_;  ///< live tuning, after the params load
   std::vector<ros::Subscriber> subscribers_;
@@ -91,9 +91,9 @@ class LocatorNode {
   std::optional<OutputDiagnostic> pose_diagnostic_;
   std::optional<InputWatch> inputs_watch_;  ///< one entry per subscriber, resolved names
   ros::Time last_tick_;                     ///< zero until the first timer tick
-  LocatorStats last_stats_;                 ///< drop counters at the last tick
+  estimation::LocatorStats last_stats_;     ///< drop counters at the last tick
   ros::Timer timer_;
-  TargetStatus last_status_ = TargetStatus::kLost;
+  estimation::TargetStatus last_status_ = estimation::TargetStatus::kLost;
   std::size_t ignored_messages_ = 0;
   double solve_seconds_sum_ = 0.0;
   double solve_seconds_max_ = 0.0;
@@ -104,12 +104,13 @@ class LocatorNode {
 /// (2D) or sphere (3D) per range around its module, an arrow per fresh bearing from its
 /// board (selected ones green, ignored ones grey), the estimate (a small sphere) and the
 /// 2-sigma ellipse of its xy position as a ring above it (3D mode: the ellipsoid too).
-visualization_msgs::MarkerArray locatorMarkers(const Layout& layout, const LocatorConfig& config,
-                                               const LocatorEstimate& estimate,
+visualization_msgs::MarkerArray locatorMarkers(const Layout& layout,
+                                               const estimation::LocatorConfig& config,
+                                               const estimation::LocatorEstimate& estimate,
                                                const ros::Time& stamp);
 
 /// Converts the core's estimate to the message (frame = the layout's fixed frame).
-TargetEstimate toMessage(const LocatorEstimate& estimate, const std::string& frame,
+TargetEstimate toMessage(const estimation::LocatorEstimate& estimate, const std::string& frame,
                          const ros::Time& stamp);
 
 }  // namespace radio_follow

@@ -43,7 +43,7 @@ BagData loadBag(const std::string& path, const std::string& truth_topic);
 /// One locator update of a replay.
 struct ReplayRow {
   double t = 0.0;  ///< update time (bag time), s
-  LocatorEstimate estimate;
+  estimation::LocatorEstimate estimate;
   bool has_truth = false;
   Eigen::Vector2d truth = Eigen::Vector2d::Zero();  ///< robot frame, at the estimate's stamp
   double error = 0.0;                               ///< m, xy, when has_truth and a position
@@ -51,16 +51,17 @@ struct ReplayRow {
 
 struct ReplayResult {
   std::vector<ReplayRow> rows;
-  evaluation::ErrorStatistics statistics;  ///< over the rows with a position (OK/DEGRADED) and a truth
-  std::size_t refused = 0;     ///< measurements the locator refused (unknown sensors)
-  double availability = 0.0;   ///< share of updates with a position
+  evaluation::ErrorStatistics
+      statistics;             ///< over the rows with a position (OK/DEGRADED) and a truth
+  std::size_t refused = 0;    ///< measurements the locator refused (unknown sensors)
+  double availability = 0.0;  ///< share of updates with a position
 };
 
 /// Runs the locator over the bag exactly as the node would: messages in recording order,
 /// an update every 1/rate seconds of bag time; estimates compared with the ground truth
 /// interpolated at the estimate's stamp.
-ReplayResult replay(const BagData& bag, const Layout& layout, const LocatorConfig& config,
-                    double rate);
+ReplayResult replay(const BagData& bag, const Layout& layout,
+                    const estimation::LocatorConfig& config, double rate);
 
 /// The rows as CSV with a header (t, status, x, y, z, sigma_x, sigma_y, truth_x, truth_y,
 /// error; empty cells where there is no value).
