@@ -113,7 +113,8 @@ if wanted homing; then
     RF_SEED=$seed rostest --text radio_follow homing_static_beacon.test >"$tmp/homing_ros.log" 2>&1 || passed=no
     wall=$(elapsed "$t0")
     metrics="$ROS_HOME/radio_follow_experiments/homing_static_beacon/metrics.json"
-    arrival=$(grep -m1 'Arrived at the target' "$tmp/homing_ros.log" | sed -n 's/^[^[]*\[[^]]*\] \[[0-9.]*, \([0-9.]*\)\].*/\1/p')
+    # ROS_INFO on simulated time: "[ INFO] [wall, sim]: Arrived at the target."
+    arrival=$(grep -m1 'Arrived at the target' "$tmp/homing_ros.log" | sed -n 's/^[^[]*\[[^]]*\] \[[0-9.]*, \([0-9]*\.[0-9]\{0,2\}\).*/\1/p')
     goal=$(grep -m1 '^goal error:' "$tmp/homing_ros.log" | awk '{print $3}')
     read -r gap duration < <(python3 -c 'import json,sys; m=json.load(open(sys.argv[1])); print("%.3f %.1f" % (m["final_gap_m"], m["duration_s"]))' "$metrics")
     awk -v s="$seed" -v p="$passed" -v a="${arrival:--}" -v g="$gap" -v e="${goal:--}" -v w="$wall" -v d="$duration" \
@@ -168,6 +169,14 @@ YAML
   head -n 4 "$tmp/sweep.csv"
   echo "..."
   tail -n 2 "$tmp/sweep.csv"
+  echo
+  echo "The shipped defaults' row (config/locator.yaml: range_sigma 0.03, azimuth_sigma_deg 5, bearing_loss huber):"
+  echo
+  grep '"range_sigma=0.03 azimuth_sigma_deg=5.0 bearing_loss=huber"' "$tmp/sweep.csv"
+  echo
+  echo "The bag (\`rosbag info $bag\`):"
+  echo
+  rosbag info "$bag" | grep -E '^(duration|size|messages|compression|uncompressed|compressed):' | sed 's/^/    /'
   echo
   echo "Speed, five runs of the single replay (median; bag length ${length} s):"
   echo
