@@ -26,7 +26,7 @@ namespace rf = radio_follow;
 namespace {
 
 struct Epoch {
-  rf::ObservationSet obs;
+  rf::estimation::ObservationSet obs;
   Eigen::Vector3d truth;
   Eigen::Vector3d warm;
 };
@@ -38,7 +38,7 @@ std::vector<Epoch> epochs(const std::string& layout_name, int max_bearings) {
   std::uniform_real_distribution<double> dist(1.0, 10.0);
   std::uniform_real_distribution<double> angle(-rf::kPi, rf::kPi);
   std::normal_distribution<double> step(0.0, 0.05);  // target motion between epochs
-  rf::SyntheticNoise noise;
+  rf::estimation::SyntheticNoise noise;
   noise.azimuth_sigma = noise.elevation_sigma = rf::deg2rad(5.0);
   std::vector<Epoch> out;
   for (int i = 0; i < 256; ++i) {
@@ -46,8 +46,8 @@ std::vector<Epoch> epochs(const std::string& layout_name, int max_bearings) {
     const double a = angle(rng);
     Epoch e;
     e.truth = Eigen::Vector3d(r * std::cos(a), r * std::sin(a), 1.0);
-    e.obs = rf::idealObservations(layout, e.truth, noise, max_bearings);
-    rf::addGaussianNoise(e.obs, rng);
+    e.obs = rf::estimation::idealObservations(layout, e.truth, noise, max_bearings);
+    rf::estimation::addGaussianNoise(e.obs, rng);
     e.warm = e.truth + Eigen::Vector3d(step(rng), step(rng), 0.0);
     out.push_back(e);
   }
@@ -62,13 +62,13 @@ void reportPercentiles(benchmark::State& state, std::vector<double>& micros) {
 
 void solve(benchmark::State& state, const std::string& layout, int max_bearings) {
   const std::vector<Epoch> data = epochs(layout, max_bearings);
-  const rf::PositionSolver solver{rf::SolverConfig{}};
+  const rf::estimation::PositionSolver solver{rf::estimation::SolverConfig{}};
   std::vector<double> micros;
   std::size_t i = 0;
   for (auto _ : state) {
     const Epoch& e = data[i++ % data.size()];
     const auto start = std::chrono::steady_clock::now();
-    rf::SolveResult r = solver.solve(e.obs, e.warm);
+    rf::estimation::SolveResult r = solver.solve(e.obs, e.warm);
     micros.push_back(
         std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start)
             .count());
@@ -102,9 +102,9 @@ void thesisSolve(benchmark::State& state, const std::string& layout, int max_bea
 void locatorUpdate(benchmark::State& state, const std::string& name) {
   const rf::Layout layout =
       rf::loadLayoutFile(std::string(RF_CONFIG_DIR) + "/layouts/" + name + ".yaml");
-  rf::LocatorConfig config;
+  rf::estimation::LocatorConfig config;
   config.ambiguity_margin = static_cast<double>(state.range(0));
-  rf::Locator locator(layout, config);
+  rf::estimation::Locator locator(layout, config);
   std::mt19937_64 rng(3);
   std::normal_distribution<double> noise(0.0, 1.0);
   double t = 0.0;
@@ -117,11 +117,11 @@ void locatorUpdate(benchmark::State& state, const std::string& name) {
     }
     for (const auto& b : layout.aoa_boards) {
       const Eigen::Vector2d ae =
-          rf::predictBearing(truth, b.position, b.orientation.toRotationMatrix());
+          rf::estimation::predictBearing(truth, b.position, b.orientation.toRotationMatrix());
       locator.addBearing(b.id, ae(0) + 0.08 * noise(rng), ae(1) + 0.08 * noise(rng), -60.0, t);
     }
     const auto start = std::chrono::steady_clock::now();
-    rf::LocatorEstimate e = locator.update(t);
+    rf::estimation::LocatorEstimate e = locator.update(t);
     micros.push_back(
         std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start)
             .count());

@@ -13,7 +13,7 @@
 
 namespace {
 
-using radio_follow::TdoaPacketBuilder;
+using radio_follow::drivers::TdoaPacketBuilder;
 
 std::vector<std::vector<std::uint8_t>> typicalPackets() {
   // What an anchor sends per blink: MAC, timestamp, quality and radio TLVs.
@@ -21,12 +21,13 @@ std::vector<std::vector<std::uint8_t>> typicalPackets() {
   const std::uint64_t addresses[] = {0x2000, 0x2002, 0x2001};
   for (int seq = 0; seq < 64; ++seq) {
     for (std::uint64_t address : addresses) {
-      packets.push_back(TdoaPacketBuilder(address, static_cast<std::uint8_t>(seq))
-                            .mac(0x5A84)
-                            .timestamp(1000000000ULL * seq + address, 40)
-                            .quality(-80.5, -88.25, 2, 35.5)
-                            .radio(1234, 5678, 5, 2, 6)
-                            .build());
+      packets.push_back(
+          radio_follow::drivers::TdoaPacketBuilder(address, static_cast<std::uint8_t>(seq))
+              .mac(0x5A84)
+              .timestamp(1000000000ULL * seq + address, 40)
+              .quality(-80.5, -88.25, 2, 35.5)
+              .radio(1234, 5678, 5, 2, 6)
+              .build());
     }
   }
   return packets;
@@ -34,11 +35,11 @@ std::vector<std::vector<std::uint8_t>> typicalPackets() {
 
 void BM_DecodeTdoaPacket(benchmark::State& state) {
   const auto packets = typicalPackets();
-  radio_follow::TdoaReport report;
+  radio_follow::drivers::TdoaReport report;
   std::size_t i = 0;
   for (auto _ : state) {
     const auto& p = packets[i];
-    benchmark::DoNotOptimize(radio_follow::decodeTdoaPacket(p.data(), p.size(), &report));
+    benchmark::DoNotOptimize(radio_follow::drivers::decodeTdoaPacket(p.data(), p.size(), &report));
     benchmark::DoNotOptimize(report);
     i = (i + 1) % packets.size();
   }
@@ -50,13 +51,13 @@ BENCHMARK(BM_DecodeTdoaPacket);
 
 void BM_ReceivePipeline(benchmark::State& state) {
   const auto packets = typicalPackets();
-  radio_follow::TdoaDifferenceConfig config;
+  radio_follow::drivers::TdoaDifferenceConfig config;
   config.anchors = {{"05", 0x2000, {0.29, 0.165, 0.135}},
                     {"49", 0x2002, {0.29, -0.165, 0.135}},
                     {"17", 0x2001, {-0.37, 0.0, 0.135}}};
   config.plausibility_margin = 1e9;  // the synthetic timestamps are not geometric
-  radio_follow::TdoaReceiver receiver(config, 0.05);
-  std::vector<radio_follow::TdoaBlink> blinks;
+  radio_follow::drivers::TdoaReceiver receiver(config, 0.05);
+  std::vector<radio_follow::drivers::TdoaBlink> blinks;
   std::size_t i = 0;
   double now = 0.0;
   for (auto _ : state) {

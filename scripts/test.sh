@@ -25,6 +25,8 @@ grep -E '^\[ *(RUN|OK|FAILED|PASSED) |^\[ *FAILED|testcase|rostest|Summary' "$ws
 status=0
 python3 "$repo/scripts/summarize_tests.py" "$results" || status=1
 
+# The layer check the build runs can fail: it finds planted wrong-way and ROS includes.
+python3 "$repo/scripts/check_layers.py" --self-test || status=1
 # Every command README.md and doc/ show, run against the simulator (scripts/docs_test.py).
 python3 "$repo/scripts/docs_test.py" || status=1
 

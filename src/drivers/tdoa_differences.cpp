@@ -11,6 +11,7 @@
 #include "radio_follow/drivers/tdoa_packet.hpp"
 
 namespace radio_follow {
+namespace drivers {
 namespace {
 
 constexpr unsigned kTimestampBits = 40;
@@ -100,4 +101,5 @@ TdoaDifferenceCalculator::Outcome TdoaDifferenceCalculator::compute(
   return out->empty() ? Outcome::kNoPlausible : Outcome::kOk;
 }
 
+}  // namespace drivers
 }  // namespace radio_follow

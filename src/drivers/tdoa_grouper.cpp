@@ -5,6 +5,7 @@
 #include <utility>
 
 namespace radio_follow {
+namespace drivers {
 
 TdoaBlinkGrouper::TdoaBlinkGrouper(std::size_t anchor_count, double window,
                                    std::size_t max_open_groups)
@@ -60,4 +61,5 @@ void TdoaBlinkGrouper::expire(double now, std::vector<TdoaBlinkGroup>* emitted) 
   open_.erase(open_.begin(), first_alive);
 }
 
+}  // namespace drivers
 }  // namespace radio_follow

@@ -7,6 +7,7 @@
 #include "radio_follow/drivers/plausibility.hpp"
 
 namespace radio_follow {
+namespace drivers {
 namespace {
 
 // Explicit little-endian reads: wire bytes are never reinterpreted in place, so the
@@ -182,4 +183,5 @@ std::string tdoaAddressString(std::uint64_t address) {
   return text;
 }
 
+}  // namespace drivers
 }  // namespace radio_follow

@@ -6,6 +6,7 @@
 #include "radio_follow/drivers/tdoa_packet.hpp"
 
 namespace radio_follow {
+namespace drivers {
 namespace {
 
 void appendLe(std::vector<std::uint8_t>& out, std::uint64_t value, std::size_t n) {
@@ -102,4 +103,5 @@ std::vector<std::uint8_t> TdoaPacketBuilder::build() const {
   return out;
 }
 
+}  // namespace drivers
 }  // namespace radio_follow

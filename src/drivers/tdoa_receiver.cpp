@@ -8,6 +8,7 @@
 #include "radio_follow/common/param_error.hpp"
 
 namespace radio_follow {
+namespace drivers {
 namespace {
 
 double checkedWindow(double window) {
@@ -83,4 +84,5 @@ void TdoaReceiver::finish(std::vector<TdoaBlink>* out) {
   emitted_.clear();
 }
 
+}  // namespace drivers
 }  // namespace radio_follow

@@ -8,6 +8,7 @@
 #include <utility>
 
 namespace radio_follow {
+namespace drivers {
 
 namespace asio = boost::asio;
 using asio::ip::udp;
@@ -103,4 +104,5 @@ void TdoaUdpTransport::fail(const std::string& what) {
   });
 }
 
+}  // namespace drivers
 }  // namespace radio_follow

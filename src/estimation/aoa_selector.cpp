@@ -9,6 +9,7 @@
 #include "radio_follow/common/param_error.hpp"
 
 namespace radio_follow {
+namespace estimation {
 
 AoaSelectionMode parseAoaSelectionMode(const std::string& text, const std::string& parameter) {
   if (text == "rssi")
@@ -161,4 +162,5 @@ std::vector<std::size_t> AoaSelector::select(const std::vector<AoaCandidate>& fr
   return eligible;
 }
 
+}  // namespace estimation
 }  // namespace radio_follow

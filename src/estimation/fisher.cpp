@@ -4,6 +4,7 @@
 #include <Eigen/Eigenvalues>
 
 namespace radio_follow {
+namespace estimation {
 
 Eigen::Matrix3d fisherInformation(const ObservationSet& observations, const Eigen::Vector3d& p) {
   Eigen::Matrix3d info = Eigen::Matrix3d::Zero();
@@ -47,4 +48,5 @@ std::optional<Eigen::Matrix3d> positionCrlb(const Eigen::Matrix3d& information, 
   return crlb;
 }
 
+}  // namespace estimation
 }  // namespace radio_follow

@@ -8,6 +8,7 @@
 #include "radio_follow/common/angles.hpp"
 
 namespace radio_follow {
+namespace estimation {
 namespace {
 
 // A linear system whose normal matrix has a reciprocal condition number below this is
@@ -122,4 +123,5 @@ std::vector<Eigen::Vector3d> multiStartCandidates(const ObservationSet& observat
   return candidates;
 }
 
+}  // namespace estimation
 }  // namespace radio_follow

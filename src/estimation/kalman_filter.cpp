@@ -10,6 +10,7 @@
 #include "radio_follow/common/param_error.hpp"
 
 namespace radio_follow {
+namespace estimation {
 
 MotionModel parseMotionModel(const std::string& text, const std::string& parameter) {
   require(text == "constant_position" || text == "constant_velocity", parameter, text,
@@ -180,4 +181,5 @@ CorrectionResult KalmanFilter::correct(const Eigen::VectorXd& z, const Eigen::Ma
   return CorrectionResult::kAccepted;
 }
 
+}  // namespace estimation
 }  // namespace radio_follow

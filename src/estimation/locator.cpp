@@ -12,28 +12,7 @@
 #include "radio_follow/common/param_error.hpp"
 
 namespace radio_follow {
-
-const char* toString(TargetStatus status) {
-  switch (status) {
-    case TargetStatus::kUnset:
-      return "UNSET";
-    case TargetStatus::kOk:
-      return "OK";
-    case TargetStatus::kHeadingOnly:
-      return "HEADING_ONLY";
-    case TargetStatus::kDegraded:
-      return "DEGRADED";
-    case TargetStatus::kAmbiguous:
-      return "AMBIGUOUS";
-    case TargetStatus::kLost:
-      break;
-  }
-  return "LOST";
-}
-
-bool hasPosition(TargetStatus status) {
-  return status == TargetStatus::kOk || status == TargetStatus::kDegraded;
-}
+namespace estimation {
 
 namespace {
 
@@ -473,4 +452,5 @@ LocatorEstimate Locator::update(double now) {
   return out;
 }
 
+}  // namespace estimation
 }  // namespace radio_follow

@@ -8,6 +8,7 @@
 #include "radio_follow/estimation/locator.hpp"
 
 namespace radio_follow {
+namespace estimation {
 namespace {
 
 LossConfig loadLoss(const ParamSource& nh, const std::string& name, const LossConfig& def) {
@@ -74,4 +75,5 @@ void LocatorConfig::load(const ParamSource& nh) {
   nh.param("default_range", c.default_range, c.default_range);
 }
 
+}  // namespace estimation
 }  // namespace radio_follow

@@ -11,9 +11,10 @@
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/estimation/fisher.hpp"
-#include "radio_follow/sim/sensor_tables.hpp"
+#include "radio_follow/models/sensor_tables.hpp"
 
 namespace radio_follow {
+namespace estimation {
 
 namespace {
 
@@ -146,7 +147,7 @@ ObservationSet advisorObservations(const Layout& layout, const Eigen::Vector3d& 
     RangeObservation z;
     z.module = module.position;
     z.range = (p - module.position).norm();
-    z.sigma = sim::uwbRangeError(z.range).sigma;
+    z.sigma = models::uwbRangeError(z.range).sigma;
     obs.ranges.push_back(z);
   }
   for (const auto& board : layout.aoa_boards) {
@@ -162,7 +163,7 @@ ObservationSet advisorObservations(const Layout& layout, const Eigen::Vector3d& 
     // The tables use the device's clockwise azimuth; their sigma is symmetric enough that
     // the sign matters little, but the lookup follows the simulator exactly.
     const double sigma =
-        sim::aoaError(board.kind, -z.azimuth, (p - board.position).norm()).azimuth_sigma;
+        models::aoaError(board.kind, -z.azimuth, (p - board.position).norm()).azimuth_sigma;
     z.sigma_azimuth = sigma;
     z.sigma_elevation = sigma;
     z.use_elevation = config.use_elevation;
@@ -314,4 +315,5 @@ PlacementSummary summarize(const Layout& layout, const AdvisorConfig& config) {
   return summary;
 }
 
+}  // namespace estimation
 }  // namespace radio_follow

@@ -15,6 +15,7 @@
 #include "radio_follow/estimation/fisher.hpp"
 
 namespace radio_follow {
+namespace estimation {
 namespace {
 
 std::unique_ptr<ceres::LossFunction> makeLoss(const LossConfig& loss) {
@@ -224,4 +225,5 @@ void PositionSolver::computeCovariance(const ObservationSet& observations,
   }
 }
 
+}  // namespace estimation
 }  // namespace radio_follow

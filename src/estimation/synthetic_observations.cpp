@@ -8,6 +8,7 @@
 #include "radio_follow/common/angles.hpp"
 
 namespace radio_follow {
+namespace estimation {
 
 ObservationSet idealObservations(const Layout& layout, const Eigen::Vector3d& p,
                                  const SyntheticNoise& noise, int max_bearings) {
@@ -59,4 +60,5 @@ void addGaussianNoise(ObservationSet& observations, std::mt19937_64& rng) {
   }
 }
 
+}  // namespace estimation
 }  // namespace radio_follow

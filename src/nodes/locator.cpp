@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "radio_follow/ros/locator_node.hpp"
-#include "radio_follow/ros/node_main.hpp"
+#include "radio_follow/ros/locator/locator_node.hpp"
+#include "radio_follow/ros/common/node_main.hpp"
 
 int main(int argc, char** argv) {
   return radio_follow::runNode<radio_follow::LocatorNode>(argc, argv, "locator");

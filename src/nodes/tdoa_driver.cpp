@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "radio_follow/ros/tdoa_driver.hpp"
+#include "radio_follow/ros/drivers/tdoa_driver.hpp"
 
-#include "radio_follow/ros/node_main.hpp"
+#include "radio_follow/ros/common/node_main.hpp"
 
 int main(int argc, char** argv) {
   return radio_follow::runNode<radio_follow::TdoaDriverNode>(argc, argv, "tdoa_driver");

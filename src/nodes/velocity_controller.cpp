@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "radio_follow/ros/velocity_controller.hpp"
+#include "radio_follow/ros/control/velocity_controller.hpp"
 
-#include "radio_follow/ros/node_main.hpp"
+#include "radio_follow/ros/common/node_main.hpp"
 
 int main(int argc, char** argv) {
   return radio_follow::runNode<radio_follow::VelocityControllerNode>(argc, argv,

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "radio_follow/common/angles.hpp"
-#include "radio_follow/sim/sensor_tables.hpp"
+#include "radio_follow/models/sensor_tables.hpp"
 
 namespace radio_follow {
 namespace sim {
@@ -36,7 +36,7 @@ std::optional<double> simulateTwrRange(const TwrModule& module, const TwrNoise& 
   }
   const Eigen::Vector3d offset = target - module.position;
   const double distance = offset.norm();
-  const RangeError error = uwbRangeError(distance);
+  const models::RangeError error = models::uwbRangeError(distance);
   double range = distance + (noise.use_table_bias ? error.bias : 0.0) +
                  gaussian(noise.sigma_scale * error.sigma, rng);
   const double bearing = std::atan2(offset.y(), offset.x());
@@ -65,7 +65,7 @@ std::optional<AoaSample> simulateAoa(const AoaBoard& board, const AoaNoise& nois
 
   // The tables are in the device's sign convention (clockwise): look up and perturb there.
   const double device_azimuth = -azimuth;
-  const AoaError error = aoaError(board.kind, device_azimuth, distance);
+  const models::AoaError error = models::aoaError(board.kind, device_azimuth, distance);
   const double measured_device = device_azimuth +
                                  (noise.use_table_bias ? error.azimuth_bias : 0.0) +
                                  gaussian(noise.sigma_scale * error.azimuth_sigma, rng);

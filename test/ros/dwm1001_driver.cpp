@@ -2,7 +2,7 @@
 // The real dwm1001_driver node against a fake DWM1001 on a pseudo-terminal: shell
 // dialogue, decoding, rejection of cut lines, and recovery after unplug/replug at the
 // same symlink path without restarting the node.
-#include "radio_follow/ros/dwm1001_driver.hpp"
+#include "radio_follow/ros/drivers/dwm1001_driver.hpp"
 
 #include <gtest/gtest.h>
 #include <ros/ros.h>
@@ -95,7 +95,13 @@ TEST(Dwm1001Driver, ConfiguresDecodesAndRecoversFromReplug) {
   device.vanish();
   module.powerCycle();
   ros::WallDuration(1.5).sleep();
-  ros::spinOnce();
+  // Drain what is still queued on either connection (spinOnce takes one batch each).
+  spinUntil(
+      [&] {
+        std::lock_guard<std::mutex> lock(rx.mutex);
+        return rx.ranges == rx.locations;
+      },
+      1.0);
   int before;
   {
     std::lock_guard<std::mutex> lock(rx.mutex);

@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "radio_follow/ros/locator_node.hpp"
-#include "radio_follow/ros/locator_replay.hpp"
+#include "radio_follow/ros/locator/locator_node.hpp"
+#include "radio_follow/ros/replay/locator_replay.hpp"
 #include "radio_follow/common/yaml_params.hpp"
 
 namespace rf = radio_follow;
@@ -73,7 +73,7 @@ TEST_F(LocatorOffline, ReplaysTheBagAtTheNodesRateAndMatchesTheLiveErrors) {
   EXPECT_NEAR(double(r.rows.size()), bag.duration() * 20.0, 2.0);
   EXPECT_EQ(r.refused, 0u);
   EXPECT_GT(r.availability, 0.95);
-  const rf::ErrorSummary e = r.statistics.overall();
+  const rf::evaluation::ErrorSummary e = r.statistics.overall();
   EXPECT_GT(e.count, r.rows.size() * 9 / 10);
   EXPECT_LT(e.median, 0.15);  // the live demo loop measures 0.06-0.07 m
   EXPECT_LT(e.p95, 0.5);

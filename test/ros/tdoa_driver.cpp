@@ -3,7 +3,7 @@
 // with the test packet builder, interleaved with malformed datagrams. Checks the
 // published distance differences and that the bad datagrams are counted in the
 // diagnostics without interrupting the stream.
-#include "radio_follow/ros/tdoa_driver.hpp"
+#include "radio_follow/ros/drivers/tdoa_driver.hpp"
 
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <gtest/gtest.h>
@@ -42,9 +42,9 @@ const Eigen::Vector3d kTag(2.5, 1.2, 0.9);
 constexpr std::uint16_t kTagId = 0x5A84;
 
 std::uint64_t rxTicks(const Anchor& a, double t0) {
-  const double flight = (kTag - a.position).norm() / kSpeedOfLight;
-  const double sync_lag = (a.position - kAnchors[0].position).norm() / kSpeedOfLight;
-  return static_cast<std::uint64_t>(std::llround((t0 + flight - sync_lag) * kTdoaTickFrequency));
+  const double flight = (kTag - a.position).norm() / drivers::kSpeedOfLight;
+  const double sync_lag = (a.position - kAnchors[0].position).norm() / drivers::kSpeedOfLight;
+  return static_cast<std::uint64_t>(std::llround((t0 + flight - sync_lag) * drivers::kTdoaTickFrequency));
 }
 
 double expectedDifference(const std::string& a, const std::string& b) {
@@ -74,7 +74,7 @@ class Anchors {
   void blink(std::uint8_t seq) {
     const double t0 = 20.0 + 0.1 * seq;
     for (const auto& a : kAnchors) {
-      send(TdoaPacketBuilder(a.address, seq).mac(kTagId).timestamp(rxTicks(a, t0)).build());
+      send(drivers::TdoaPacketBuilder(a.address, seq).mac(kTagId).timestamp(rxTicks(a, t0)).build());
     }
   }
 
@@ -86,19 +86,19 @@ class Anchors {
         send({0xDE, 0xAD, 0xBE, 0xEF});  // no magic
         break;
       case 1: {
-        auto bytes = TdoaPacketBuilder(anchor, 1).mac(kTagId).timestamp(1).build();
+        auto bytes = drivers::TdoaPacketBuilder(anchor, 1).mac(kTagId).timestamp(1).build();
         bytes.resize(20);  // too short
         send(bytes);
         break;
       }
       case 2:
-        send(TdoaPacketBuilder(anchor, 1).mac(kTagId).timestamp(1).lengthField(500).build());
+        send(drivers::TdoaPacketBuilder(anchor, 1).mac(kTagId).timestamp(1).lengthField(500).build());
         break;
       case 3:
-        send(TdoaPacketBuilder(anchor, 1).rawTlv(2, {1, 2}, 4000).build());  // TLV overrun
+        send(drivers::TdoaPacketBuilder(anchor, 1).rawTlv(2, {1, 2}, 4000).build());  // TLV overrun
         break;
       default:
-        send(TdoaPacketBuilder(0x7777, 1).mac(kTagId).timestamp(1).build());  // unknown
+        send(drivers::TdoaPacketBuilder(0x7777, 1).mac(kTagId).timestamp(1).build());  // unknown
         break;
     }
   }
@@ -189,7 +189,7 @@ TEST(TdoaDriver, PublishesDifferencesAndCountsBadDatagramsWithoutStopping) {
 
   std::lock_guard<std::mutex> lock(received.mutex);
   ASSERT_EQ(received.blinks.size(), before + kBlinks);
-  const double tick_metres = kSpeedOfLight / kTdoaTickFrequency;
+  const double tick_metres = drivers::kSpeedOfLight / drivers::kTdoaTickFrequency;
   for (const auto& msg : received.blinks) {
     EXPECT_EQ(msg.tag_id, "5A84");
     EXPECT_EQ(msg.header.frame_id, "base_link");
@@ -255,7 +255,7 @@ TEST_F(TdoaDriverParams, LoadsAnchorsAndResolvesIds) {
   EXPECT_EQ(p.anchors[2].address, 0x2002u);
   EXPECT_DOUBLE_EQ(p.anchors[1].position.y(), -0.165);
   EXPECT_DOUBLE_EQ(p.anchors[1].position.z(), 1.0);
-  const TdoaDifferenceConfig c = p.differenceConfig();
+  const drivers::TdoaDifferenceConfig c = p.differenceConfig();
   EXPECT_EQ(c.master, 1u);
   EXPECT_EQ(c.reference, 1u);  // empty reference = master
 }

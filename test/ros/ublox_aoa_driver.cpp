@@ -2,7 +2,7 @@
 // The real ublox_aoa_driver node against a fake u-connectLocate board on a
 // pseudo-terminal: init commands, tag filtering, azimuth sign, rejection of cut lines,
 // and recovery after unplug/replug at the same symlink path.
-#include "radio_follow/ros/ublox_aoa_driver.hpp"
+#include "radio_follow/ros/drivers/ublox_aoa_driver.hpp"
 
 #include <gtest/gtest.h>
 #include <ros/ros.h>

@@ -22,7 +22,7 @@ inline Layout uncalibratedLayout(const std::string& name) {
 }
 
 /// Every module of the locator's layout reports its exact range to `truth` at time t.
-inline void feedRanges(Locator& locator, const Eigen::Vector3d& truth, double t) {
+inline void feedRanges(estimation::Locator& locator, const Eigen::Vector3d& truth, double t) {
   for (const auto& m : locator.layout().twr_modules) {
     ASSERT_TRUE(locator.addRange(m.id, (truth - m.position).norm(), t));
   }

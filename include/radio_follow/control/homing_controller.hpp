@@ -48,7 +48,7 @@ using HomingOutput = LawOutput;  ///< command, state and the sentence to report
 /// The homing_controller's law (seed 000 Section 5), clock-free: odometry, bearings and
 /// UWB ranges go in with their times (seconds on one clock), and each tick returns the
 /// command, the follower state and the sentence to report. The ROS node and the homing
-/// benchmark (sim::runHomingTrial) both run this class.
+/// benchmark (evaluation::runHomingTrial) both run this class.
 ///
 /// Before a goal exists it creeps along the newest bearing at search_speed, so that the
 /// parallax estimate gets its baseline; then it drives to the hybrid goal with eq 15 and

@@ -10,6 +10,7 @@
 #include "radio_follow/drivers/tdoa_grouper.hpp"
 
 namespace radio_follow {
+namespace drivers {
 
 /// Speed of light in vacuum, m/s.
 constexpr double kSpeedOfLight = 299792458.0;
@@ -86,4 +87,5 @@ class TdoaDifferenceCalculator {
   std::vector<double> baseline_;    // |a - reference|, metres
 };
 
+}  // namespace drivers
 }  // namespace radio_follow

@@ -6,6 +6,7 @@
 #include <vector>
 
 namespace radio_follow {
+namespace drivers {
 
 /// One anchor's receive time of a blink.
 struct TdoaReception {
@@ -58,4 +59,5 @@ class TdoaBlinkGrouper {
   std::vector<TdoaBlinkGroup> open_;  // in order of first arrival
 };
 
+}  // namespace drivers
 }  // namespace radio_follow

@@ -7,6 +7,7 @@
 #include <string>
 
 namespace radio_follow {
+namespace drivers {
 
 /// Frequency of the DW1000 receive-timestamp counter: one tick = 1 / 63.8976 GHz = 15.65 ps.
 constexpr double kTdoaTickFrequency = 63.8976e9;
@@ -103,4 +104,5 @@ std::string tdoaTagIdString(std::uint16_t tag);
 /// Anchor address as 16 upper-case hex digits.
 std::string tdoaAddressString(std::uint64_t address);
 
+}  // namespace drivers
 }  // namespace radio_follow

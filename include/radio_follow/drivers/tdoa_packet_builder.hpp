@@ -7,6 +7,7 @@
 #include <vector>
 
 namespace radio_follow {
+namespace drivers {
 
 /// Encodes anchor reports in the wire format decodeTdoaPacket() reads
 /// (doc/tdoa_protocol.md). Used by tests, the fuzzer's seed corpus, the benchmark and
@@ -47,4 +48,5 @@ class TdoaPacketBuilder {
   std::optional<std::uint8_t> count_override_;
 };
 
+}  // namespace drivers
 }  // namespace radio_follow

@@ -12,6 +12,7 @@
 #include "radio_follow/drivers/tdoa_packet.hpp"
 
 namespace radio_follow {
+namespace drivers {
 
 /// Counters of the TDoA pipeline, one per outcome; the node turns them into diagnostics.
 struct TdoaStats {
@@ -64,4 +65,5 @@ class TdoaReceiver {
   std::vector<TdoaBlinkGroup> emitted_;  // reused between calls
 };
 
+}  // namespace drivers
 }  // namespace radio_follow

@@ -13,6 +13,7 @@
 #include <thread>
 
 namespace radio_follow {
+namespace drivers {
 
 /// Receives UDP datagrams on its own io_context thread and keeps the socket alive:
 /// any open/bind/receive error closes the socket and schedules a new attempt after an
@@ -72,4 +73,5 @@ class TdoaUdpTransport {
   std::atomic<std::uint64_t> failures_{0};
 };
 
+}  // namespace drivers
 }  // namespace radio_follow

@@ -9,6 +9,7 @@
 #include <vector>
 
 namespace radio_follow {
+namespace estimation {
 
 enum class AoaSelectionMode {
   /// Thesis Listing 4.1: per board the last N RSSI values, score = mean - 2 std, the best
@@ -88,4 +89,5 @@ class AoaSelector {
   std::deque<std::size_t> votes_;
 };
 
+}  // namespace estimation
 }  // namespace radio_follow

@@ -6,6 +6,7 @@
 #include "radio_follow/estimation/measurement_models.hpp"
 
 namespace radio_follow {
+namespace estimation {
 
 // Two implementations of every residual: analytic cost functions (used by the solver,
 // about three times cheaper to evaluate) and templated functors for ceres::AutoDiff
@@ -134,4 +135,5 @@ struct BearingFunctor {
   BearingObservation z_;
 };
 
+}  // namespace estimation
 }  // namespace radio_follow

@@ -7,6 +7,7 @@
 #include "radio_follow/estimation/measurement_models.hpp"
 
 namespace radio_follow {
+namespace estimation {
 
 /// Fisher information of the target position from independent Gaussian measurements:
 /// sum of J^T J over the whitened residual Jacobians at the true position p
@@ -21,4 +22,5 @@ Eigen::Matrix3d fisherInformation(const ObservationSet& observations, const Eige
 std::optional<Eigen::Matrix3d> positionCrlb(const Eigen::Matrix3d& information, bool planar,
                                             double min_rcond = 1e-10);
 
+}  // namespace estimation
 }  // namespace radio_follow

@@ -8,6 +8,7 @@
 #include "radio_follow/estimation/measurement_models.hpp"
 
 namespace radio_follow {
+namespace estimation {
 
 /// Where the target may be when nothing is known yet.
 struct InitializerConfig {
@@ -37,4 +38,5 @@ std::vector<Eigen::Vector3d> multiStartCandidates(const ObservationSet& observat
 /// Unit direction of a bearing in the fixed frame.
 Eigen::Vector3d bearingDirection(const BearingObservation& bearing);
 
+}  // namespace estimation
 }  // namespace radio_follow

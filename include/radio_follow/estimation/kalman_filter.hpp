@@ -6,6 +6,7 @@
 #include <string>
 
 namespace radio_follow {
+namespace estimation {
 
 enum class MotionModel {
   /// The thesis's model: x_k = x_{k-1} + w, Q = process_noise * I per epoch (m^2).
@@ -93,4 +94,5 @@ class KalmanFilter {
 /// CDFs, bisection); throws std::invalid_argument for other dof or p outside (0, 1).
 double chiSquareQuantile(double probability, int dof);
 
+}  // namespace estimation
 }  // namespace radio_follow

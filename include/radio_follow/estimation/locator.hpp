@@ -16,28 +16,10 @@
 #include "radio_follow/estimation/initializer.hpp"
 #include "radio_follow/estimation/kalman_filter.hpp"
 #include "radio_follow/estimation/position_solver.hpp"
+#include "radio_follow/estimation/target_status.hpp"
 
 namespace radio_follow {
-
-/// Same values as TargetEstimate.STATUS_*. Zero is no status: a zero-initialised message
-/// must never read as a usable estimate.
-enum class TargetStatus : std::uint8_t {
-  kUnset = 0,
-  kOk = 1,
-  kHeadingOnly = 2,
-  kDegraded = 3,
-  kLost = 4,
-  kAmbiguous = 5,
-};
-/// "UNSET", "OK", "HEADING_ONLY", "DEGRADED", "LOST", "AMBIGUOUS" (the message's constant
-/// names).
-const char* toString(TargetStatus status);
-/// OK or DEGRADED: the position may be driven towards (HEADING_ONLY: only the direction).
-bool hasPosition(TargetStatus status);
-/// Same bits as TargetEstimate.SOURCE_*.
-constexpr std::uint8_t kSourceTwr = 1;
-constexpr std::uint8_t kSourceTdoa = 2;
-constexpr std::uint8_t kSourceAoa = 4;
+namespace estimation {
 
 /// The locator's tuning (the sensor positions come from the Layout).
 struct LocatorConfig {
@@ -199,4 +181,5 @@ class Locator {
   TimePolicy time_;
 };
 
+}  // namespace estimation
 }  // namespace radio_follow

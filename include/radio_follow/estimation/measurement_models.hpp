@@ -9,6 +9,7 @@
 #include "radio_follow/common/angles.hpp"
 
 namespace radio_follow {
+namespace estimation {
 
 /// A two-way range from a module on the robot to the target, already calibrated.
 struct RangeObservation {
@@ -123,4 +124,5 @@ inline Eigen::Vector2d bearingResidual(const BearingObservation& z, const Eigen:
   return residual;
 }
 
+}  // namespace estimation
 }  // namespace radio_follow

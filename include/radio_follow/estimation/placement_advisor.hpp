@@ -9,6 +9,7 @@
 #include "radio_follow/estimation/measurement_models.hpp"
 
 namespace radio_follow {
+namespace estimation {
 
 /// How the placement advisor evaluates a layout.
 struct AdvisorConfig {
@@ -91,4 +92,5 @@ PlacementSummary summarize(const Layout& layout, const AdvisorConfig& config);
 /// The guideline warnings alone (part of summarize()).
 std::vector<std::string> layoutWarnings(const Layout& layout, const AdvisorConfig& config);
 
+}  // namespace estimation
 }  // namespace radio_follow

@@ -9,6 +9,7 @@
 #include "radio_follow/estimation/measurement_models.hpp"
 
 namespace radio_follow {
+namespace estimation {
 
 /// Robust loss applied to one sensor type's whitened residuals.
 enum class LossType { kNone, kHuber, kSoftL1, kCauchy };
@@ -93,4 +94,5 @@ class PositionSolver {
   std::unique_ptr<CeresParts> parts_;
 };
 
+}  // namespace estimation
 }  // namespace radio_follow

@@ -8,6 +8,7 @@
 #include "radio_follow/estimation/measurement_models.hpp"
 
 namespace radio_follow {
+namespace estimation {
 
 /// Noise levels of synthetic measurements (Monte Carlo, benchmarks, tests).
 struct SyntheticNoise {
@@ -26,4 +27,5 @@ ObservationSet idealObservations(const Layout& layout, const Eigen::Vector3d& p,
 /// Adds zero-mean Gaussian noise with each observation's own sigma.
 void addGaussianNoise(ObservationSet& observations, std::mt19937_64& rng);
 
+}  // namespace estimation
 }  // namespace radio_follow

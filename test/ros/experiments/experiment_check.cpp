@@ -2,7 +2,7 @@
 // The checker of the ROS closed-loop runs (test/ros/experiments/*.test): waits for the
 // follow evaluator's final report of a simulated run through the real nodes and
 //  - with ~experiment, asserts that experiment's thresholds from test/experiments.yaml
-//    (sim::checkRun, the same code the lockstep runs are checked with) and that the run
+//    (evaluation::checkRun, the same code the lockstep runs are checked with) and that the run
 //    agrees with the lockstep closed loop of the same experiment and seed within the
 //    tolerances below (doc/experiments.md);
 //  - asserts the ROS-only checks its private parameters set: a topic that must publish
@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "../../support/spin_until.hpp"
-#include "radio_follow/sim/experiment.hpp"
+#include "radio_follow/evaluation/experiment.hpp"
 
 namespace {
 
@@ -53,8 +53,8 @@ constexpr double kErrorMedianTolerance = 0.05;  ///< m
 constexpr double kDistanceTolerance = 0.10;     ///< fraction of the lockstep distance
 
 /// The report fields the experiment checks read, from the evaluator's JSON.
-radio_follow::sim::FollowReport fromJson(const YAML::Node& report) {
-  radio_follow::sim::FollowReport r;
+radio_follow::evaluation::FollowReport fromJson(const YAML::Node& report) {
+  radio_follow::evaluation::FollowReport r;
   r.min_gap_while_moving = metric(report, "min_gap_while_moving_m");
   r.gap_within_tolerance = metric(report, "gap_within_tolerance");
   r.estimate_error_median = metric(report, "estimate_error_median_m");
@@ -128,21 +128,21 @@ TEST(Experiment, MeetsItsThresholds) {
     ASSERT_TRUE(ros::param::get("~experiments_file", file) &&
                 ros::param::get("~config_dir", config_dir) && ros::param::get("~seed", seed))
         << "~experiment needs ~experiments_file, ~config_dir and ~seed";
-    const auto experiments = radio_follow::sim::loadExperiments(file);
+    const auto experiments = radio_follow::evaluation::loadExperiments(file);
     const auto e = std::find_if(experiments.begin(), experiments.end(),
                                 [&](const auto& x) { return x.name == experiment_name; });
     ASSERT_NE(e, experiments.end()) << experiment_name << " is not in " << file;
-    std::vector<radio_follow::sim::CommandAt> sent;
+    std::vector<radio_follow::evaluation::CommandAt> sent;
     for (const auto& c : commands.entries) {
       sent.push_back({c.t, c.linear});
     }
-    const radio_follow::sim::FollowReport ros_run = fromJson(report);
-    for (const std::string& v : radio_follow::sim::checkRun(e->check, ros_run, sent)) {
+    const radio_follow::evaluation::FollowReport ros_run = fromJson(report);
+    for (const std::string& v : radio_follow::evaluation::checkRun(e->check, ros_run, sent)) {
       ADD_FAILURE() << "ROS run: " << v;
     }
-    const auto lockstep = radio_follow::sim::runExperiment(*e, config_dir, seed);
+    const auto lockstep = radio_follow::evaluation::runExperiment(*e, config_dir, seed);
     std::cout << "lockstep report (seed " << seed << "): " << lockstep.report.toJson() << std::endl;
-    const radio_follow::sim::FollowReport& l = lockstep.report;
+    const radio_follow::evaluation::FollowReport& l = lockstep.report;
     double gap_share_tolerance = kGapShareTolerance;
     ros::param::get("~gap_share_tolerance", gap_share_tolerance);
     EXPECT_NEAR(ros_run.gap_within_tolerance, l.gap_within_tolerance, gap_share_tolerance)

@@ -6,6 +6,7 @@
 #include <vector>
 
 namespace radio_follow {
+namespace drivers {
 namespace {
 
 TEST(TdoaBlinkGrouper, EmitsWhenEveryAnchorReported) {
@@ -96,4 +97,5 @@ TEST(TdoaBlinkGrouper, BoundsOpenGroups) {
 }
 
 }  // namespace
+}  // namespace drivers
 }  // namespace radio_follow

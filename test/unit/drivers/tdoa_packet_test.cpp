@@ -12,6 +12,7 @@
 #include "radio_follow/drivers/tdoa_packet_builder.hpp"
 
 namespace radio_follow {
+namespace drivers {
 namespace {
 
 using Bytes = std::vector<std::uint8_t>;
@@ -243,4 +244,5 @@ TEST(TdoaPacket, ErrorNamesAreDistinct) {
 }
 
 }  // namespace
+}  // namespace drivers
 }  // namespace radio_follow

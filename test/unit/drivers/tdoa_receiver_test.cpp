@@ -15,6 +15,7 @@
 #include "radio_follow/drivers/tdoa_packet_builder.hpp"
 
 namespace radio_follow {
+namespace drivers {
 namespace {
 
 // The reference's anchor layout (brozb/uwb_tdoa config/tdoa.yaml), master 0x2000.
@@ -250,4 +251,5 @@ TEST(TdoaDifferenceCalculator, TickDifferenceWrapsAtFortyBits) {
 }
 
 }  // namespace
+}  // namespace drivers
 }  // namespace radio_follow

@@ -15,6 +15,7 @@
 #include <vector>
 
 namespace radio_follow {
+namespace drivers {
 namespace {
 
 using boost::asio::ip::udp;
@@ -141,4 +142,5 @@ TEST(TdoaUdpTransport, InvalidAddressIsReportedNotThrown) {
 }
 
 }  // namespace
+}  // namespace drivers
 }  // namespace radio_follow

@@ -9,6 +9,7 @@
 #include "radio_follow/common/param_error.hpp"
 
 namespace radio_follow {
+namespace estimation {
 namespace {
 
 // Four boards facing +x, +y, -x, -y (the thesis's cube).
@@ -125,4 +126,5 @@ TEST(AoaSelector, AtStartUpTheLouderBoardWinsNotTheSteadierOne) {
 }
 
 }  // namespace
+}  // namespace estimation
 }  // namespace radio_follow

@@ -8,6 +8,7 @@
 #include "radio_follow/estimation/fisher.hpp"
 
 namespace radio_follow {
+namespace estimation {
 namespace {
 
 template <int R>
@@ -143,4 +144,5 @@ TEST(Fisher, BearingInformationIsTangential) {
 }
 
 }  // namespace
+}  // namespace estimation
 }  // namespace radio_follow

@@ -7,6 +7,7 @@
 #include "radio_follow/estimation/synthetic_observations.hpp"
 
 namespace radio_follow {
+namespace estimation {
 namespace {
 
 Layout layoutFile(const std::string& name) {
@@ -77,4 +78,5 @@ TEST(MultiStart, BearingCandidateComesFirstAtTheRange) {
 }
 
 }  // namespace
+}  // namespace estimation
 }  // namespace radio_follow

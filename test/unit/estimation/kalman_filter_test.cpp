@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 namespace radio_follow {
+namespace estimation {
 namespace {
 
 TEST(ChiSquare, QuantilesMatchTables) {
@@ -99,4 +100,5 @@ TEST(KalmanFilter, ConstantPositionAddsProcessNoiseOncePerEpoch) {
 }
 
 }  // namespace
+}  // namespace estimation
 }  // namespace radio_follow

@@ -7,6 +7,7 @@
 #include "radio_follow/estimation/locator.hpp"
 
 namespace radio_follow {
+namespace estimation {
 namespace {
 
 using test::feedRanges;
@@ -90,4 +91,5 @@ TEST(KalmanFilterReconfigure, KeepsCountersWhenTheStateSizeChanges) {
 }
 
 }  // namespace
+}  // namespace estimation
 }  // namespace radio_follow

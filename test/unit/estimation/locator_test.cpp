@@ -10,6 +10,7 @@
 #include "radio_follow/common/param_error.hpp"
 
 namespace radio_follow {
+namespace estimation {
 namespace {
 
 using test::feedRanges;
@@ -336,4 +337,5 @@ TEST(LocatorMirror, NoiseDoesNotConfirmASide) {
 }
 
 }  // namespace
+}  // namespace estimation
 }  // namespace radio_follow

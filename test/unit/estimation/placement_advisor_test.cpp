@@ -9,9 +9,10 @@
 
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
-#include "radio_follow/sim/sensor_tables.hpp"
+#include "radio_follow/models/sensor_tables.hpp"
 
 namespace radio_follow {
+namespace estimation {
 namespace {
 
 TwrModule module(const std::string& id, double x, double y, double z) {
@@ -95,7 +96,7 @@ TEST(PlacementAdvisor, TwoOrthogonalRangesMatchHandComputation) {
   // along +y, both 4 m away. Fisher = diag(1, 1) / sigma(4)^2, so in 2D
   // sqrt(tr CRLB) = sqrt(2) sigma(4) and the worst axis is sigma(4).
   const Layout layout = layoutOf({module("a", 0.0, 0.0, 1.0), module("b", 4.0, -4.0, 1.0)});
-  const double sigma = sim::uwbRangeError(4.0).sigma;
+  const double sigma = models::uwbRangeError(4.0).sigma;
   ASSERT_GT(sigma, 0.0);
   const PointBound b = boundAt(layout, {4.0, 0.0, 1.0}, AdvisorConfig{});
   ASSERT_TRUE(b.observable);
@@ -108,8 +109,8 @@ TEST(PlacementAdvisor, RangePlusBearingMatchesHandComputation) {
   // (seed 004 eq. 4.51): in 2D the bound is diag(sigma_r^2, r^2 sigma_az^2).
   const double r = 4.0;
   const Layout layout = layoutOf({module("a", 0.0, 0.0, 1.0)}, {board("front", 0, 0, 1, 0)});
-  const double sigma_r = sim::uwbRangeError(r).sigma;
-  const double sigma_az = sim::aoaError(AoaBoardKind::kXplrAoa1, 0.0, r).azimuth_sigma;
+  const double sigma_r = models::uwbRangeError(r).sigma;
+  const double sigma_az = models::aoaError(AoaBoardKind::kXplrAoa1, 0.0, r).azimuth_sigma;
   const PointBound b = boundAt(layout, {r, 0.0, 1.0}, AdvisorConfig{});
   ASSERT_TRUE(b.observable);
   EXPECT_EQ(b.bearings, 1);
@@ -221,4 +222,5 @@ TEST(PlacementAdvisor, RejectsInvalidConfig) {
 }
 
 }  // namespace
+}  // namespace estimation
 }  // namespace radio_follow

@@ -11,6 +11,7 @@
 #include "radio_follow/estimation/synthetic_observations.hpp"
 
 namespace radio_follow {
+namespace estimation {
 namespace {
 
 Layout layoutFile(const std::string& name) {
@@ -103,4 +104,5 @@ TEST(PositionSolver, ParsesLossNames) {
 }
 
 }  // namespace
+}  // namespace estimation
 }  // namespace radio_follow

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "radio_follow/common/angles.hpp"
-#include "radio_follow/sim/sensor_tables.hpp"
+#include "radio_follow/models/sensor_tables.hpp"
 #include "radio_follow/sim/virtual_sensors.hpp"
 
 namespace radio_follow {
@@ -29,32 +29,32 @@ Stats stats(const std::vector<double>& v) {
 }
 
 TEST(SensorTables, UwbTableRowsAreReproducedAndInterpolated) {
-  EXPECT_NEAR(uwbRangeError(1.0).bias, -0.13, 1e-12);
-  EXPECT_NEAR(uwbRangeError(10.0).sigma, 0.018, 1e-12);
+  EXPECT_NEAR(models::uwbRangeError(1.0).bias, -0.13, 1e-12);
+  EXPECT_NEAR(models::uwbRangeError(10.0).sigma, 0.018, 1e-12);
   // Midway between 4 m (bias -0.06, sigma 0.018) and 6 m (-0.11, 0.033).
-  EXPECT_NEAR(uwbRangeError(5.0).bias, -0.085, 1e-12);
-  EXPECT_NEAR(uwbRangeError(5.0).sigma, 0.0255, 1e-12);
+  EXPECT_NEAR(models::uwbRangeError(5.0).bias, -0.085, 1e-12);
+  EXPECT_NEAR(models::uwbRangeError(5.0).sigma, 0.0255, 1e-12);
   // Held outside the measured 1-12 m.
-  EXPECT_NEAR(uwbRangeError(0.3).bias, -0.13, 1e-12);
-  EXPECT_NEAR(uwbRangeError(30.0).bias, -0.24, 1e-12);
+  EXPECT_NEAR(models::uwbRangeError(0.3).bias, -0.13, 1e-12);
+  EXPECT_NEAR(models::uwbRangeError(30.0).bias, -0.24, 1e-12);
 }
 
 TEST(SensorTables, AoaTablesMatchThesisRows) {
   // XPLR-AOA-1, 4 m, -80 deg: mean -6.27 (error +73.73 deg), sigma 50.77 (Table 3.4).
-  AoaError e = aoaError(AoaBoardKind::kXplrAoa1, deg2rad(-80.0), 4.0);
+  models::AoaError e = models::aoaError(AoaBoardKind::kXplrAoa1, deg2rad(-80.0), 4.0);
   EXPECT_NEAR(rad2deg(e.azimuth_bias), 73.73, 1e-9);
   EXPECT_NEAR(rad2deg(e.azimuth_sigma), 50.77, 1e-9);
   EXPECT_NEAR(e.rssi_mean, -56.96, 1e-9);
   // ANT-B10, 1 m, 0 deg: mean -3.03, sigma 0.62 (Table 3.5).
-  e = aoaError(AoaBoardKind::kAntB10, 0.0, 1.0);
+  e = models::aoaError(AoaBoardKind::kAntB10, 0.0, 1.0);
   EXPECT_NEAR(rad2deg(e.azimuth_bias), -3.03, 1e-9);
   EXPECT_NEAR(rad2deg(e.azimuth_sigma), 0.62, 1e-9);
   // Halfway between the 1 m and 2 m tables at 20 deg for XPLR (sigma 1.92 and 2.29).
-  e = aoaError(AoaBoardKind::kXplrAoa1, deg2rad(20.0), 1.5);
+  e = models::aoaError(AoaBoardKind::kXplrAoa1, deg2rad(20.0), 1.5);
   EXPECT_NEAR(rad2deg(e.azimuth_sigma), 2.105, 1e-9);
   // RSSI keeps falling beyond the last table (4 m): 20 log10(8/4) = 6.02 dB weaker.
-  const double at4 = aoaError(AoaBoardKind::kXplrAoa1, 0.0, 4.0).rssi_mean;
-  const double at8 = aoaError(AoaBoardKind::kXplrAoa1, 0.0, 8.0).rssi_mean;
+  const double at4 = models::aoaError(AoaBoardKind::kXplrAoa1, 0.0, 4.0).rssi_mean;
+  const double at8 = models::aoaError(AoaBoardKind::kXplrAoa1, 0.0, 8.0).rssi_mean;
   EXPECT_NEAR(at4 - at8, 20.0 * std::log10(2.0), 1e-9);
 }
 

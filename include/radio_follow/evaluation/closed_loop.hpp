@@ -1,0 +1,140 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <deque>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "radio_follow/config/layout.hpp"
+#include "radio_follow/control/command_pipeline.hpp"
+#include "radio_follow/control/path_follower.hpp"
+#include "radio_follow/control/target_motion.hpp"
+#include "radio_follow/control/velocity_law.hpp"
+#include "radio_follow/estimation/locator.hpp"
+#include "radio_follow/evaluation/follow_inputs.hpp"
+#include "radio_follow/evaluation/follow_metrics.hpp"
+#include "radio_follow/sim/target_path.hpp"
+#include "radio_follow/sim/world.hpp"
+
+namespace radio_follow {
+namespace evaluation {
+
+/// A sensor that goes silent for a while (an unplugged cable, a flat battery): its
+/// events are dropped from `at` for `duration` scenario seconds.
+struct SensorOutage {
+  std::string sensor;  ///< TWR module ID or AoA board ID of the layout
+  double at = 0.0;     ///< s
+  double duration = 0.0;
+};
+
+enum class FollowController { kVelocity, kPathFollower };
+
+/// Everything a closed-loop run needs, as the nodes of follower.launch and
+/// simulator.launch get it (loadClosedLoopConfig reads the same shipped files).
+struct ClosedLoopConfig {
+  Layout layout;
+  sim::Scenario scenario;
+  sim::WorldConfig world;
+  double step_rate = 100.0;  ///< simulator physics steps per second
+  double cmd_timeout = 0.5;  ///< s without a command before the base stops
+  estimation::LocatorConfig locator;
+  double locator_rate = 20.0;  ///< Hz
+  FollowController controller = FollowController::kVelocity;
+  control::CommandPipelineParams pipeline;
+  double controller_rate = 20.0;  ///< Hz
+  control::VelocityLawParams law;
+  control::PathFollowParams path;
+  /// The velocity controller's speed feed-forward from the target's motion in the
+  /// odometry frame (its `odom_frame` parameter non-empty).
+  bool feed_forward_from_odometry = true;
+  FollowSettings metrics;
+  double evaluator_rate = 20.0;  ///< Hz, as the follow evaluator samples
+  std::vector<SensorOutage> outages;
+
+  /// Throws ParamError naming the first unusable field.
+  void validate() const;
+};
+
+/// Reads a run's configuration from the package's config directory exactly as the launch
+/// files do: config/simulator.yaml, the layout and scenario by name, config/locator.yaml
+/// (then `locator_overrides` if not empty), config/controller_common.yaml,
+/// config/velocity_controller.yaml, config/path_follower.yaml for the path follower (then
+/// `controller_params` if not empty). Unknown keys in the controller files are refused
+/// as the nodes refuse them. Throws ParamError.
+ClosedLoopConfig loadClosedLoopConfig(const std::string& config_dir, const std::string& layout,
+                                      const std::string& scenario, FollowController controller,
+                                      int seed, const std::string& controller_params = "",
+                                      const std::string& locator_overrides = "");
+
+/// The whole follow loop in one process on simulated time: world and sensors (sim::World),
+/// the locator, the controller's law and the command pipeline (safety stop, limits), and
+/// the follow evaluator's metrics, each at its node's rate, in a fixed order within a
+/// step. No threads, no wall clock: the same configuration and seed give bit-identical
+/// metrics. What it leaves out of the ROS loop: transport latency (messages arrive in the
+/// step they are sent), the drivers' parsing and reconnects (an outage is silence only).
+class ClosedLoop {
+ public:
+  explicit ClosedLoop(const ClosedLoopConfig& config);
+  ~ClosedLoop();
+  ClosedLoop(const ClosedLoop&) = delete;
+  ClosedLoop& operator=(const ClosedLoop&) = delete;
+
+  /// Runs the scenario to its end and returns the evaluator's report.
+  FollowReport run();
+  /// One physics step (1 / step_rate s); false once the scenario is over.
+  bool step();
+
+  const FollowMetrics& metrics() const { return metrics_; }
+  const sim::World& world() const { return world_; }
+  const estimation::LocatorStats& locatorStats() const { return locator_.stats(); }
+  /// One controller tick's command, on the simulator's clock (scenario time + 1 s, as
+  /// the ROS simulator stamps).
+  struct CommandSample {
+    double t;
+    control::VelocityCommand command;
+    bool stopped;  ///< the safety layer forbade motion
+  };
+  const std::vector<CommandSample>& commands() const { return commands_; }
+
+ private:
+  struct Timer {
+    double period;
+    double next;
+    bool due(double t);
+  };
+  struct PoseAt {
+    double t;
+    Pose2 pose;
+  };
+
+  bool silent(const std::string& sensor, double t) const;
+  void feedSensors(const sim::StepEvents& events, double now);
+  void runLocator(double now);
+  void runController(double now);
+  void sample(double now);
+  /// The robot's odometry pose at time t (linear interpolation, as TF does).
+  std::optional<Pose2> poseAt(double t) const;
+
+  ClosedLoopConfig config_;
+  sim::World world_;
+  estimation::Locator locator_;
+  control::CommandPipeline pipeline_;
+  control::VelocityLaw velocity_law_;
+  control::PathFollowLaw path_law_;
+  control::TargetTrack track_;
+  FollowMetrics metrics_;
+  Timer locator_timer_;
+  Timer controller_timer_;
+  Timer evaluator_timer_;
+  std::optional<estimation::LocatorEstimate> estimate_;  ///< the newest one published
+  double estimate_stamp_ = 0.0;
+  control::VelocityCommand command_;
+  double command_time_ = -1e9;
+  std::deque<PoseAt> poses_;                              ///< odometry history (TF buffer)
+  std::deque<std::pair<double, Eigen::Vector3d>> truth_;  ///< target in the robot frame
+  std::vector<CommandSample> commands_;
+};
+
+}  // namespace evaluation
+}  // namespace radio_follow

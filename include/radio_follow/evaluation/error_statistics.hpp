@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace radio_follow {
+namespace evaluation {
+
+/// Nearest-rank quantile (q in [0, 1]); NaN for no values.
+double quantile(std::vector<double> values, double q);
+/// Arithmetic mean; NaN for no values.
+double mean(const std::vector<double>& values);
+
+/// A number for a JSON document: 6 significant digits, `null` when not finite.
+std::string jsonNumber(double v);
+/// A JSON string literal (quotes, backslashes and control characters escaped).
+std::string jsonString(const std::string& text);
+
+/// Count, mean, median, 95th percentile and maximum of a set of errors.
+struct ErrorSummary {
+  std::size_t count = 0;
+  double mean = 0.0;
+  double median = 0.0;
+  double p95 = 0.0;
+  double max = 0.0;
+};
+ErrorSummary summarize(const std::vector<double>& errors);
+
+/// Position errors of an estimator against a ground truth in the robot frame, overall,
+/// by the direction of the target seen from the robot (8 sectors of 45 deg; sector 0 is
+/// centred on the robot's front, counting counter-clockwise, as the thesis's Figures
+/// 5.10-5.13 break the error down by direction) and by distance band.
+class ErrorStatistics {
+ public:
+  static constexpr std::size_t kSectors = 8;
+  /// Upper edges of the distance bands, m (the last band is open).
+  static constexpr std::array<double, 3> kBandEdges{2.0, 4.0, 8.0};
+
+  /// One estimate: the true target position in the robot frame (x forward, y left, m)
+  /// and the error of the estimate (m). Non-finite samples are ignored.
+  void add(double truth_x, double truth_y, double error);
+
+  ErrorSummary overall() const { return summarize(all_); }
+  ErrorSummary sector(std::size_t i) const { return summarize(sectors_.at(i)); }
+  ErrorSummary band(std::size_t i) const { return summarize(bands_.at(i)); }
+  /// Sector index of a direction (rad, CCW from the robot's x axis).
+  static std::size_t sectorOf(double bearing);
+  /// "0-2 m", ..., "8+ m".
+  static std::string bandName(std::size_t i);
+
+  /// The statistics as a JSON object (errors in metres; NaN as null).
+  std::string toJson() const;
+
+ private:
+  std::vector<double> all_;
+  std::array<std::vector<double>, kSectors> sectors_;
+  std::array<std::vector<double>, kBandEdges.size() + 1> bands_;
+};
+
+}  // namespace evaluation
+}  // namespace radio_follow

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "radio_follow/evaluation/closed_loop.hpp"
+
+namespace radio_follow {
+namespace evaluation {
+
+/// What an experiment asserts; absent thresholds are not checked (test/experiments.yaml).
+struct ExperimentCheck {
+  std::optional<double> min_gap_while_moving;       ///< m
+  std::optional<double> min_gap_within_tolerance;   ///< share of the walk
+  std::optional<double> max_estimate_error_median;  ///< m
+  std::optional<double> max_path_deviation;         ///< m
+  /// No forward command in [first, second] (simulator clock: scenario s + 1).
+  std::optional<std::pair<double, double>> stop_window;
+  /// A forward command above 0.1 m/s after this (simulator clock).
+  std::optional<double> resume_after;
+};
+
+/// One closed-loop experiment: a scenario on a layout with a controller, sensor outages
+/// (faults) and what it must show.
+struct Experiment {
+  std::string name;
+  std::string layout;
+  std::string scenario;
+  FollowController controller = FollowController::kVelocity;
+  std::vector<SensorOutage> outages;
+  ExperimentCheck check;
+};
+
+/// Reads the experiment definitions (format in test/experiments.yaml); throws ParamError
+/// naming the bad entry. Unknown keys are refused.
+std::vector<Experiment> loadExperiments(const std::string& path);
+
+/// A forward command at a time, as a controller sent it.
+struct CommandAt {
+  double t;       ///< s, simulator clock
+  double linear;  ///< m/s
+};
+
+/// The sentences saying which threshold of `check` the run broke (empty: it passed).
+/// Used on lockstep runs and on the ROS runs' reports alike.
+std::vector<std::string> checkRun(const ExperimentCheck& check, const FollowReport& report,
+                                  const std::vector<CommandAt>& commands);
+
+struct ExperimentResult {
+  FollowReport report;
+  std::vector<std::string> violations;  ///< checkRun's, plus the report's own failures
+};
+
+/// Runs `experiment` in the lockstep closed loop with the configuration under
+/// `config_dir` and noise seed `seed`, and checks it.
+ExperimentResult runExperiment(const Experiment& experiment, const std::string& config_dir,
+                               int seed);
+
+}  // namespace evaluation
+}  // namespace radio_follow

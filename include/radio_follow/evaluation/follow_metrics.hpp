@@ -1,0 +1,101 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace radio_follow {
+namespace evaluation {
+
+/// One moment of a follow run, as the evaluator samples it (world = odometry frame).
+struct FollowSample {
+  double t = 0.0;             ///< s
+  double robot_x = 0.0;       ///< m, world
+  double robot_y = 0.0;       ///< m, world
+  double robot_yaw = 0.0;     ///< rad, world
+  double robot_speed = 0.0;   ///< m/s, measured (odometry)
+  double cmd_linear = 0.0;    ///< m/s, last command
+  double cmd_angular = 0.0;   ///< rad/s, last command
+  double target_x = 0.0;      ///< m, world (ground truth)
+  double target_y = 0.0;      ///< m, world (ground truth)
+  double target_speed = 0.0;  ///< m/s (ground truth)
+  /// The locator's estimate in the robot frame, when one was valid (status OK/DEGRADED).
+  std::optional<double> estimate_x;
+  std::optional<double> estimate_y;
+  /// Ground truth in the robot frame (x forward, y left), m: at the estimate's stamp when
+  /// there is an estimate (so the error is the locator's, not transport latency), else now.
+  double truth_x = 0.0;
+  double truth_y = 0.0;
+  /// Status of the newest estimate heard ("OK", "AMBIGUOUS", ...; "none" before the first).
+  std::string estimate_status = "none";
+};
+
+/// What the experiments assert and the demo reports.
+struct FollowSettings {
+  double follow_distance = 1.6;  ///< m
+  double safe_distance = 1.3;    ///< m
+  double gap_tolerance = 0.3;    ///< m
+  double robot_max_speed = 1.5;  ///< m/s; the gap is judged while the person walks slower
+  /// Gap statistics start once this time has passed and the gap has first come within
+  /// gap_tolerance of follow_distance: the robot catching up from its start position is
+  /// not following yet. s.
+  double settle_time = 5.0;
+  /// Path deviation is judged over the same window as the gap.
+  /// A turn: the person's heading changes by more than this over `turn_window` metres
+  /// of path; path-deviation stats exclude robot positions near such places.
+  double turn_heading_change = 0.35;  ///< rad (20 deg)
+  double turn_window = 2.0;           ///< m
+  double moving_command = 0.02;       ///< |cmd| above this counts as "commanded to move", m/s
+  /// The run fails when the robot drove less than this although it had to move (the
+  /// person walked more than a metre, or started farther than follow_distance +
+  /// gap_tolerance away), m.
+  double min_robot_distance = 0.3;
+};
+
+struct FollowReport {
+  double duration = 0.0;               ///< s
+  double robot_distance = 0.0;         ///< m driven
+  double target_distance = 0.0;        ///< m walked
+  double min_gap_while_moving = 0.0;   ///< m; +inf when never commanded to move
+  double min_gap = 0.0;                ///< m
+  double final_gap = 0.0;              ///< m, robot to target at the last sample (homing)
+  double gap_within_tolerance = 0.0;   ///< fraction of gap samples
+  int gap_samples = 0;                 ///< samples the gap fraction is over
+  double gap_window_start = 0.0;       ///< s after the first sample; NaN if never caught up
+  double gap_mean = 0.0;               ///< m
+  double estimate_error_median = 0.0;  ///< m
+  double estimate_error_p95 = 0.0;     ///< m
+  double estimate_error_mean = 0.0;    ///< m
+  double estimate_availability = 0.0;  ///< fraction of samples with an estimate
+  /// Fraction of samples by the newest estimate's status (OK, DEGRADED, AMBIGUOUS, ...).
+  std::map<std::string, double> estimate_status_share;
+  double path_deviation_median = 0.0;  ///< m, outside turns
+  double path_deviation_max = 0.0;     ///< m, outside turns
+  int path_samples = 0;
+  /// Why the run failed as a closed loop, one sentence each (empty: it passed): the robot
+  /// never moved, the estimate was never usable. Not a quality threshold: a wiring check.
+  std::vector<std::string> failures;
+
+  std::string toJson() const;
+};
+
+/// Accumulates FollowSamples and computes the run's metrics.
+class FollowMetrics {
+ public:
+  explicit FollowMetrics(const FollowSettings& settings) : settings_(settings) {}
+
+  void add(const FollowSample& sample);
+  FollowReport report() const;
+  const std::vector<FollowSample>& samples() const { return samples_; }
+  /// The samples as CSV with a header row (for plots and offline analysis).
+  std::string toCsv() const;
+
+ private:
+  FollowSettings settings_;
+  std::vector<FollowSample> samples_;
+};
+
+}  // namespace evaluation
+}  // namespace radio_follow

@@ -1,0 +1,160 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <ros/callback_queue.h>
+#include <ros/ros.h>
+#include <sensor_msgs/LaserScan.h>
+#include <std_msgs/Bool.h>
+#include <std_srvs/SetBool.h>
+
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "radio_follow/UwbRanges.h"
+#include "radio_follow/config/layout.hpp"
+#include "radio_follow/control/command_pipeline.hpp"
+#include "radio_follow/control/follower_state.hpp"
+#include "radio_follow/ros/common/output_diagnostic.hpp"
+#include "radio_follow/ros/common/params.hpp"
+#include "radio_follow/ros/common/wiring_debug.hpp"
+
+namespace radio_follow {
+
+template <typename Tuning, typename Params>
+class ReconfigureServer;
+class ControllerTuningConfig;
+
+/// Queue of each range subscription: one per module line at 10 Hz, several seconds'
+/// worth so that a burst after a reconnect is not dropped before the stop sees it.
+constexpr std::uint32_t kRangeQueueSize = 100;
+
+/// Parameters every controller shares (doc/nodes/velocity_controller.md lists them): the
+/// command pipeline's (safety stop, scan gate, limits) and the node's wiring.
+struct ControllerCommonParams : control::CommandPipelineParams {
+  std::string cmd_vel_topic = "cmd_vel";
+  double rate = 20.0;  ///< Hz
+  bool start_enabled = false;
+  /// Optional sensor layout: when set, `range_topics` and `target_anchor_id` default to
+  /// the layout's conventional topics (`uwb/<module id>/ranges`) and target anchor.
+  std::string layout_file;
+  /// UwbRanges topics whose raw ranges feed the safety stop.
+  std::vector<std::string> range_topics{"uwb_ranges"};
+
+  void load(const ParamReader& private_nh);
+  void validate() const;
+};
+
+using control::loadPidGains;
+
+/// The ROS side of the command pipeline (control::CommandPipeline) shared by the three
+/// controllers: raw-range safety stop on its own thread (published from the range
+/// callback, not only at the next tick), enable service and topic, status on change, the
+/// laser scan, cmd_vel at a fixed rate, and a last zero command on SIGINT/SIGTERM.
+///
+/// A derived node loads and validates its own parameters, creates its subscribers and
+/// then calls start(); the base calls compute() on every tick in which the safety
+/// monitor allows motion.
+class ControllerBase {
+ public:
+  virtual ~ControllerBase();
+  ControllerBase(const ControllerBase&) = delete;
+  ControllerBase& operator=(const ControllerBase&) = delete;
+
+ protected:
+  /// What the control law wants this tick.
+  using Output = control::LawOutput;
+
+  /// Loads and validates the common parameters (throws ParamError); subscribes nothing.
+  /// `watch_ranges_default` decides whether ranges are watched when ~range_topics is unset.
+  ControllerBase(ros::NodeHandle& nh, ros::NodeHandle& private_nh, bool watch_ranges_default);
+
+  /// The node's private parameters: a derived node loads its own structs through it.
+  const ParamReader& params() const { return params_in_; }
+  /// Refuses (ParamError) any private parameter that neither the base nor the derived
+  /// node read (a typo); call it once the derived node's parameters are loaded, before
+  /// its first subscriber. start() refuses to run without it.
+  void requireKnownParams();
+
+  /// Creates the shared subscribers, service, publishers and timer.
+  void start();
+
+  /// The control law; `dt` seconds since the previous tick.
+  virtual Output compute(const ros::Time& now, double dt) = 0;
+  /// Called when the safety layer takes over, so laws can reset their integrators.
+  virtual void onStopped() {}
+  /// Live tuning is about to install `next` common parameters: a law that depends on
+  /// them (safe_distance, max_linear) validates and takes them, or throws ParamError to
+  /// refuse the whole change.
+  virtual void onCommonChange(const ControllerCommonParams& /*next*/) {}
+
+  /// Feeds the safety monitor with an estimate (or a bearing, for homing). Returns false
+  /// when it was refused (stamped in the future: the robot stops; TimePolicy).
+  bool noteEstimate(const ros::Time& stamp, control::EstimateQuality quality);
+
+  const ControllerCommonParams& common() const { return common_; }
+
+  /// Nearest fresh (calibrated) module range minus safe_distance at `now`, m; +inf when
+  /// ranges are not watched or none is fresh (the safety layer stops the robot then).
+  double moduleGap(const ros::Time& now) const;
+
+  ros::NodeHandle nh_;
+  ros::NodeHandle private_nh_;
+
+ private:
+  void onRanges(const std::string& topic, const UwbRanges::ConstPtr& msg);
+  void onScan(const sensor_msgs::LaserScan::ConstPtr& msg);
+  void onEnableTopic(const std_msgs::Bool::ConstPtr& msg);
+  bool onEnableService(std_srvs::SetBool::Request& req, std_srvs::SetBool::Response& res);
+  void setEnabled(bool enabled);
+  void onTick(const ros::TimerEvent& event);
+  /// Handles SIGINT/SIGTERM (flag set by the signal handler): last zero, then shutdown.
+  void onStopCheck(const ros::WallTimerEvent& event);
+  /// Main thread: resets the law (onStopped) and publishes the stop.
+  void stopNow(control::StopReason reason);
+  /// Any thread, safety_mutex_ held: zero command and status, limiter reset.
+  void publishStopLocked(control::StopReason reason);
+  /// safety_mutex_ held: sends what the pipeline decided.
+  void publishLocked(const control::PipelineResult& result);
+  void publishCommand(const control::VelocityCommand& cmd);
+  void publishStatus(control::FollowerState state, const std::string& text);
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
+
+  ParamReader params_in_;
+  /// Guards what the safety thread (range callbacks) and the main thread share: the
+  /// pipeline, the published state, common_ during live tuning.
+  mutable std::mutex safety_mutex_;
+  ros::CallbackQueue safety_queue_;
+  std::unique_ptr<ros::AsyncSpinner> safety_spinner_;
+  bool params_checked_ = false;
+  ControllerCommonParams common_;
+  control::CommandPipeline pipeline_;
+  control::StatusTracker status_tracker_;
+  control::FollowerState state_ = control::FollowerState::kDisabled;
+  std::string status_text_;
+  unsigned long stopped_ticks_ = 0;
+
+  std::vector<ros::Subscriber> range_subs_;
+  ros::Subscriber scan_sub_;
+  ros::Subscriber enable_sub_;
+  ros::ServiceServer enable_srv_;
+  ros::Publisher cmd_pub_;
+  ros::Publisher status_pub_;
+  ros::Timer timer_;
+  ros::WallTimer stop_check_timer_;
+  diagnostic_updater::Updater diagnostics_;
+  std::optional<OutputDiagnostic> cmd_diagnostic_;  ///< rate of cmd_vel, from start()
+  /// First range per watched topic (debug log); keys fixed in start(), before the thread.
+  std::map<std::string, FirstMessageLog> first_range_;
+  FirstMessageLog first_estimate_;
+  /// Live tuning of the safety thresholds and limits (doc/live_tuning.md), from start().
+  /// Live tuning of common_ (controller_reconfigure.hpp).
+  std::unique_ptr<ReconfigureServer<ControllerTuningConfig, ControllerCommonParams>> reconfigure_;
+  bool shutting_down_ = false;
+};
+
+}  // namespace radio_follow

@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <cstddef>
+#include <map>
+#include <string>
+
+#include "radio_follow/AoaBearing.h"
+#include "radio_follow/TdoaMeasurements.h"
+#include "radio_follow/UwbRanges.h"
+#include "radio_follow/estimation/locator.hpp"
+
+namespace radio_follow {
+
+/// Hands driver messages to a Locator the one way both the locator node and the offline
+/// evaluator do: only ranges to the target's anchor, only bearings of the target's tag
+/// (when the layout names one), a module named by its ID or else its frame, every value
+/// stamped with its message's header.
+class LocatorInputs {
+ public:
+  explicit LocatorInputs(estimation::Locator& locator) : locator_(locator) {}
+
+  /// Each returns how many entries the locator refused (unknown sensor, invalid value).
+  std::size_t add(const UwbRanges& msg);
+  std::size_t add(const AoaBearing& msg);
+  std::size_t add(const TdoaMeasurements& msg);
+
+  /// Ranges to the target's anchor so far.
+  std::size_t targetRanges() const { return target_ranges_; }
+  /// Ranges to other anchors so far, by normalised anchor ID: with none to the target,
+  /// the layout's target.uwb_anchor_id is probably wrong (the node warns).
+  const std::map<std::string, std::size_t>& otherAnchors() const { return other_anchors_; }
+
+ private:
+  estimation::Locator& locator_;
+  std::size_t target_ranges_ = 0;
+  std::map<std::string, std::size_t> other_anchors_;
+};
+
+}  // namespace radio_follow

@@ -1,0 +1,116 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <nav_msgs/Path.h>
+#include <ros/ros.h>
+#include <tf2_ros/transform_broadcaster.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "radio_follow/AoaBearing.h"
+#include "radio_follow/TargetEstimate.h"
+#include "radio_follow/TdoaMeasurements.h"
+#include "radio_follow/UwbRanges.h"
+#include "radio_follow/common/input_watch.hpp"
+#include "radio_follow/estimation/locator.hpp"
+#include "radio_follow/ros/common/output_diagnostic.hpp"
+#include "radio_follow/ros/common/params.hpp"
+#include "radio_follow/ros/locator/locator_inputs.hpp"
+#include "radio_follow/ros/locator/locator_reconfigure.hpp"
+
+namespace radio_follow {
+
+/// ROS wiring of the Locator: subscribes to the drivers' measurements, runs the solver at
+/// a fixed rate and publishes the target estimate, its pose, TF, markers, the path of
+/// recent estimates and diagnostics; warns which expected inputs are silent.
+/// Sensor positions come from the layout file (not from TF). See doc/nodes/locator.md.
+class LocatorNode {
+ public:
+  struct Params {
+    std::string layout_file;  ///< required
+    /// Inputs; all three empty (the default) = the layout's conventional topics.
+    std::vector<std::string> uwb_topics;
+    std::vector<std::string> aoa_topics;
+    std::vector<std::string> tdoa_topics;
+    double rate = 20.0;                   ///< solves per second, Hz
+    std::string target_frame = "target";  ///< child frame of the published TF
+    bool publish_tf = true;
+    /// An input topic without a message for this long (or never since the start) is
+    /// silent: warned about once per 10 s and listed in the diagnostics, s.
+    double input_timeout = 3.0;
+    /// Estimates kept in `target_path` (nav_msgs/Path); 0 = no path topic.
+    int path_length = 200;
+    estimation::LocatorConfig locator;  ///< the core's tuning
+
+    /// Reads the private parameters from `source`: the node's namespace (ParamReader) or
+    /// a YamlParams (a parameter file, for tools without a master), the same keys either
+    /// way (doc/nodes/locator.md).
+    void load(const ParamSource& source);
+    /// Throws ParamError naming the first invalid parameter.
+    void validate() const;
+  };
+
+  LocatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh);
+
+ private:
+  void onRanges(const UwbRanges::ConstPtr& msg);
+  void onBearing(const AoaBearing::ConstPtr& msg);
+  void onTdoa(const TdoaMeasurements::ConstPtr& msg);
+  void onTimer(const ros::TimerEvent& event);
+  void publish(const estimation::LocatorEstimate& estimate, const ros::Time& now);
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
+  /// A message arrived on input `index` (subscribers_ order).
+  void noteInput(std::size_t index);
+  /// Warns about silent inputs (rationed per input) and logs new measurement drops.
+  void watchInputs(const ros::Time& now);
+  void extendPath(const estimation::LocatorEstimate& estimate, const ros::Time& stamp);
+  template <typename Message>
+  void subscribe(ros::NodeHandle& nh, const std::string& topic,
+                 void (LocatorNode::*callback)(const typename Message::ConstPtr&));
+
+  Params params_;
+  Layout layout_;
+  std::unique_ptr<estimation::Locator> locator_;
+  std::unique_ptr<LocatorInputs> inputs_;
+  std::unique_ptr<LocatorReconfigure> reconfigure_;  ///< live tuning, after the params load
+  std::vector<ros::Subscriber> subscribers_;
+  ros::Publisher target_pub_;
+  ros::Publisher pose_pub_;
+  ros::Publisher markers_pub_;
+  ros::Publisher path_pub_;
+  nav_msgs::Path path_;  ///< recent estimates, at most path_length
+  tf2_ros::TransformBroadcaster tf_;
+  ros::Time last_tf_stamp_;  ///< stamp of the last target TF sent
+  diagnostic_updater::Updater diagnostics_;
+  std::optional<OutputDiagnostic> target_diagnostic_;
+  std::optional<OutputDiagnostic> pose_diagnostic_;
+  std::optional<InputWatch> inputs_watch_;  ///< one entry per subscriber, resolved names
+  ros::Time last_tick_;                     ///< zero until the first timer tick
+  estimation::LocatorStats last_stats_;     ///< drop counters at the last tick
+  ros::Timer timer_;
+  estimation::TargetStatus last_status_ = estimation::TargetStatus::kLost;
+  std::size_t ignored_messages_ = 0;
+  double solve_seconds_sum_ = 0.0;
+  double solve_seconds_max_ = 0.0;
+  std::size_t solves_seen_ = 0;
+};
+
+/// The locator's rviz markers (pure function, unit-testable without a master): a circle
+/// (2D) or sphere (3D) per range around its module, an arrow per fresh bearing from its
+/// board (selected ones green, ignored ones grey), the estimate (a small sphere) and the
+/// 2-sigma ellipse of its xy position as a ring above it (3D mode: the ellipsoid too).
+visualization_msgs::MarkerArray locatorMarkers(const Layout& layout,
+                                               const estimation::LocatorConfig& config,
+                                               const estimation::LocatorEstimate& estimate,
+                                               const ros::Time& stamp);
+
+/// Converts the core's estimate to the message (frame = the layout's fixed frame).
+TargetEstimate toMessage(const estimation::LocatorEstimate& estimate, const std::string& frame,
+                         const ros::Time& stamp);
+
+}  // namespace radio_follow

@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <geometry_msgs/PointStamped.h>
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "radio_follow/AoaBearing.h"
+#include "radio_follow/TdoaMeasurements.h"
+#include "radio_follow/UwbRanges.h"
+#include "radio_follow/config/layout.hpp"
+#include "radio_follow/estimation/locator.hpp"
+#include "radio_follow/evaluation/error_statistics.hpp"
+
+namespace radio_follow {
+
+/// The raw sensor messages and the ground truth of a bag, in memory, in stamp order, so that one
+/// bag can be replayed through many locator settings.
+struct BagData {
+  struct Entry {
+    double t = 0.0;  ///< the message's header stamp (driver receive time), s
+    enum class Kind { kRanges, kBearing, kTdoa } kind = Kind::kRanges;
+    std::size_t index = 0;  ///< into the vector of its kind
+  };
+  std::vector<Entry> entries;  ///< sorted by t
+  std::vector<UwbRanges> ranges;
+  std::vector<AoaBearing> bearings;
+  std::vector<TdoaMeasurements> tdoa;
+  /// The target in the robot frame (the simulator's ground_truth/target_relative), sorted
+  /// by stamp.
+  std::vector<geometry_msgs::PointStamped> truth;
+
+  double duration() const { return entries.empty() ? 0.0 : entries.back().t - entries.front().t; }
+};
+
+/// Reads every UwbRanges, AoaBearing and TdoaMeasurements message of a bag (any topic)
+/// and the PointStamped messages on `truth_topic`. Throws std::runtime_error naming the
+/// bag when it cannot be read or holds no sensor message.
+BagData loadBag(const std::string& path, const std::string& truth_topic);
+
+/// One locator update of a replay.
+struct ReplayRow {
+  double t = 0.0;  ///< update time (bag time), s
+  estimation::LocatorEstimate estimate;
+  bool has_truth = false;
+  Eigen::Vector2d truth = Eigen::Vector2d::Zero();  ///< robot frame, at the estimate's stamp
+  double error = 0.0;                               ///< m, xy, when has_truth and a position
+};
+
+struct ReplayResult {
+  std::vector<ReplayRow> rows;
+  evaluation::ErrorStatistics
+      statistics;             ///< over the rows with a position (OK/DEGRADED) and a truth
+  std::size_t refused = 0;    ///< measurements the locator refused (unknown sensors)
+  double availability = 0.0;  ///< share of updates with a position
+};
+
+/// Runs the locator over the bag exactly as the node would: messages in recording order,
+/// an update every 1/rate seconds of bag time; estimates compared with the ground truth
+/// interpolated at the estimate's stamp.
+ReplayResult replay(const BagData& bag, const Layout& layout,
+                    const estimation::LocatorConfig& config, double rate);
+
+/// The rows as CSV with a header (t, status, x, y, z, sigma_x, sigma_y, truth_x, truth_y,
+/// error; empty cells where there is no value).
+std::string toCsv(const ReplayResult& result);
+
+}  // namespace radio_follow

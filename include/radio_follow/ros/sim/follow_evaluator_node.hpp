@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <geometry_msgs/PointStamped.h>
+#include <geometry_msgs/Twist.h>
+#include <nav_msgs/Odometry.h>
+#include <radio_follow/TargetEstimate.h>
+#include <ros/ros.h>
+#include <std_msgs/Bool.h>
+
+#include <deque>
+#include <string>
+
+#include "radio_follow/common/time_policy.hpp"
+#include "radio_follow/evaluation/follow_metrics.hpp"
+
+namespace radio_follow {
+
+/// Samples a simulated follow run (ground truth, odometry, the locator's estimate and
+/// the command) at a fixed rate and, when it shuts down, writes `metrics.json` and
+/// `trajectory.csv` into `~report_dir` (scripts/plot_report.py draws them).
+class FollowEvaluatorNode {
+ public:
+  struct Params {
+    std::string report_dir;     ///< empty: only log the metrics
+    double rate = 20.0;         ///< Hz
+    double write_period = 5.0;  ///< s between report rewrites (also written at shutdown)
+    /// When the scenario ends, end the roslaunch that started this node (demo.launch;
+    /// false under rostest, whose test node ends the run).
+    bool end_launch = false;
+    evaluation::FollowSettings settings;
+
+    void validate() const;
+  };
+
+  FollowEvaluatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh);
+  ~FollowEvaluatorNode();
+
+  FollowEvaluatorNode(const FollowEvaluatorNode&) = delete;
+  FollowEvaluatorNode& operator=(const FollowEvaluatorNode&) = delete;
+
+ private:
+  void onTick(const ros::TimerEvent&);
+  /// The simulator announced the end: stop sampling, write, publish the report.
+  void onFinished(const std_msgs::BoolConstPtr& msg);
+  void writeReport() const;
+  /// One line saying whether the run worked as a closed loop, naming what failed.
+  void logVerdict(const evaluation::FollowReport& report) const;
+  void writeFiles() const;
+
+  Params params_;
+  evaluation::FollowMetrics metrics_;
+  TimePolicy time_;
+  ros::Subscriber odom_sub_, truth_sub_, relative_sub_, estimate_sub_, cmd_sub_;
+  ros::Timer timer_;
+  ros::Timer write_timer_;
+  ros::Subscriber finished_sub_;
+  ros::Publisher report_pub_;
+  bool finished_ = false;
+  nav_msgs::OdometryConstPtr odom_;
+  geometry_msgs::PointStampedConstPtr truth_;
+  geometry_msgs::PointStampedConstPtr previous_truth_;
+  /// Recent ground truth in the robot frame, so an estimate is compared with the truth
+  /// at its own stamp (the locator's error, not the transport's latency).
+  std::deque<geometry_msgs::PointStampedConstPtr> relative_history_;
+  TargetEstimateConstPtr estimate_;
+  geometry_msgs::Twist cmd_;
+  double target_speed_ = 0.0;
+};
+
+}  // namespace radio_follow

@@ -1,0 +1,351 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/evaluation/closed_loop.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "radio_follow/common/angles.hpp"
+#include "radio_follow/common/param_error.hpp"
+#include "radio_follow/common/yaml_params.hpp"
+
+namespace radio_follow {
+namespace evaluation {
+namespace {
+
+/// The simulator's clock reads this at the scenario's start (stamps are never zero).
+constexpr double kClockStart = 1.0;
+/// Estimates older than this (s) count as missing in a sample (as the follow evaluator).
+constexpr double kEstimateMaxAge = 1.0;
+/// Seconds of odometry and ground truth kept (the TF buffer, the evaluator's history).
+constexpr double kHistory = 2.0;
+/// The controllers' default tf_timeout: the newest transform counts this far from a stamp.
+constexpr double kTfTimeout = 0.05;
+
+bool rateOk(double hz) {
+  return std::isfinite(hz) && hz > 0.0 && hz <= 1000.0;
+}
+
+}  // namespace
+
+void ClosedLoopConfig::validate() const {
+  world.validate();
+  require(std::isfinite(step_rate) && step_rate >= 10.0 && step_rate <= 10000.0, "step_rate",
+          step_rate, "a rate in [10, 10000] Hz");
+  require(std::isfinite(cmd_timeout) && cmd_timeout > 0.0, "cmd_timeout", cmd_timeout,
+          "seconds > 0");
+  locator.validate();
+  require(rateOk(locator_rate), "locator rate", locator_rate, "a rate in (0, 1000] Hz");
+  pipeline.validate();
+  require(rateOk(controller_rate), "controller rate", controller_rate, "a rate in (0, 1000] Hz");
+  law.validate();
+  path.validate();
+  require(rateOk(evaluator_rate), "evaluator rate", evaluator_rate, "a rate in (0, 1000] Hz");
+  for (const SensorOutage& o : outages) {
+    const bool known = std::any_of(layout.twr_modules.begin(), layout.twr_modules.end(),
+                                   [&](const TwrModule& m) { return m.id == o.sensor; }) ||
+                       std::any_of(layout.aoa_boards.begin(), layout.aoa_boards.end(),
+                                   [&](const AoaBoard& b) { return b.id == o.sensor; });
+    require(known, "outage sensor", o.sensor, "a TWR module or AoA board ID of the layout");
+    require(std::isfinite(o.at) && o.at >= 0.0 && std::isfinite(o.duration) && o.duration > 0.0,
+            "outage of " + o.sensor, o.at, "a start >= 0 s and a duration > 0 s");
+  }
+}
+
+ClosedLoopConfig loadClosedLoopConfig(const std::string& dir, const std::string& layout,
+                                      const std::string& scenario, FollowController controller,
+                                      int seed, const std::string& controller_params,
+                                      const std::string& locator_overrides) {
+  require(seed >= 0, "seed", seed, "an integer >= 0");
+  ClosedLoopConfig c;
+  c.controller = controller;
+  c.layout = loadLayoutFile(dir + "/layouts/" + layout + ".yaml");
+  c.scenario = sim::loadScenarioFile(dir + "/scenarios/" + scenario + ".yaml",
+                                     static_cast<std::uint64_t>(seed));
+
+  // simulator.launch: config/simulator.yaml, seed from the launch.
+  const YamlParams simulator = YamlParams::fromFile(dir + "/simulator.yaml");
+  c.world.load(simulator);
+  c.world.seed = static_cast<std::uint64_t>(seed);
+  simulator.param("step_rate", c.step_rate, c.step_rate);
+  simulator.param("cmd_timeout", c.cmd_timeout, c.cmd_timeout);
+  // What only the ROS node uses (clock, frames, serial devices, the laser scan).
+  sim::ScanConfig scan;  // the laser scan of scenarios with obstacles: the ROS simulator's
+  scan.load(simulator);
+  for (const char* key : {"seed", "time_factor", "shutdown_on_finish", "odom_frame", "output",
+                          "serial_dir", "unplug"}) {
+    simulator.allow(key);
+  }
+  const YAML::Node occlusions = simulator.root()["twr_occlusions"];
+  simulator.allow("twr_occlusions");
+  require(!occlusions.IsDefined() || occlusions.IsNull() || occlusions.size() == 0,
+          "~twr_occlusions", std::string("(a list)"),
+          "an empty list: the lockstep loop does not simulate occlusions (the ROS simulator "
+          "does)");
+  simulator.requireAllKnown();
+
+  // follower.launch: the locator's file, then the overrides.
+  std::vector<std::string> locator_files{dir + "/locator.yaml"};
+  if (!locator_overrides.empty()) {
+    locator_files.push_back(locator_overrides);
+  }
+  const YamlParams locator = YamlParams::fromFiles(locator_files);
+  c.locator.load(locator);
+  locator.param("rate", c.locator_rate, c.locator_rate);
+  for (const char* key : {"uwb_topics", "aoa_topics", "tdoa_topics", "target_frame", "publish_tf",
+                          "input_timeout", "path_length", "layout_file"}) {
+    locator.allow(key);
+  }
+  locator.requireAllKnown();
+
+  // follower.launch: the controller's files in the same order.
+  std::vector<std::string> files{dir + "/controller_common.yaml",
+                                 dir + "/velocity_controller.yaml"};
+  if (controller == FollowController::kPathFollower) {
+    files.push_back(dir + "/path_follower.yaml");
+  }
+  if (!controller_params.empty()) {
+    files.push_back(controller_params);
+  }
+  const YamlParams p = YamlParams::fromFiles(files);
+  c.pipeline.load(p, &c.layout);
+  p.param("rate", c.controller_rate, c.controller_rate);
+  c.law = control::loadVelocityLawParams(p, c.pipeline);
+  std::string odom_frame = "odom";
+  p.param("odom_frame", odom_frame, odom_frame);
+  c.feed_forward_from_odometry = !odom_frame.empty();
+  if (controller == FollowController::kPathFollower) {
+    c.path.load(p);
+    p.allow("base_frame");
+  }
+  for (const char* key :
+       {"cmd_vel_topic", "start_enabled", "layout_file", "range_topics", "tf_timeout", "law"}) {
+    p.allow(key);
+  }
+  p.requireAllKnown();
+  c.validate();
+  return c;
+}
+
+bool ClosedLoop::Timer::due(double t) {
+  if (t + 1e-9 < next) {
+    return false;
+  }
+  while (next <= t + 1e-9) {
+    next += period;
+  }
+  return true;
+}
+
+ClosedLoop::ClosedLoop(const ClosedLoopConfig& config)
+    : config_([&] {
+        config.validate();
+        return config;
+      }()),
+      world_(config_.layout, config_.scenario, config_.world),
+      locator_(config_.layout, config_.locator),
+      pipeline_(config_.pipeline),
+      velocity_law_(config_.law),
+      path_law_(config_.path, config_.law),
+      metrics_(config_.metrics),
+      locator_timer_{1.0 / config_.locator_rate, kClockStart + 1.0 / config_.locator_rate},
+      controller_timer_{1.0 / config_.controller_rate, kClockStart + 1.0 / config_.controller_rate},
+      evaluator_timer_{1.0 / config_.evaluator_rate, kClockStart + 1.0 / config_.evaluator_rate} {
+  pipeline_.setEnabled(true);  // start_enabled, as the demo and the experiments run
+  poses_.push_back(PoseAt{kClockStart, world_.robot().pose()});
+}
+
+ClosedLoop::~ClosedLoop() = default;
+
+FollowReport ClosedLoop::run() {
+  while (step()) {
+  }
+  return metrics_.report();
+}
+
+bool ClosedLoop::step() {
+  if (world_.finished()) {
+    return false;
+  }
+  // The base stops by itself when its command stream stops.
+  const bool fresh = world_.time() + kClockStart - command_time_ <= config_.cmd_timeout;
+  const sim::StepEvents events = world_.step(
+      fresh ? command_.linear : 0.0, fresh ? command_.angular : 0.0, 1.0 / config_.step_rate);
+  const double now = kClockStart + world_.time();
+  poses_.push_back(PoseAt{now, world_.robot().pose()});
+  truth_.emplace_back(now, world_.targetInRobot());
+  while (!poses_.empty() && poses_.front().t < now - kHistory) {
+    poses_.pop_front();
+  }
+  while (!truth_.empty() && truth_.front().first < now - kHistory) {
+    truth_.pop_front();
+  }
+  feedSensors(events, now);
+  if (locator_timer_.due(now)) {
+    runLocator(now);
+  }
+  if (controller_timer_.due(now)) {
+    runController(now);
+  }
+  if (evaluator_timer_.due(now)) {
+    sample(now);
+  }
+  return true;
+}
+
+bool ClosedLoop::silent(const std::string& sensor, double t) const {
+  const double scenario_time = t - kClockStart;
+  return std::any_of(config_.outages.begin(), config_.outages.end(), [&](const SensorOutage& o) {
+    return o.sensor == sensor && scenario_time >= o.at && scenario_time < o.at + o.duration;
+  });
+}
+
+void ClosedLoop::feedSensors(const sim::StepEvents& events, double now) {
+  const Layout& layout = config_.layout;
+  for (const sim::TwrEvent& e : events.twr) {
+    const TwrModule& module = layout.twr_modules[e.module];
+    const double stamp = kClockStart + e.t;
+    if (silent(module.id, stamp)) {
+      continue;
+    }
+    locator_.addRange(module.id, e.range, stamp);
+    // The controller watches the same ranges (uwb/<id>/ranges) for its safety stop.
+    pipeline_.onRange(stamp, now, "uwb/" + module.id + "/ranges/" + module.id, module.id,
+                      layout.target_anchor_id, e.range);
+  }
+  for (const sim::AoaEvent& e : events.aoa) {
+    const AoaBoard& board = layout.aoa_boards[e.board];
+    const double stamp = kClockStart + e.t;
+    if (silent(board.id, stamp)) {
+      continue;
+    }
+    locator_.addBearing(board.id, e.sample.azimuth, e.sample.elevation, e.sample.rssi, stamp);
+  }
+  for (const sim::TdoaEvent& e : events.tdoa) {
+    const std::size_t ref = config_.world.tdoa_reference;
+    const double variance = config_.world.tdoa_sigma * config_.world.tdoa_sigma;
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < layout.tdoa_anchors.size(); ++i) {
+      if (i != ref) {
+        locator_.addTdoa(layout.tdoa_anchors[i].id, layout.tdoa_anchors[ref].id, e.differences[k++],
+                         variance, kClockStart + e.t);
+      }
+    }
+  }
+}
+
+std::optional<Pose2> ClosedLoop::poseAt(double t) const {
+  if (poses_.empty()) {
+    return std::nullopt;
+  }
+  if (t >= poses_.back().t) {
+    // TF has nothing newer: the newest transform, when it is within tf_timeout.
+    return t - poses_.back().t <= kTfTimeout ? std::optional<Pose2>(poses_.back().pose)
+                                             : std::nullopt;
+  }
+  if (t < poses_.front().t) {
+    return std::nullopt;
+  }
+  const auto after = std::lower_bound(poses_.begin(), poses_.end(), t,
+                                      [](const PoseAt& p, double time) { return p.t < time; });
+  if (after == poses_.begin()) {
+    return after->pose;
+  }
+  const PoseAt& a = *(after - 1);
+  const PoseAt& b = *after;
+  const double w = (t - a.t) / (b.t - a.t);
+  Pose2 pose;
+  pose.x = a.pose.x + w * (b.pose.x - a.pose.x);
+  pose.y = a.pose.y + w * (b.pose.y - a.pose.y);
+  pose.yaw = wrapAngle(a.pose.yaw + w * wrapAngle(b.pose.yaw - a.pose.yaw));
+  return pose;
+}
+
+void ClosedLoop::runLocator(double now) {
+  estimation::LocatorEstimate estimate = locator_.update(now);
+  // Stamped with its newest measurement; LOST with the current time (locator_node).
+  estimate_stamp_ =
+      estimate.status == estimation::TargetStatus::kLost ? now : std::max(0.0, estimate.stamp);
+  const double range = estimate.position.head<2>().norm();
+  const double bearing = std::atan2(estimate.position.y(), estimate.position.x());
+  // The controller's estimate callback: the safety layer first, then the odometry frame.
+  pipeline_.onEstimate(estimate_stamp_, now, estimateQuality(estimate.status, range, bearing));
+  if (hasPosition(estimate.status)) {
+    if (const std::optional<Pose2> robot = poseAt(estimate_stamp_)) {
+      const double c = std::cos(robot->yaw);
+      const double s = std::sin(robot->yaw);
+      const Eigen::Vector2d local = estimate.position.head<2>();
+      const Eigen::Vector2d in_odom(robot->x + c * local.x() - s * local.y(),
+                                    robot->y + s * local.x() + c * local.y());
+      track_.add(estimate_stamp_, robot->position(), in_odom);
+      path_law_.addTarget(in_odom);
+    }
+  }
+  estimate_ = std::move(estimate);
+}
+
+void ClosedLoop::runController(double now) {
+  const double dt = 1.0 / config_.controller_rate;
+  control::PipelineResult result;
+  const control::SafetyDecision decision = pipeline_.check(now);
+  if (!decision.may_move) {
+    velocity_law_.reset();
+    path_law_.reset();
+    result = pipeline_.stop(decision.reason);
+  } else {
+    const estimation::LocatorEstimate& e = *estimate_;  // may_move implies an estimate was heard
+    const double range = e.position.head<2>().norm();
+    const double bearing = std::atan2(e.position.y(), e.position.x());
+    const double module_gap = pipeline_.moduleGap(now);
+    control::LawOutput out;
+    if (config_.controller == FollowController::kVelocity) {
+      const std::optional<double> receding =
+          config_.feed_forward_from_odometry ? track_.recedingSpeed(now) : std::nullopt;
+      out = velocity_law_.step(targetPolar(e.status, range, bearing, receding, module_gap), dt);
+    } else {
+      out = path_law_.step(targetPolar(e.status, range, bearing, std::nullopt, module_gap),
+                           poses_.back().pose, track_.speed(now), dt);
+    }
+    result = pipeline_.finish(out, now, dt);
+  }
+  commands_.push_back(CommandSample{now, result.command, !result.moving});
+  command_ = result.command;
+  command_time_ = now;
+}
+
+void ClosedLoop::sample(double now) {
+  const Pose2& pose = world_.robot().pose();
+  FollowSample s;
+  s.t = now;
+  s.robot_x = pose.x;
+  s.robot_y = pose.y;
+  s.robot_yaw = pose.yaw;
+  s.robot_speed = world_.robot().linear();
+  s.cmd_linear = command_.linear;
+  s.cmd_angular = command_.angular;
+  const Eigen::Vector3d target = world_.targetInWorld();
+  s.target_x = target.x();
+  s.target_y = target.y();
+  s.target_speed = world_.targetSpeed();
+  s.truth_x = truth_.back().second.x();
+  s.truth_y = truth_.back().second.y();
+  if (estimate_) {
+    s.estimate_status = toString(estimate_->status);
+    if (hasPosition(estimate_->status) && estimate_stamp_ <= now &&
+        now - estimate_stamp_ <= kEstimateMaxAge) {
+      // Compare with the truth closest to the estimate's stamp.
+      const auto closest =
+          std::min_element(truth_.begin(), truth_.end(), [&](const auto& a, const auto& b) {
+            return std::abs(a.first - estimate_stamp_) < std::abs(b.first - estimate_stamp_);
+          });
+      s.truth_x = closest->second.x();
+      s.truth_y = closest->second.y();
+      s.estimate_x = estimate_->position.x();
+      s.estimate_y = estimate_->position.y();
+    }
+  }
+  metrics_.add(s);
+}
+
+}  // namespace evaluation
+}  // namespace radio_follow

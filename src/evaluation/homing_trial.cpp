@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/evaluation/homing_trial.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <random>
+
+#include "radio_follow/common/angles.hpp"
+
+namespace radio_follow {
+namespace evaluation {
+
+std::vector<HomingNoise> seed000NoiseConfigurations() {
+  return {
+      {"1: +-5 deg, +-5 %", deg2rad(5.0), 0.05, 0.0},
+      {"2: +-5 deg, +-10 %", deg2rad(5.0), 0.10, 0.0},
+      {"3: +-10 deg, +-10 %", deg2rad(10.0), 0.10, 0.0},
+      {"4: +-10 deg, +-20 %", deg2rad(10.0), 0.20, 0.0},
+      {"5: +-20 deg, +-1 m +-20 %", deg2rad(20.0), 0.20, 1.0},
+  };
+}
+
+HomingResult runHomingTrial(const HomingStep& controller, double target_x, double target_y,
+                            const HomingNoise& noise, const HomingTrialConfig& config,
+                            std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  auto uniform = [&rng](double half) {
+    return half > 0.0 ? std::uniform_real_distribution<double>(-half, half)(rng) : 0.0;
+  };
+  sim::UnicycleRobot robot(config.robot);
+  const double dt = 1.0 / config.rate;
+  HomingResult result;
+  HomingCommand command;
+  double t = 0.0;
+  for (; t <= config.time_limit; t += dt) {
+    const Pose2& pose = robot.pose();
+    const double dx = target_x - pose.x;
+    const double dy = target_y - pose.y;
+    const double distance = std::hypot(dx, dy);
+    HomingMeasurement m;
+    m.t = t;
+    m.odom = pose;
+    m.bearing = wrapAngleFast(std::atan2(dy, dx) - pose.yaw + uniform(noise.angle));
+    m.distance = std::max(
+        0.0, distance + uniform(noise.distance_fraction * distance + noise.distance_offset));
+    command = controller(m);
+    if (command.arrived) {
+      break;
+    }
+    robot.step(command.linear, command.angular, dt);
+  }
+  const Pose2& end = robot.pose();
+  result.time = std::min(t, config.time_limit);
+  result.final_error = std::hypot(target_x - end.x, target_y - end.y);
+  result.success = command.arrived && result.final_error < config.success_radius;
+  const double straight = std::hypot(end.x, end.y);
+  result.net_velocity = result.time > 0.0 ? straight / result.time : 0.0;
+  result.path_efficiency = robot.odometer() > 0.0 ? straight / robot.odometer() : 0.0;
+  result.goal_error = command.goal_x && command.goal_y
+                          ? std::hypot(*command.goal_x - target_x, *command.goal_y - target_y)
+                          : std::numeric_limits<double>::quiet_NaN();
+  return result;
+}
+
+HomingStep homingControllerStep(const control::HomingControllerParams& params) {
+  auto law = std::make_shared<control::HomingController>(params);
+  return [law](const HomingMeasurement& m) {
+    law->onOdometry(m.odom, m.t, m.t);
+    law->onRange(m.distance, m.t);
+    law->onBearing(m.bearing, std::numeric_limits<double>::quiet_NaN(), m.t);
+    const control::HomingOutput out = law->compute(m.t);
+    HomingCommand c;
+    c.linear = out.command.linear;
+    c.angular = out.command.angular;
+    c.arrived = out.state == control::FollowerState::kArrived;
+    if (const auto& goal = law->goal()) {
+      c.goal_x = goal->x();
+      c.goal_y = goal->y();
+    }
+    return c;
+  };
+}
+
+std::vector<std::pair<double, double>> homingTargets(int per_quadrant, double half_size,
+                                                     double min_distance, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> coordinate(0.0, half_size);
+  std::vector<std::pair<double, double>> targets;
+  const int signs[4][2] = {{1, 1}, {-1, 1}, {-1, -1}, {1, -1}};
+  for (const auto& sign : signs) {
+    for (int i = 0; i < per_quadrant;) {
+      const double x = sign[0] * coordinate(rng);
+      const double y = sign[1] * coordinate(rng);
+      if (std::hypot(x, y) >= min_distance) {
+        targets.emplace_back(x, y);
+        ++i;
+      }
+    }
+  }
+  return targets;
+}
+
+HomingSummary summarize(const std::vector<HomingResult>& results) {
+  HomingSummary s;
+  s.runs = static_cast<int>(results.size());
+  int successes = 0;
+  for (const auto& r : results) {
+    if (!r.success) {
+      continue;
+    }
+    ++successes;
+    s.time += r.time;
+    s.net_velocity += r.net_velocity;
+    s.goal_error += r.goal_error;
+    s.final_error += r.final_error;
+    s.path_efficiency += r.path_efficiency;
+  }
+  s.success_rate = s.runs > 0 ? double(successes) / s.runs : 0.0;
+  if (successes > 0) {
+    s.time /= successes;
+    s.net_velocity /= successes;
+    s.goal_error /= successes;
+    s.final_error /= successes;
+    s.path_efficiency /= successes;
+  }
+  return s;
+}
+
+}  // namespace evaluation
+}  // namespace radio_follow

@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/ros/control/announcer.hpp"
+
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <sstream>
+
+#include "radio_follow/common/param_error.hpp"
+#include "radio_follow/ros/common/params.hpp"
+
+extern char** environ;
+
+namespace radio_follow {
+
+std::string findExecutable(const std::string& command) {
+  if (command.find('/') != std::string::npos) {
+    return access(command.c_str(), X_OK) == 0 ? command : std::string();
+  }
+  const char* path = std::getenv("PATH");
+  std::istringstream dirs(path ? path : "/usr/bin:/bin");
+  std::string dir;
+  while (std::getline(dirs, dir, ':')) {
+    const std::string candidate = (dir.empty() ? "." : dir) + "/" + command;
+    if (access(candidate.c_str(), X_OK) == 0) {
+      return candidate;
+    }
+  }
+  return std::string();
+}
+
+void AnnouncerNode::Params::load(const ParamReader& pnh) {
+  pnh.param("status_topics", status_topics, status_topics);
+  pnh.param("command", command, command);
+  pnh.param("voice", voice, voice);
+  pnh.param("words_per_minute", words_per_minute, words_per_minute);
+  pnh.param("repeat_interval", repeat_interval, repeat_interval);
+  pnh.param("max_queued", max_queued, max_queued);
+}
+
+void AnnouncerNode::Params::validate() const {
+  require(!status_topics.empty(), "~status_topics", status_topics.size(),
+          "at least one FollowerStatus topic");
+  require(!command.empty(), "~command", command, "an executable name");
+  require(words_per_minute >= 80 && words_per_minute <= 450, "~words_per_minute", words_per_minute,
+          "80 .. 450");
+  require(repeat_interval >= 0.0, "~repeat_interval", repeat_interval, "seconds >= 0");
+  require(max_queued >= 1, "~max_queued", max_queued, "a count >= 1");
+}
+
+AnnouncerNode::AnnouncerNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
+    : params_(loadStrict<Params>(private_nh)),
+      queue_(params_.repeat_interval, static_cast<std::size_t>(params_.max_queued)),
+      executable_(findExecutable(params_.command)) {
+  if (executable_.empty()) {
+    ROS_WARN("%s: '%s' not found; status texts are only printed", ros::this_node::getName().c_str(),
+             params_.command.c_str());
+  }
+  for (const auto& topic : params_.status_topics) {
+    subs_.push_back(nh.subscribe(topic, 10, &AnnouncerNode::onStatus, this));
+  }
+  timer_ = nh.createTimer(ros::Duration(0.1), &AnnouncerNode::onTimer, this);
+}
+
+AnnouncerNode::~AnnouncerNode() {
+  if (child_ > 0) {
+    kill(child_, SIGTERM);
+    waitpid(child_, nullptr, 0);
+  }
+}
+
+void AnnouncerNode::onStatus(const FollowerStatus::ConstPtr& msg) {
+  queue_.push(msg->text, ros::WallTime::now().toSec());
+}
+
+void AnnouncerNode::onTimer(const ros::TimerEvent& /*event*/) {
+  if (child_ > 0) {
+    int status = 0;
+    const pid_t done = waitpid(child_, &status, WNOHANG);
+    if (done == 0) {
+      return;  // still speaking: one message at a time
+    }
+    child_ = -1;
+  }
+  const auto text = queue_.pop(ros::WallTime::now().toSec());
+  if (!text) {
+    return;
+  }
+  ROS_INFO("%s: \"%s\"", ros::this_node::getName().c_str(), text->c_str());
+  if (!executable_.empty()) {
+    speak(*text);
+  }
+}
+
+bool AnnouncerNode::speak(const std::string& text) {
+  const std::string speed = std::to_string(params_.words_per_minute);
+  // The text is one argv element: no shell, so nothing in it is interpreted.
+  std::vector<std::string> args{executable_, "-v", params_.voice, "-s", speed, "--", text};
+  std::vector<char*> argv;
+  for (auto& a : args) {
+    argv.push_back(a.data());
+  }
+  argv.push_back(nullptr);
+  const int err = posix_spawn(&child_, executable_.c_str(), nullptr, nullptr, argv.data(), environ);
+  if (err != 0) {
+    child_ = -1;
+    ROS_WARN_THROTTLE(30.0, "%s: cannot start %s: %s", ros::this_node::getName().c_str(),
+                      executable_.c_str(), std::strerror(err));
+    return false;
+  }
+  return true;
+}
+
+}  // namespace radio_follow

@@ -1,0 +1,326 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/ros/control/controller_base.hpp"
+
+#include <geometry_msgs/Twist.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cctype>
+#include <csignal>
+
+#include "radio_follow/FollowerStatus.h"
+#include "radio_follow/common/param_error.hpp"
+#include "radio_follow/common/param_keys.hpp"
+#include "radio_follow/config/layout.hpp"
+#include "radio_follow/ros/control/controller_reconfigure.hpp"
+#include "radio_follow/ros/common/params.hpp"
+#include "radio_follow/ros/common/wiring_debug.hpp"
+
+namespace radio_follow {
+namespace {
+
+// roscpp's own SIGINT handler shuts the node down before a last message can be sent, so
+// controllers install this one. A signal handler can only reach static storage: this
+// flag is the single piece of it, written by the handler and read by the timer.
+std::atomic<bool> stop_requested{false};
+
+void requestStop(int /*signal*/) {
+  stop_requested = true;
+}
+
+}  // namespace
+
+void ControllerCommonParams::load(const ParamReader& pnh) {
+  pnh.param("cmd_vel_topic", cmd_vel_topic, cmd_vel_topic);
+  pnh.param("rate", rate, rate);
+  pnh.param("start_enabled", start_enabled, start_enabled);
+  pnh.param("layout_file", layout_file, layout_file);
+  std::optional<Layout> layout;
+  if (!layout_file.empty()) {
+    layout = loadLayoutFile(layout_file);
+    range_topics = conventionalTopics(*layout).uwb;  // ~range_topics below still wins
+  }
+  pnh.param("range_topics", range_topics, range_topics);
+  control::CommandPipelineParams::load(pnh, layout ? &*layout : nullptr);
+}
+
+void ControllerCommonParams::validate() const {
+  requireGraphName("~cmd_vel_topic", cmd_vel_topic);
+  require(rate >= 1.0 && rate <= 200.0, "~rate", rate, "a rate in [1, 200] Hz");
+  for (const auto& topic : range_topics) {
+    requireGraphName("~range_topics", topic);
+  }
+  control::CommandPipelineParams::validate();
+}
+
+ControllerBase::ControllerBase(ros::NodeHandle& nh, ros::NodeHandle& private_nh,
+                               bool watch_ranges_default)
+    : nh_(nh),
+      private_nh_(private_nh),
+      params_in_(private_nh),
+      common_([&] {
+        ControllerCommonParams p;
+        if (!watch_ranges_default) {
+          p.range_topics.clear();
+        }
+        allowTuning<ControllerTuningConfig>(params_in_);
+        params_in_.own("law");  // the follow law's live-tuning server (doc/live_tuning.md)
+        p.load(params_in_);
+        p.safety.watch_ranges = !p.range_topics.empty();
+        p.validate();
+        return p;
+      }()),
+      pipeline_(common_) {}
+
+ControllerBase::~ControllerBase() {
+  // The safety thread calls into this object: end it before any member goes.
+  range_subs_.clear();
+  if (safety_spinner_) {
+    safety_spinner_->stop();
+  }
+}
+
+void ControllerBase::requireKnownParams() {
+  params_in_.requireAllKnown();
+  params_checked_ = true;
+}
+
+void ControllerBase::start() {
+  if (!params_checked_) {
+    throw std::logic_error("ControllerBase::start() before requireKnownParams()");
+  }
+  cmd_pub_ = nh_.advertise<geometry_msgs::Twist>(common_.cmd_vel_topic, 1);
+  status_pub_ = private_nh_.advertise<FollowerStatus>("status", 10, true);
+  debugAdvertised(status_pub_);
+  // The safety path has its own queue and thread: a range below safe_distance stops the
+  // robot however long an estimate callback or a TF lookup takes on the main queue.
+  for (const auto& topic : common_.range_topics) {
+    first_range_[topic];  // before the safety thread reads the map
+    ros::SubscribeOptions options = ros::SubscribeOptions::create<UwbRanges>(
+        topic, kRangeQueueSize,
+        [this, topic](const UwbRanges::ConstPtr& msg) { onRanges(topic, msg); }, ros::VoidPtr(),
+        &safety_queue_);
+    options.transport_hints = ros::TransportHints().tcpNoDelay();
+    range_subs_.push_back(nh_.subscribe(options));
+    debugSubscribed(range_subs_.back());
+  }
+  if (!range_subs_.empty()) {
+    safety_spinner_ = std::make_unique<ros::AsyncSpinner>(1, &safety_queue_);
+    safety_spinner_->start();
+  }
+  if (common_.use_scan) {
+    scan_sub_ = nh_.subscribe("scan", 1, &ControllerBase::onScan, this);
+    debugSubscribed(scan_sub_);
+  }
+  enable_sub_ = private_nh_.subscribe("enable", 10, &ControllerBase::onEnableTopic, this);
+  debugSubscribed(enable_sub_);
+  enable_srv_ = private_nh_.advertiseService("set_enabled", &ControllerBase::onEnableService, this);
+
+  // The node and what it drives: two controllers on one robot differ in both.
+  diagnostics_.setHardwareID(ros::this_node::getName() + " -> " + cmd_pub_.getTopic());
+  diagnostics_.add("controller", this, &ControllerBase::diagnose);
+  // cmd_vel goes out every tick; a stop from the range callback comes on top of that.
+  OutputDiagnostic::Bounds bounds;
+  bounds.min_hz = common_.rate;
+  bounds.max_hz = 2.0 * common_.rate;
+  cmd_diagnostic_.emplace(diagnostics_, "controller output", cmd_pub_, bounds, false);
+
+  std::signal(SIGINT, requestStop);
+  std::signal(SIGTERM, requestStop);
+
+  reconfigure_ =
+      makeControllerReconfigure(private_nh_, common_, [this](const ControllerCommonParams& params) {
+        onCommonChange(params);  // the law checks the new limits first; throws to refuse
+        const std::lock_guard<std::mutex> lock(safety_mutex_);
+        pipeline_.setParams(params);  // validated by the caller: no partial update
+        common_ = params;
+      });
+
+  setEnabled(common_.start_enabled);
+  timer_ = nh_.createTimer(ros::Duration(1.0 / common_.rate), &ControllerBase::onTick, this);
+  // The stop request is watched on wall time: on simulated time the clock may already
+  // have stopped (its publisher shut down first) and a sim-time timer would never fire.
+  stop_check_timer_ =
+      nh_.createWallTimer(ros::WallDuration(0.05), &ControllerBase::onStopCheck, this);
+}
+
+bool ControllerBase::noteEstimate(const ros::Time& stamp, control::EstimateQuality quality) {
+  first_estimate_("the target input (estimate or bearing)");
+  const ros::Time now = ros::Time::now();
+  const std::lock_guard<std::mutex> lock(safety_mutex_);
+  if (pipeline_.onEstimate((stamp.isZero() ? now : stamp).toSec(), now.toSec(), quality)) {
+    return true;
+  }
+  ROS_WARN_THROTTLE(2.0, "%s: estimate stamped %.3f s ahead of this node's clock refused; stopping",
+                    ros::this_node::getName().c_str(), (stamp - now).toSec());
+  return false;
+}
+
+double ControllerBase::moduleGap(const ros::Time& now) const {
+  const std::lock_guard<std::mutex> lock(safety_mutex_);
+  return pipeline_.moduleGap(now.toSec());
+}
+
+void ControllerBase::onRanges(const std::string& topic, const UwbRanges::ConstPtr& msg) {
+  // Safety thread. Time is read before the lock: the receive time of this message.
+  const ros::Time now = ros::Time::now();
+  const double stamp = (msg->header.stamp.isZero() ? now : msg->header.stamp).toSec();
+  first_range_.at(topic)(topic);
+  const std::lock_guard<std::mutex> lock(safety_mutex_);
+  const std::uint64_t future_before = pipeline_.monitor().time().futureRefused();
+  bool violation = false;
+  for (const auto& r : msg->ranges) {
+    violation |= pipeline_.onRange(stamp, now.toSec(), topic + "/" + msg->tag_id, msg->tag_id,
+                                   r.anchor_id, r.range);
+  }
+  const bool future = pipeline_.monitor().time().futureRefused() != future_before;
+  if (future) {
+    ROS_WARN_THROTTLE(2.0, "%s: range on %s stamped %.3f s ahead of this node's clock refused",
+                      ros::this_node::getName().c_str(), topic.c_str(), stamp - now.toSec());
+  }
+  // Do not wait for the next tick: a person stepping in front of the robot must stop
+  // it within one range update. The law's own reset (onStopped) follows on the main
+  // thread at the next tick, which sees the same verdict.
+  if (violation && pipeline_.enabled()) {
+    publishStopLocked(future ? control::StopReason::kFutureStamp : control::StopReason::kTooClose);
+  }
+}
+
+void ControllerBase::onScan(const sensor_msgs::LaserScan::ConstPtr& msg) {
+  const control::SectorRanges sectors = control::scanSectors(
+      msg->ranges, msg->angle_min, msg->angle_increment, msg->range_min, msg->range_max);
+  const ros::Time stamp = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;
+  const std::lock_guard<std::mutex> lock(safety_mutex_);
+  pipeline_.onScan(sectors, stamp.toSec());
+}
+
+void ControllerBase::onEnableTopic(const std_msgs::Bool::ConstPtr& msg) {
+  setEnabled(msg->data);
+}
+
+bool ControllerBase::onEnableService(std_srvs::SetBool::Request& req,
+                                     std_srvs::SetBool::Response& res) {
+  setEnabled(req.data);
+  res.success = true;
+  res.message = req.data ? "enabled" : "disabled";
+  return true;
+}
+
+void ControllerBase::setEnabled(bool enabled) {
+  {
+    const std::lock_guard<std::mutex> lock(safety_mutex_);
+    pipeline_.setEnabled(enabled);
+  }
+  if (!enabled) {
+    stopNow(control::StopReason::kDisabled);
+  } else {
+    ROS_INFO("%s: enabled", ros::this_node::getName().c_str());
+  }
+}
+
+void ControllerBase::stopNow(control::StopReason reason) {
+  onStopped();
+  const std::lock_guard<std::mutex> lock(safety_mutex_);
+  publishStopLocked(reason);
+}
+
+void ControllerBase::publishStopLocked(control::StopReason reason) {
+  publishLocked(pipeline_.stop(reason));
+}
+
+void ControllerBase::publishLocked(const control::PipelineResult& result) {
+  publishCommand(result.command);
+  publishStatus(result.state, result.text);
+}
+
+void ControllerBase::onStopCheck(const ros::WallTimerEvent& /*event*/) {
+  if (!stop_requested || shutting_down_) {
+    return;
+  }
+  shutting_down_ = true;
+  timer_.stop();
+  stop_check_timer_.stop();
+  setEnabled(false);
+  // Give the zero command time to leave the process before the connections close.
+  ros::WallDuration(0.2).sleep();
+  ros::shutdown();
+}
+
+void ControllerBase::onTick(const ros::TimerEvent& event) {
+  if (shutting_down_) {
+    return;
+  }
+  const ros::Time now = ros::Time::now();
+  double dt = (event.current_real - event.last_real).toSec();
+  if (event.last_real.isZero() || !(dt > 0.0) || dt > 1.0) {
+    dt = 1.0 / common_.rate;
+  }
+
+  control::SafetyDecision decision;
+  {
+    const std::lock_guard<std::mutex> lock(safety_mutex_);
+    decision = pipeline_.check(now.toSec());
+  }
+  if (!decision.may_move) {
+    stopNow(decision.reason);
+    ++stopped_ticks_;
+    diagnostics_.update();
+    return;
+  }
+
+  // The law runs without the lock: a range may stop the robot meanwhile, and the
+  // pipeline takes the verdict again at the time of sending.
+  const Output out = compute(now, dt);
+  bool scan_missing = false;
+  {
+    const std::lock_guard<std::mutex> lock(safety_mutex_);
+    const control::PipelineResult result = pipeline_.finish(out, ros::Time::now().toSec(), dt);
+    scan_missing = result.scan_missing;
+    publishLocked(result);
+  }
+  if (scan_missing) {
+    ROS_WARN_THROTTLE(5.0, "%s: no laser scan within %.2f s, forward motion blocked",
+                      ros::this_node::getName().c_str(), common_.scan_timeout);
+  }
+  diagnostics_.update();
+}
+
+void ControllerBase::publishCommand(const control::VelocityCommand& cmd) {
+  geometry_msgs::Twist twist;
+  twist.linear.x = cmd.linear;
+  twist.angular.z = cmd.angular;
+  cmd_pub_.publish(twist);
+  cmd_diagnostic_->tick();
+}
+
+void ControllerBase::publishStatus(control::FollowerState state, const std::string& text) {
+  state_ = state;
+  status_text_ = text;
+  if (!status_tracker_.update(state, text)) {
+    return;
+  }
+  FollowerStatus msg;
+  msg.header.stamp = ros::Time::now();
+  msg.state = static_cast<std::uint8_t>(state);
+  msg.text = text;
+  status_pub_.publish(msg);
+  ROS_INFO("%s: %s", ros::this_node::getName().c_str(), text.c_str());
+}
+
+void ControllerBase::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
+  using diagnostic_msgs::DiagnosticStatus;
+  const std::lock_guard<std::mutex> lock(safety_mutex_);
+  const bool moving = state_ == control::FollowerState::kFollowing;
+  status.summary(moving || state_ == control::FollowerState::kDisabled ||
+                         state_ == control::FollowerState::kArrived
+                     ? DiagnosticStatus::OK
+                     : DiagnosticStatus::WARN,
+                 status_text_);
+  status.add("state", control::toString(state_));
+  status.add("cmd_vel topic", cmd_pub_.getTopic());
+  status.add("stopped ticks", stopped_ticks_);
+  status.add("stamps from the future refused", pipeline_.monitor().time().futureRefused());
+  status.add("clock jumps back", pipeline_.monitor().time().clockJumps());
+}
+
+}  // namespace radio_follow

@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/ros/locator/locator_inputs.hpp"
+
+#include "radio_follow/common/param_keys.hpp"
+
+namespace radio_follow {
+
+std::size_t LocatorInputs::add(const UwbRanges& msg) {
+  // The module is named by its ID; drivers started without one still set their frame.
+  // IDs compare normalised (upper case), as the layout parser stores them: a layout
+  // saying "da12" and a driver printing "DA12" mean the same anchor. (The module lookup,
+  // Layout::findTwrModule, normalises the module ID itself.)
+  const std::string& module = msg.tag_id.empty() ? msg.header.frame_id : msg.tag_id;
+  std::size_t refused = 0;
+  for (const auto& range : msg.ranges) {
+    const std::string anchor = normalizeId(range.anchor_id);
+    if (anchor != locator_.layout().target_anchor_id) {
+      ++other_anchors_[anchor];  // another anchor of the UWB network, or a wrong layout
+      continue;
+    }
+    ++target_ranges_;
+    refused += !locator_.addRange(module, range.range, msg.header.stamp.toSec());
+  }
+  return refused;
+}
+
+std::size_t LocatorInputs::add(const AoaBearing& msg) {
+  const std::string& tag = locator_.layout().target_tag_id;
+  if (!tag.empty() && normalizeId(msg.tag_id) != tag) {
+    return 0;
+  }
+  return !locator_.addBearing(msg.header.frame_id, msg.azimuth, msg.elevation, msg.rssi,
+                              msg.header.stamp.toSec());
+}
+
+std::size_t LocatorInputs::add(const TdoaMeasurements& msg) {
+  std::size_t refused = 0;
+  for (const auto& d : msg.differences) {
+    refused += !locator_.addTdoa(d.anchor_a, d.anchor_b, d.distance_difference, d.variance,
+                                 msg.header.stamp.toSec());
+  }
+  return refused;
+}
+
+}  // namespace radio_follow

@@ -1,0 +1,353 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/ros/locator/locator_node.hpp"
+
+#include <geometry_msgs/PoseWithCovarianceStamped.h>
+#include <geometry_msgs/TransformStamped.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "radio_follow/ros/common/wiring_debug.hpp"
+
+namespace radio_follow {
+namespace {
+
+// At most one warning per silent input in this period, s.
+constexpr double kSilentWarnPeriod = 10.0;
+
+}  // namespace
+
+TargetEstimate toMessage(const estimation::LocatorEstimate& estimate, const std::string& frame,
+                         const ros::Time& stamp) {
+  TargetEstimate msg;
+  msg.header.frame_id = frame;
+  msg.header.stamp = stamp;
+  msg.position.x = estimate.position.x();
+  msg.position.y = estimate.position.y();
+  msg.position.z = estimate.position.z();
+  msg.velocity.x = estimate.velocity.x();
+  msg.velocity.y = estimate.velocity.y();
+  msg.velocity.z = estimate.velocity.z();
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) {
+      msg.position_covariance[static_cast<std::size_t>(3 * r + c)] = estimate.covariance(r, c);
+    }
+  }
+  msg.range = estimate.position.head<2>().norm();
+  msg.bearing = std::atan2(estimate.position.y(), estimate.position.x());
+  msg.sources = estimate.sources;
+  msg.status = static_cast<std::uint8_t>(estimate.status);
+  msg.solver_cost = estimate.solver_cost;
+  return msg;
+}
+
+LocatorNode::LocatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
+    : diagnostics_(nh, private_nh) {
+  {
+    const ParamReader params(private_nh);
+    allowTuning<LocatorTuningConfig>(params);  // the live-tuning server's own copies
+    params_.load(params);
+    params.requireAllKnown();
+    params_.validate();
+  }
+  layout_ = loadLayoutFile(params_.layout_file);  // validated: target anchor set with TWR
+  locator_ = std::make_unique<estimation::Locator>(layout_, params_.locator);
+  inputs_ = std::make_unique<LocatorInputs>(*locator_);
+  if (params_.uwb_topics.empty() && params_.aoa_topics.empty() && params_.tdoa_topics.empty()) {
+    const SensorTopics topics = conventionalTopics(layout_);
+    params_.uwb_topics = topics.uwb;
+    params_.aoa_topics = topics.aoa;
+    params_.tdoa_topics = topics.tdoa;
+  }
+
+  target_pub_ = nh.advertise<TargetEstimate>("target", 10);
+  pose_pub_ = nh.advertise<geometry_msgs::PoseWithCovarianceStamped>("target_pose", 10);
+  markers_pub_ = nh.advertise<visualization_msgs::MarkerArray>("markers", 1);
+  debugAdvertised(markers_pub_);
+  if (params_.path_length > 0) {
+    path_pub_ = nh.advertise<nav_msgs::Path>("target_path", 1);
+    debugAdvertised(path_pub_);
+    path_.header.frame_id = layout_.fixed_frame;
+  }
+  for (const auto& topic : params_.uwb_topics) {
+    subscribe<UwbRanges>(nh, topic, &LocatorNode::onRanges);
+  }
+  for (const auto& topic : params_.aoa_topics) {
+    subscribe<AoaBearing>(nh, topic, &LocatorNode::onBearing);
+  }
+  for (const auto& topic : params_.tdoa_topics) {
+    subscribe<TdoaMeasurements>(nh, topic, &LocatorNode::onTdoa);
+  }
+  std::vector<std::string> resolved;
+  for (const ros::Subscriber& s : subscribers_) {
+    resolved.push_back(s.getTopic());
+  }
+  inputs_watch_.emplace(resolved, params_.input_timeout, kSilentWarnPeriod, 0.0);
+  reconfigure_ = makeLocatorReconfigure(
+      private_nh, params_.locator, [this](const estimation::LocatorConfig& config) {
+        if (!locator_->setConfig(config)) {
+          ROS_INFO("locator: motion model changed, the filter restarts from the next solve");
+        }
+        params_.locator = config;
+      });
+  // The layout names the robot; its fixed frame is where the estimate lives.
+  diagnostics_.setHardwareID("layout " +
+                             std::filesystem::path(params_.layout_file).stem().string() +
+                             ", frame " + layout_.fixed_frame);
+  diagnostics_.add("locator", this, &LocatorNode::diagnose);
+  // One estimate per solve; it carries its newest measurement's stamp, at most max_age
+  // old when it is used, LOST ones the current time. target_pose only has a position.
+  OutputDiagnostic::Bounds bounds;
+  bounds.min_hz = params_.rate;
+  bounds.max_hz = params_.rate;
+  bounds.max_age = params_.locator.max_age + 2.0 / params_.rate;
+  target_diagnostic_.emplace(diagnostics_, "locator output", target_pub_, bounds, true);
+  bounds.min_hz = 0.0;
+  pose_diagnostic_.emplace(diagnostics_, "locator output", pose_pub_, bounds, true);
+  timer_ = nh.createTimer(ros::Duration(1.0 / params_.rate), &LocatorNode::onTimer, this);
+  ROS_INFO("locator: %s mode, %zu TWR modules, %zu AoA boards, %zu TDoA anchors, %.1f Hz",
+           params_.locator.planar ? "2D" : "3D", layout_.twr_modules.size(),
+           layout_.aoa_boards.size(), layout_.tdoa_anchors.size(), params_.rate);
+}
+
+template <typename Message>
+void LocatorNode::subscribe(ros::NodeHandle& nh, const std::string& topic,
+                            void (LocatorNode::*callback)(const typename Message::ConstPtr&)) {
+  const std::size_t index = subscribers_.size();
+  const boost::function<void(const typename Message::ConstPtr&)> handler =
+      [this, index, callback](const typename Message::ConstPtr& msg) {
+        noteInput(index);
+        (this->*callback)(msg);
+      };
+  subscribers_.push_back(nh.subscribe<Message>(topic, 50, handler));
+  debugSubscribed(subscribers_.back());
+}
+
+void LocatorNode::noteInput(std::size_t index) {
+  if (inputs_watch_->onMessage(index, ros::Time::now().toSec())) {
+    ROS_DEBUG_NAMED("wiring", "locator: first message on %s",
+                    inputs_watch_->inputs()[index].name.c_str());
+  }
+}
+
+void LocatorNode::watchInputs(const ros::Time& now) {
+  if (last_tick_.isZero()) {
+    inputs_watch_->startAt(now.toSec());  // on simulated time the clock may only start now
+  } else if (now < last_tick_) {
+    inputs_watch_->restart(now.toSec());  // the clock jumped back: every input is new
+  }
+  last_tick_ = now;
+  for (const std::size_t i : inputs_watch_->dueWarnings(now.toSec())) {
+    const InputWatch::Input& input = inputs_watch_->inputs()[i];
+    if (input.messages == 0) {
+      ROS_WARN(
+          "locator: no message on %s since the start (%.1f s); is its driver running and "
+          "publishing there? (rostopic info %s)",
+          input.name.c_str(), inputs_watch_->silenceSeconds(i, now.toSec()), input.name.c_str());
+    } else {
+      ROS_WARN("locator: no message on %s for %.1f s (%zu before)", input.name.c_str(),
+               inputs_watch_->silenceSeconds(i, now.toSec()), input.messages);
+    }
+  }
+  const estimation::LocatorStats& s = locator_->stats();
+  if (s.stale_dropped != last_stats_.stale_dropped) {
+    ROS_DEBUG_THROTTLE_NAMED(2.0, "wiring",
+                             "locator: %zu measurement(s) dropped, older than max_age %.2f s "
+                             "(clocks of driver and locator apart, or a slow link)",
+                             s.stale_dropped - last_stats_.stale_dropped, params_.locator.max_age);
+  }
+  if (s.future_dropped != last_stats_.future_dropped) {
+    ROS_DEBUG_THROTTLE_NAMED(2.0, "wiring",
+                             "locator: %zu measurement(s) dropped, stamped ahead of this clock",
+                             s.future_dropped - last_stats_.future_dropped);
+  }
+  if (s.invalid_measurements != last_stats_.invalid_measurements) {
+    ROS_DEBUG_THROTTLE_NAMED(2.0, "wiring", "locator: %zu invalid measurement(s) dropped",
+                             s.invalid_measurements - last_stats_.invalid_measurements);
+  }
+  if (s.bearings_rejected_fov != last_stats_.bearings_rejected_fov) {
+    ROS_DEBUG_THROTTLE_NAMED(2.0, "wiring",
+                             "locator: %zu bearing(s) not used: board's field of view does not "
+                             "contain the estimate",
+                             s.bearings_rejected_fov - last_stats_.bearings_rejected_fov);
+  }
+  last_stats_ = s;
+}
+
+void LocatorNode::onRanges(const UwbRanges::ConstPtr& msg) {
+  if (const std::size_t refused = inputs_->add(*msg)) {
+    ignored_messages_ += refused;
+    ROS_WARN_THROTTLE(5.0, "locator: ignoring range from unknown module '%s' or invalid value",
+                      (msg->tag_id.empty() ? msg->header.frame_id : msg->tag_id).c_str());
+  }
+  if (inputs_->targetRanges() == 0 && !inputs_->otherAnchors().empty()) {
+    // Ranges arrive, none to the target: a wrong target.uwb_anchor_id leaves the
+    // estimate LOST for good, so say which anchors are heard.
+    std::string heard;
+    for (const auto& [anchor, count] : inputs_->otherAnchors()) {
+      heard += (heard.empty() ? "" : ", ") + anchor;
+    }
+    ROS_WARN_THROTTLE(5.0,
+                      "locator: ranges to anchor(s) %s but none to the layout's target "
+                      "'%s' (target.uwb_anchor_id in %s)",
+                      heard.c_str(), layout_.target_anchor_id.c_str(), params_.layout_file.c_str());
+  }
+}
+
+void LocatorNode::onBearing(const AoaBearing::ConstPtr& msg) {
+  if (inputs_->add(*msg) != 0) {
+    ++ignored_messages_;
+    ROS_WARN_THROTTLE(5.0, "locator: ignoring bearing from unknown board frame '%s'",
+                      msg->header.frame_id.c_str());
+  }
+}
+
+void LocatorNode::onTdoa(const TdoaMeasurements::ConstPtr& msg) {
+  if (const std::size_t refused = inputs_->add(*msg)) {
+    ignored_messages_ += refused;
+    ROS_WARN_THROTTLE(5.0, "locator: ignoring %zu TDoA difference(s) (unknown anchor?)", refused);
+  }
+}
+
+void LocatorNode::onTimer(const ros::TimerEvent& /*event*/) {
+  const ros::Time now = ros::Time::now();
+  const std::size_t solves_before = locator_->stats().solves;
+  const estimation::LocatorEstimate estimate = locator_->update(now.toSec());
+  if (locator_->stats().solves != solves_before) {
+    const double s = locator_->stats().last_solve_seconds;
+    solve_seconds_sum_ += s;
+    solve_seconds_max_ = std::max(solve_seconds_max_, s);
+    ++solves_seen_;
+  }
+  if (estimate.status != last_status_) {
+    ROS_INFO("locator: target %s -> %s", toString(last_status_), toString(estimate.status));
+    last_status_ = estimate.status;
+  }
+  publish(estimate, now);
+  watchInputs(now);
+  diagnostics_.update();
+}
+
+void LocatorNode::publish(const estimation::LocatorEstimate& estimate, const ros::Time& now) {
+  // The estimate is stamped with its newest measurement; LOST with the current time.
+  const ros::Time stamp = estimate.status == estimation::TargetStatus::kLost
+                              ? now
+                              : ros::Time(std::max(0.0, estimate.stamp));
+  // Always published, LOST included: a controller must hear that the target is gone.
+  target_pub_.publish(toMessage(estimate, layout_.fixed_frame, stamp));
+  target_diagnostic_->tick(stamp);
+
+  if (hasPosition(estimate.status)) {
+    geometry_msgs::PoseWithCovarianceStamped pose;
+    pose.header.frame_id = layout_.fixed_frame;
+    pose.header.stamp = stamp;
+    pose.pose.pose.position.x = estimate.position.x();
+    pose.pose.pose.position.y = estimate.position.y();
+    pose.pose.pose.position.z = estimate.position.z();
+    pose.pose.pose.orientation.w = 1.0;
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) {
+        pose.pose.covariance[static_cast<std::size_t>(6 * r + c)] = estimate.covariance(r, c);
+      }
+    }
+    // Orientation is not estimated: infinite-like variance says so to consumers.
+    for (int i = 3; i < 6; ++i) {
+      pose.pose.covariance[static_cast<std::size_t>(6 * i + i)] = 1e6;
+    }
+    pose_pub_.publish(pose);
+    pose_diagnostic_->tick(stamp);
+    extendPath(estimate, stamp);
+    // The estimate is stamped with its newest measurement; solving faster than the sensors
+    // report repeats a stamp, which tf2 rejects (TF_REPEATED_DATA): send each stamp once.
+    if (params_.publish_tf && pose.header.stamp > last_tf_stamp_) {
+      last_tf_stamp_ = pose.header.stamp;
+      geometry_msgs::TransformStamped t;
+      t.header = pose.header;
+      t.child_frame_id = params_.target_frame;
+      t.transform.translation.x = estimate.position.x();
+      t.transform.translation.y = estimate.position.y();
+      t.transform.translation.z = estimate.position.z();
+      t.transform.rotation.w = 1.0;
+      tf_.sendTransform(t);
+    }
+  }
+  if (markers_pub_.getNumSubscribers() > 0) {  // drawing is the node's largest cost
+    markers_pub_.publish(locatorMarkers(layout_, params_.locator, estimate, now));
+  }
+}
+
+void LocatorNode::extendPath(const estimation::LocatorEstimate& estimate, const ros::Time& stamp) {
+  if (params_.path_length == 0 || (!path_.poses.empty() && stamp == path_.header.stamp)) {
+    return;  // no path, or the same estimate again (solving faster than the sensors)
+  }
+  geometry_msgs::PoseStamped pose;
+  pose.header.frame_id = layout_.fixed_frame;
+  pose.header.stamp = stamp;
+  pose.pose.position.x = estimate.position.x();
+  pose.pose.position.y = estimate.position.y();
+  pose.pose.position.z = estimate.position.z();
+  pose.pose.orientation.w = 1.0;
+  if (!path_.poses.empty() && stamp < path_.header.stamp) {
+    path_.poses.clear();  // the clock jumped back
+  }
+  path_.poses.push_back(pose);
+  if (path_.poses.size() > static_cast<std::size_t>(params_.path_length)) {
+    path_.poses.erase(path_.poses.begin());
+  }
+  path_.header.stamp = stamp;
+  if (path_pub_.getNumSubscribers() > 0) {
+    path_pub_.publish(path_);
+  }
+}
+
+void LocatorNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
+  const estimation::LocatorStats& s = locator_->stats();
+  const estimation::KalmanFilter& f = locator_->filter();
+  if (last_status_ == estimation::TargetStatus::kOk) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "tracking");
+  } else if (last_status_ == estimation::TargetStatus::kLost) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "target lost");
+  } else {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, toString(last_status_));
+  }
+  status.add("status", toString(last_status_));
+  status.add("updates", s.updates);
+  status.add("solves", s.solves);
+  status.add("solver failures", s.solver_failures);
+  status.add("stale measurements dropped", s.stale_dropped);
+  status.add("future-stamped measurements dropped", s.future_dropped);
+  status.add("non-finite epochs", s.non_finite);
+  status.add("ambiguous epochs (mirror test)", s.ambiguous);
+  status.add("invalid measurements", s.invalid_measurements);
+  status.add("bearings not selected", s.bearings_rejected_fov);
+  status.add("filter gated", f.gatedCount());
+  status.add("filter invalid", f.invalidCount());
+  status.add("filter resets", f.resetCount());
+  status.add("lost epochs", s.lost);
+  status.add("ignored messages", ignored_messages_);
+  std::size_t other = 0;
+  for (const auto& entry : inputs_->otherAnchors()) {
+    other += entry.second;
+  }
+  status.add("ranges to the target anchor", inputs_->targetRanges());
+  status.add("ranges to other anchors", other);
+  status.add("solve time mean (us)",
+             solves_seen_ > 0 ? 1e6 * solve_seconds_sum_ / static_cast<double>(solves_seen_) : 0.0);
+  status.add("solve time max (us)", 1e6 * solve_seconds_max_);
+  const double now = ros::Time::now().toSec();
+  std::string silent;
+  for (const std::size_t i : inputs_watch_->silentInputs(now)) {
+    silent += (silent.empty() ? "" : ", ") + inputs_watch_->inputs()[i].name;
+  }
+  status.add("silent inputs", silent.empty() ? "none" : silent);
+  for (const InputWatch::Input& input : inputs_watch_->inputs()) {
+    status.add("messages on " + input.name, input.messages);
+  }
+  if (!silent.empty()) {
+    status.mergeSummaryf(diagnostic_msgs::DiagnosticStatus::WARN, "silent inputs: %s",
+                         silent.c_str());
+  }
+}
+
+}  // namespace radio_follow

@@ -1,0 +1,152 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/ros/replay/locator_replay.hpp"
+
+#include <rosbag/bag.h>
+#include <rosbag/view.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "radio_follow/ros/locator/locator_inputs.hpp"
+
+namespace radio_follow {
+
+BagData loadBag(const std::string& path, const std::string& truth_topic) {
+  BagData data;
+  rosbag::Bag bag;
+  try {
+    bag.open(path, rosbag::bagmode::Read);
+  } catch (const rosbag::BagException& e) {
+    throw std::runtime_error("cannot read bag '" + path + "': " + e.what());
+  }
+  // The replay clock is the messages' own stamps (the drivers stamp on receipt), the
+  // time base the locator node compares them with; the recorder's clock may differ.
+  // Only the connections of these types are read (TF, odometry, ... are skipped).
+  const rosbag::TypeQuery types({"radio_follow/UwbRanges", "radio_follow/AoaBearing",
+                                 "radio_follow/TdoaMeasurements", "geometry_msgs/PointStamped"});
+  for (const rosbag::MessageInstance& m : rosbag::View(bag, types)) {
+    if (auto r = m.instantiate<UwbRanges>()) {
+      data.entries.push_back(
+          {r->header.stamp.toSec(), BagData::Entry::Kind::kRanges, data.ranges.size()});
+      data.ranges.push_back(*r);
+    } else if (auto b = m.instantiate<AoaBearing>()) {
+      data.entries.push_back(
+          {b->header.stamp.toSec(), BagData::Entry::Kind::kBearing, data.bearings.size()});
+      data.bearings.push_back(*b);
+    } else if (auto d = m.instantiate<TdoaMeasurements>()) {
+      data.entries.push_back(
+          {d->header.stamp.toSec(), BagData::Entry::Kind::kTdoa, data.tdoa.size()});
+      data.tdoa.push_back(*d);
+    } else if (m.getTopic() == truth_topic || m.getTopic() == "/" + truth_topic) {
+      if (auto p = m.instantiate<geometry_msgs::PointStamped>()) {
+        data.truth.push_back(*p);
+      }
+    }
+  }
+  if (data.entries.empty()) {
+    throw std::runtime_error("bag '" + path +
+                             "' holds no UwbRanges, AoaBearing or TdoaMeasurements message");
+  }
+  std::stable_sort(data.entries.begin(), data.entries.end(),
+                   [](const auto& a, const auto& b) { return a.t < b.t; });
+  std::stable_sort(data.truth.begin(), data.truth.end(),
+                   [](const auto& a, const auto& b) { return a.header.stamp < b.header.stamp; });
+  return data;
+}
+
+namespace {
+
+/// The truth at time t, linearly interpolated; false outside the recorded span.
+bool truthAt(const std::vector<geometry_msgs::PointStamped>& truth, double t,
+             Eigen::Vector2d& out) {
+  const auto hi = std::lower_bound(truth.begin(), truth.end(), t,
+                                   [](const geometry_msgs::PointStamped& p, double time) {
+                                     return p.header.stamp.toSec() < time;
+                                   });
+  if (hi == truth.end() || hi == truth.begin()) {
+    if (hi != truth.end() && std::abs(hi->header.stamp.toSec() - t) < 1e-9) {
+      out = {hi->point.x, hi->point.y};
+      return true;
+    }
+    return false;
+  }
+  const auto lo = hi - 1;
+  const double t0 = lo->header.stamp.toSec();
+  const double t1 = hi->header.stamp.toSec();
+  const double w = t1 > t0 ? (t - t0) / (t1 - t0) : 1.0;
+  out = {lo->point.x + w * (hi->point.x - lo->point.x),
+         lo->point.y + w * (hi->point.y - lo->point.y)};
+  return true;
+}
+
+}  // namespace
+
+ReplayResult replay(const BagData& bag, const Layout& layout,
+                    const estimation::LocatorConfig& config, double rate) {
+  ReplayResult result;
+  estimation::Locator locator(layout, config);
+  LocatorInputs inputs(locator);
+  const double period = 1.0 / rate;
+  std::size_t next = 0;
+  std::size_t with_position = 0;
+  result.rows.reserve(static_cast<std::size_t>(bag.duration() * rate) + 2);
+  for (double now = bag.entries.front().t + period;
+       next < bag.entries.size() || result.rows.empty(); now += period) {
+    for (; next < bag.entries.size() && bag.entries[next].t <= now; ++next) {
+      const BagData::Entry& e = bag.entries[next];
+      switch (e.kind) {
+        case BagData::Entry::Kind::kRanges:
+          result.refused += inputs.add(bag.ranges[e.index]);
+          break;
+        case BagData::Entry::Kind::kBearing:
+          result.refused += inputs.add(bag.bearings[e.index]);
+          break;
+        case BagData::Entry::Kind::kTdoa:
+          result.refused += inputs.add(bag.tdoa[e.index]);
+          break;
+      }
+    }
+    ReplayRow row;
+    row.t = now;
+    row.estimate = locator.update(now);
+    const bool has_position = hasPosition(row.estimate.status);
+    with_position += has_position;
+    if (has_position && truthAt(bag.truth, row.estimate.stamp, row.truth)) {
+      row.has_truth = true;
+      row.error = (row.estimate.position.head<2>() - row.truth).norm();
+      result.statistics.add(row.truth.x(), row.truth.y(), row.error);
+    }
+    result.rows.push_back(std::move(row));
+  }
+  result.availability = double(with_position) / result.rows.size();
+  return result;
+}
+
+std::string toCsv(const ReplayResult& result) {
+  std::ostringstream out;
+  out.precision(9);
+  out << "t,status,x,y,z,sigma_x,sigma_y,truth_x,truth_y,error\n";
+  for (const ReplayRow& r : result.rows) {
+    const estimation::LocatorEstimate& e = r.estimate;
+    const bool position = hasPosition(e.status);
+    out << r.t << "," << toString(e.status) << ",";
+    if (position) {
+      out << e.position.x() << "," << e.position.y() << "," << e.position.z() << ","
+          << std::sqrt(std::max(0.0, e.covariance(0, 0))) << ","
+          << std::sqrt(std::max(0.0, e.covariance(1, 1))) << ",";
+    } else {
+      out << ",,,,,";
+    }
+    if (r.has_truth) {
+      out << r.truth.x() << "," << r.truth.y() << "," << r.error;
+    } else {
+      out << ",,";
+    }
+    out << "\n";
+  }
+  return out.str();
+}
+
+}  // namespace radio_follow

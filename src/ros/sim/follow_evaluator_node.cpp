@@ -1,0 +1,245 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/ros/sim/follow_evaluator_node.hpp"
+
+#include <signal.h>
+#include <std_msgs/String.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <system_error>
+
+#include "radio_follow/common/param_error.hpp"
+#include "radio_follow/estimation/target_status.hpp"
+#include "radio_follow/ros/common/params.hpp"
+#include "radio_follow/ros/common/target_estimate.hpp"
+
+namespace radio_follow {
+namespace {
+
+/// Estimates older than this (s) count as missing in the sample.
+constexpr double kEstimateMaxAge = 1.0;
+/// Seconds of ground truth kept to match estimates by stamp.
+constexpr double kTruthHistory = 2.0;
+
+/// Writes through a temporary file and a rename, so a reader never sees half a file.
+void writeFile(const std::string& path, const std::string& text) {
+  const std::string temporary = path + ".tmp";
+  {
+    std::ofstream out(temporary);
+    out << text;
+    if (!out) {
+      ROS_ERROR_THROTTLE(10.0, "follow_evaluator: could not write %s", temporary.c_str());
+      return;
+    }
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    ROS_ERROR_THROTTLE(10.0, "follow_evaluator: could not rename %s", temporary.c_str());
+  }
+}
+
+/// Ends the roslaunch that started this node, as Ctrl-C does. roslaunch has no API for a
+/// node to end a launch cleanly: a `required` node that exits makes it print "REQUIRED
+/// process has died" in red after every successful run. SIGINT to the parent is what
+/// Ctrl-C sends; only done when the parent really is roslaunch.
+void endParentLaunch() {
+  const pid_t parent = getppid();
+  std::ifstream cmdline("/proc/" + std::to_string(parent) + "/cmdline");
+  const std::string command((std::istreambuf_iterator<char>(cmdline)),
+                            std::istreambuf_iterator<char>());
+  if (command.find("roslaunch") == std::string::npos) {
+    ROS_WARN(
+        "follow_evaluator: end_launch is set but my parent (pid %d) is not roslaunch; "
+        "leaving it running",
+        static_cast<int>(parent));
+    return;
+  }
+  ROS_INFO("follow_evaluator: scenario over, ending the launch");
+  kill(parent, SIGINT);
+}
+
+}  // namespace
+
+void FollowEvaluatorNode::Params::validate() const {
+  require(std::isfinite(rate) && rate > 0.0 && rate <= 1000.0, "~rate", rate,
+          "a rate in (0, 1000] Hz");
+  require(std::isfinite(write_period) && write_period > 0.0, "~write_period", write_period,
+          "seconds > 0");
+  require(settings.follow_distance > 0.0, "~follow_distance", settings.follow_distance,
+          "metres > 0");
+  require(settings.safe_distance > 0.0, "~safe_distance", settings.safe_distance, "metres > 0");
+  require(settings.gap_tolerance > 0.0, "~gap_tolerance", settings.gap_tolerance, "metres > 0");
+  require(settings.robot_max_speed > 0.0, "~robot_max_speed", settings.robot_max_speed, "m/s > 0");
+  require(settings.settle_time >= 0.0, "~settle_time", settings.settle_time, "seconds >= 0");
+}
+
+FollowEvaluatorNode::FollowEvaluatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
+    : metrics_(evaluation::FollowSettings{}) {
+  const ParamReader reader(private_nh);
+  reader.param("report_dir", params_.report_dir, params_.report_dir);
+  reader.param("rate", params_.rate, params_.rate);
+  reader.param("write_period", params_.write_period, params_.write_period);
+  reader.param("end_launch", params_.end_launch, params_.end_launch);
+  evaluation::FollowSettings& s = params_.settings;
+  reader.param("follow_distance", s.follow_distance, s.follow_distance);
+  reader.param("safe_distance", s.safe_distance, s.safe_distance);
+  reader.param("gap_tolerance", s.gap_tolerance, s.gap_tolerance);
+  reader.param("robot_max_speed", s.robot_max_speed, s.robot_max_speed);
+  reader.param("settle_time", s.settle_time, s.settle_time);
+  reader.requireAllKnown();
+  params_.validate();
+  if (!params_.report_dir.empty()) {
+    std::error_code error;
+    std::filesystem::create_directories(params_.report_dir, error);
+    require(!error, "~report_dir", params_.report_dir,
+            "a directory that exists or can be created (" + error.message() + ")");
+  }
+  metrics_ = evaluation::FollowMetrics(params_.settings);
+
+  odom_sub_ = nh.subscribe<nav_msgs::Odometry>(
+      "odom", 10, [this](const nav_msgs::OdometryConstPtr& m) { odom_ = m; });
+  truth_sub_ = nh.subscribe<geometry_msgs::PointStamped>(
+      "ground_truth/target", 10, [this](const geometry_msgs::PointStampedConstPtr& m) {
+        if (truth_) {
+          const double dt = (m->header.stamp - truth_->header.stamp).toSec();
+          if (dt > 0.0) {
+            target_speed_ =
+                std::hypot(m->point.x - truth_->point.x, m->point.y - truth_->point.y) / dt;
+          }
+        }
+        truth_ = m;
+      });
+  relative_sub_ = nh.subscribe<geometry_msgs::PointStamped>(
+      "ground_truth/target_relative", 10, [this](const geometry_msgs::PointStampedConstPtr& m) {
+        relative_history_.push_back(m);
+        while (relative_history_.size() > 1 &&
+               (m->header.stamp - relative_history_.front()->header.stamp).toSec() >
+                   kTruthHistory) {
+          relative_history_.pop_front();
+        }
+      });
+  estimate_sub_ = nh.subscribe<TargetEstimate>(
+      "target", 10, [this](const TargetEstimateConstPtr& m) { estimate_ = m; });
+  cmd_sub_ = nh.subscribe<geometry_msgs::Twist>(
+      "cmd_vel", 10, [this](const geometry_msgs::TwistConstPtr& m) { cmd_ = *m; });
+  report_pub_ = nh.advertise<std_msgs::String>("evaluation/report", 1, true);
+  finished_sub_ = nh.subscribe("ground_truth/finished", 1, &FollowEvaluatorNode::onFinished, this);
+  timer_ = nh.createTimer(ros::Duration(1.0 / params_.rate), &FollowEvaluatorNode::onTick, this);
+  if (!params_.report_dir.empty()) {
+    write_timer_ = nh.createTimer(ros::Duration(params_.write_period),
+                                  [this](const ros::TimerEvent&) { writeFiles(); });
+  }
+}
+
+FollowEvaluatorNode::~FollowEvaluatorNode() {
+  writeReport();
+}
+
+void FollowEvaluatorNode::onFinished(const std_msgs::BoolConstPtr& msg) {
+  if (!msg->data || finished_) {
+    return;
+  }
+  finished_ = true;
+  timer_.stop();
+  write_timer_.stop();
+  writeFiles();
+  const evaluation::FollowReport result = metrics_.report();
+  std_msgs::String report;
+  report.data = result.toJson();
+  report_pub_.publish(report);
+  logVerdict(result);
+  if (params_.end_launch) {
+    endParentLaunch();
+  }
+}
+
+void FollowEvaluatorNode::logVerdict(const evaluation::FollowReport& report) const {
+  if (report.failures.empty()) {
+    ROS_INFO(
+        "follow_evaluator: closed loop OK: the robot drove %.1f m, the estimate was usable "
+        "%.0f %% of the time, the gap held %.0f %% of the walk",
+        report.robot_distance, 100.0 * report.estimate_availability,
+        100.0 * report.gap_within_tolerance);
+    return;
+  }
+  std::string reasons;
+  for (const std::string& failure : report.failures) {
+    reasons += (reasons.empty() ? "" : "; ") + failure;
+  }
+  const std::string last_status =
+      estimate_ ? toString(static_cast<estimation::TargetStatus>(estimate_->status)) : "none heard";
+  ROS_ERROR(
+      "follow_evaluator: CLOSED LOOP FAILED: %s. Last estimate status: %s. Check the "
+      "locator's inputs (its diagnostics name silent topics) and doc/deployment.md.",
+      reasons.c_str(), last_status.c_str());
+}
+
+void FollowEvaluatorNode::onTick(const ros::TimerEvent& event) {
+  if (time_.jumpedBack(event.current_real.toSec())) {
+    // A restarted simulator or a looped bag: the samples so far belong to another run.
+    ROS_WARN("follow_evaluator: the clock jumped back, metrics start over");
+    metrics_ = evaluation::FollowMetrics(params_.settings);
+    relative_history_.clear();
+    estimate_.reset();
+  }
+  if (finished_ || !odom_ || !truth_ || relative_history_.empty()) {
+    return;
+  }
+  const auto& relative = relative_history_.back();
+  evaluation::FollowSample s;
+  s.t = event.current_real.toSec();
+  s.robot_x = odom_->pose.pose.position.x;
+  s.robot_y = odom_->pose.pose.position.y;
+  const auto& q = odom_->pose.pose.orientation;
+  s.robot_yaw = std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
+  s.robot_speed = odom_->twist.twist.linear.x;
+  s.cmd_linear = cmd_.linear.x;
+  s.cmd_angular = cmd_.angular.z;
+  s.target_x = truth_->point.x;
+  s.target_y = truth_->point.y;
+  s.target_speed = target_speed_;
+  s.truth_x = relative->point.x;
+  s.truth_y = relative->point.y;
+  if (estimate_) {
+    s.estimate_status = toString(static_cast<estimation::TargetStatus>(estimate_->status));
+  }
+  const bool usable = estimate_ && hasPosition(*estimate_);
+  // An estimate from the future is not available, whatever it claims (TimePolicy).
+  const bool trusted =
+      usable && time_.check(estimate_->header.stamp.toSec(), event.current_real.toSec()) ==
+                    TimePolicy::Verdict::kFresh;
+  if (trusted && (event.current_real - estimate_->header.stamp).toSec() <= kEstimateMaxAge) {
+    // Compare with the truth closest to the estimate's stamp.
+    const ros::Time stamp = estimate_->header.stamp;
+    const auto closest = std::min_element(relative_history_.begin(), relative_history_.end(),
+                                          [&stamp](const auto& a, const auto& b) {
+                                            return std::abs((a->header.stamp - stamp).toSec()) <
+                                                   std::abs((b->header.stamp - stamp).toSec());
+                                          });
+    s.truth_x = (*closest)->point.x;
+    s.truth_y = (*closest)->point.y;
+    s.estimate_x = estimate_->position.x;
+    s.estimate_y = estimate_->position.y;
+  }
+  metrics_.add(s);
+}
+
+void FollowEvaluatorNode::writeFiles() const {
+  if (params_.report_dir.empty()) {
+    return;
+  }
+  writeFile(params_.report_dir + "/trajectory.csv", metrics_.toCsv());
+  writeFile(params_.report_dir + "/metrics.json", metrics_.report().toJson());
+}
+
+void FollowEvaluatorNode::writeReport() const {
+  ROS_INFO("follow_evaluator: %zu samples\n%s", metrics_.samples().size(),
+           metrics_.report().toJson().c_str());
+  writeFiles();
+}
+
+}  // namespace radio_follow

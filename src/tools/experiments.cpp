@@ -1,0 +1,117 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Runs the closed-loop experiments of test/experiments.yaml in the lockstep loop
+// (sim/closed_loop.hpp) with the shipped configuration over noise seeds 1..N and prints
+// the Markdown table of doc/experiments.md (ranges over the seeds), then one line per
+// broken threshold. Exit status 1 when any run broke one. Deterministic: the same
+// arguments print the same table.
+//   experiments [--seeds N] [--file test/experiments.yaml] [--config-dir DIR] [name ...]
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "radio_follow/common/param_error.hpp"
+#include "radio_follow/evaluation/experiment.hpp"
+
+namespace {
+
+struct Column {
+  const char* title;
+  double (*value)(const radio_follow::evaluation::FollowReport&);
+  const char* format;  ///< of one number
+  double scale;
+};
+
+const Column kColumns[] = {
+    {"min gap while moving (m)", [](const auto& r) { return r.min_gap_while_moving; }, "%.2f", 1},
+    {"gap held (%)", [](const auto& r) { return r.gap_within_tolerance; }, "%.0f", 100},
+    {"mean gap (m)", [](const auto& r) { return r.gap_mean; }, "%.2f", 1},
+    {"est. error median (m)", [](const auto& r) { return r.estimate_error_median; }, "%.3f", 1},
+    {"est. error p95 (m)", [](const auto& r) { return r.estimate_error_p95; }, "%.2f", 1},
+    {"path deviation max (m)", [](const auto& r) { return r.path_deviation_max; }, "%.2f", 1},
+};
+
+/// "a" or "a-b" for the range of the values, formatted alike.
+std::string range(const std::vector<double>& values, const char* format, double scale) {
+  const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+  char a[32];
+  char b[32];
+  std::snprintf(a, sizeof(a), format, scale * *lo);
+  std::snprintf(b, sizeof(b), format, scale * *hi);
+  return std::string(a) == b ? a : std::string(a) + "-" + b;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int seeds = 8;
+  std::string file = RF_EXPERIMENTS_FILE;
+  std::string config_dir = RF_CONFIG_DIR;
+  std::vector<std::string> names;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if ((arg == "--seeds" || arg == "--file" || arg == "--config-dir") && i + 1 < argc) {
+      const std::string value = argv[++i];
+      if (arg == "--seeds") {
+        seeds = std::atoi(value.c_str());
+      } else if (arg == "--file") {
+        file = value;
+      } else {
+        config_dir = value;
+      }
+    } else if (arg.rfind("--", 0) == 0) {
+      std::fprintf(stderr,
+                   "usage: experiments [--seeds N] [--file FILE] [--config-dir DIR] [name ...]\n");
+      return 2;
+    } else {
+      names.push_back(arg);
+    }
+  }
+  if (seeds < 1) {
+    std::fprintf(stderr, "experiments: --seeds must be >= 1\n");
+    return 2;
+  }
+  try {
+    std::vector<std::string> broken;
+    std::printf("| experiment |");
+    for (const Column& c : kColumns) {
+      std::printf(" %s |", c.title);
+    }
+    std::printf("\n|---|");
+    for (std::size_t i = 0; i < std::size(kColumns); ++i) {
+      std::printf("---|");
+    }
+    std::printf("\n");
+    for (const auto& experiment : radio_follow::evaluation::loadExperiments(file)) {
+      if (!names.empty() && std::find(names.begin(), names.end(), experiment.name) == names.end()) {
+        continue;
+      }
+      std::vector<std::vector<double>> values(std::size(kColumns));
+      for (int seed = 1; seed <= seeds; ++seed) {
+        const auto result = radio_follow::evaluation::runExperiment(experiment, config_dir, seed);
+        for (std::size_t i = 0; i < std::size(kColumns); ++i) {
+          values[i].push_back(kColumns[i].value(result.report));
+        }
+        for (const std::string& v : result.violations) {
+          broken.push_back(experiment.name + ", seed " + std::to_string(seed) + ": " + v);
+        }
+      }
+      std::printf("| %s |", experiment.name.c_str());
+      for (std::size_t i = 0; i < std::size(kColumns); ++i) {
+        std::printf(" %s |", range(values[i], kColumns[i].format, kColumns[i].scale).c_str());
+      }
+      std::printf("\n");
+    }
+    std::printf("\nseeds 1-%d; %zu threshold(s) broken\n", seeds, broken.size());
+    for (const std::string& b : broken) {
+      std::printf("BROKEN %s\n", b.c_str());
+    }
+    return broken.empty() ? 0 : 1;
+  } catch (const radio_follow::ParamError& e) {
+    std::fprintf(stderr, "experiments: %s\n", e.what());
+    return 2;
+  }
+}

@@ -1,0 +1,273 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Sensor placement advisor: the Cramer-Rao bound of the target position over a grid
+// around the robot for a layout YAML (the locator's format), a summary per ring and
+// direction, and the thesis's placement guidelines. ROS-free.
+//
+//   placement_advisor LAYOUT.yaml [--compare OTHER.yaml] [--extent M] [--resolution M]
+//                     [--height M] [--3d] [--sectors N] [--weak-factor K]
+//                     [--plot scripts/plot_placement.py] --out DIR
+//
+// Writes DIR/<layout>_map.csv and DIR/<layout>_summary.json per layout and prints the
+// summary; --plot runs the given plot script on them (DIR/<layout>[_vs_<other>].png).
+#include "radio_follow/estimation/placement_advisor.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "radio_follow/common/angles.hpp"
+#include "radio_follow/common/param_error.hpp"
+#include "radio_follow/config/layout.hpp"
+#include "radio_follow/evaluation/error_statistics.hpp"
+
+namespace rf = radio_follow;
+namespace fs = std::filesystem;
+using rf::evaluation::jsonNumber;
+using rf::evaluation::jsonString;
+
+namespace {
+
+struct Options {
+  std::string layout;
+  std::optional<std::string> compare;
+  std::string out;
+  std::optional<std::string> plot_script;
+  rf::estimation::AdvisorConfig config;
+};
+
+struct Evaluated {
+  std::string name;
+  rf::Layout layout;
+  rf::estimation::PlacementSummary summary;
+};
+
+const char* kUsage =
+    "usage: placement_advisor LAYOUT.yaml [--compare OTHER.yaml] [--extent M (10)]\n"
+    "         [--resolution M (0.25)] [--height M (1.0)] [--3d] [--sectors N (16)]\n"
+    "         [--weak-factor K (2)] [--plot PLOT_SCRIPT.py] --out DIR\n";
+
+double number(const std::string& option, const char* text) {
+  char* end = nullptr;
+  const double value = std::strtod(text, &end);
+  if (end == text || *end != '\0' || !std::isfinite(value)) {
+    throw rf::ParamError(option, rf::paramValueString(std::string(text)), "a number");
+  }
+  return value;
+}
+
+Options parse(int argc, char** argv) {
+  Options opt;
+  for (int i = 1; i < argc; ++i) {
+    const std::string key = argv[i];
+    const auto value = [&]() -> const char* {
+      if (i + 1 >= argc) {
+        throw rf::ParamError(key, "(missing)", "a value after the option");
+      }
+      return argv[++i];
+    };
+    if (key == "--compare") {
+      opt.compare = value();
+    } else if (key == "--out") {
+      opt.out = value();
+    } else if (key == "--plot") {
+      opt.plot_script = value();
+    } else if (key == "--extent") {
+      opt.config.extent = number(key, value());
+    } else if (key == "--resolution") {
+      opt.config.resolution = number(key, value());
+    } else if (key == "--height") {
+      opt.config.target_height = number(key, value());
+    } else if (key == "--sectors") {
+      const double sectors = number(key, value());
+      rf::require(sectors >= 1.0 && sectors <= 360.0 && sectors == std::floor(sectors), key,
+                  sectors, "a whole number of sectors from 1 to 360");
+      opt.config.sectors = static_cast<int>(sectors);
+    } else if (key == "--weak-factor") {
+      opt.config.weak_factor = number(key, value());
+    } else if (key == "--3d") {
+      opt.config.planar = false;
+    } else if (!key.empty() && key[0] != '-' && opt.layout.empty()) {
+      opt.layout = key;
+    } else {
+      throw rf::ParamError(key, "given", "one layout file and the options above");
+    }
+  }
+  rf::require(!opt.layout.empty(), "LAYOUT.yaml", std::string("(none)"), "a layout file");
+  rf::require(!opt.out.empty(), "--out", std::string("(none)"), "an output directory");
+  opt.config.validate();
+  return opt;
+}
+
+std::string csvNumber(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof(buffer), "%.6g", value);
+  return std::isfinite(value) ? buffer : "inf";
+}
+
+void writeMap(const fs::path& path, const rf::estimation::BoundMap& map) {
+  std::ofstream out(path);
+  out << "x,y,distance,direction_deg,rms_bound,worst_axis_bound,bearings,observable\n";
+  for (std::size_t iy = 0; iy < map.coordinates.size(); ++iy) {
+    for (std::size_t ix = 0; ix < map.coordinates.size(); ++ix) {
+      const double x = map.coordinates[ix];
+      const double y = map.coordinates[iy];
+      const rf::estimation::PointBound& b = map.at(ix, iy);
+      out << csvNumber(x) << ',' << csvNumber(y) << ',' << csvNumber(std::hypot(x, y)) << ','
+          << csvNumber(rf::rad2deg(std::atan2(y, x))) << ',' << csvNumber(b.rms) << ','
+          << csvNumber(b.worst_axis) << ',' << b.bearings << ',' << (b.observable ? 1 : 0) << '\n';
+    }
+  }
+  if (!out) {
+    throw std::runtime_error("cannot write " + path.string());
+  }
+}
+
+void writeSummary(const fs::path& path, const Evaluated& e,
+                  const rf::estimation::AdvisorConfig& config, const std::string& csv_name) {
+  std::ofstream out(path);
+  out << "{\n  \"layout\": " << jsonString(e.name) << ",\n  \"map_csv\": " << jsonString(csv_name)
+      << ",\n  \"extent\": " << jsonNumber(config.extent)
+      << ", \"resolution\": " << jsonNumber(config.resolution)
+      << ", \"height\": " << jsonNumber(config.target_height)
+      << ", \"planar\": " << (config.planar ? "true" : "false")
+      << ", \"weak_factor\": " << jsonNumber(config.weak_factor) << ",\n  \"rings\": [";
+  for (std::size_t i = 0; i < e.summary.rings.size(); ++i) {
+    const auto& r = e.summary.rings[i];
+    out << (i ? ", " : "") << "{\"radius\": " << jsonNumber(r.radius)
+        << ", \"median\": " << jsonNumber(r.median) << ", \"worst\": " << jsonNumber(r.worst)
+        << ", \"unobservable_fraction\": " << jsonNumber(r.unobservable_fraction) << "}";
+  }
+  out << "],\n  \"sectors\": [";
+  for (std::size_t i = 0; i < e.summary.sectors.size(); ++i) {
+    const auto& s = e.summary.sectors[i];
+    out << (i ? ", " : "") << "{\"centre_deg\": " << jsonNumber(s.centre_deg)
+        << ", \"worst_ratio\": " << jsonNumber(s.worst_ratio)
+        << ", \"weak\": " << (s.weak ? "true" : "false") << "}";
+  }
+  out << "],\n  \"warnings\": [";
+  for (std::size_t i = 0; i < e.summary.warnings.size(); ++i) {
+    out << (i ? ",\n    " : "\n    ") << jsonString(e.summary.warnings[i]);
+  }
+  out << "],\n  \"twr_modules\": [";
+  for (std::size_t i = 0; i < e.layout.twr_modules.size(); ++i) {
+    const auto& m = e.layout.twr_modules[i];
+    out << (i ? ", " : "") << "{\"id\": " << jsonString(m.id) << ", \"position\": ["
+        << jsonNumber(m.position.x()) << ", " << jsonNumber(m.position.y()) << ", "
+        << jsonNumber(m.position.z()) << "]}";
+  }
+  out << "],\n  \"aoa_boards\": [";
+  for (std::size_t i = 0; i < e.layout.aoa_boards.size(); ++i) {
+    const auto& b = e.layout.aoa_boards[i];
+    const Eigen::Vector3d axis = b.orientation * Eigen::Vector3d::UnitX();
+    out << (i ? ", " : "") << "{\"id\": " << jsonString(b.id) << ", \"position\": ["
+        << jsonNumber(b.position.x()) << ", " << jsonNumber(b.position.y()) << ", "
+        << jsonNumber(b.position.z())
+        << "], \"yaw_deg\": " << jsonNumber(rf::rad2deg(std::atan2(axis.y(), axis.x())))
+        << ", \"field_of_view_deg\": " << jsonNumber(rf::rad2deg(b.field_of_view)) << "}";
+  }
+  out << "]\n}\n";
+  if (!out) {
+    throw std::runtime_error("cannot write " + path.string());
+  }
+}
+
+std::string cell(double value) {
+  char buffer[32];
+  if (std::isnan(value)) {
+    return "n/a";
+  }
+  if (!std::isfinite(value)) {
+    return "unobs.";
+  }
+  std::snprintf(buffer, sizeof(buffer), "%.3f", value);
+  return buffer;
+}
+
+void print(const Evaluated& e, const rf::estimation::AdvisorConfig& config) {
+  std::printf("== %s (%s bound, target at %.2f m height)\n", e.name.c_str(),
+              config.planar ? "2D" : "3D", config.target_height);
+  std::printf("  ring    median sqrt(tr CRLB)   worst    unobservable\n");
+  for (const auto& r : e.summary.rings) {
+    std::printf("  %4.1f m  %8s m            %8s m  %5.1f %%\n", r.radius, cell(r.median).c_str(),
+                cell(r.worst).c_str(), 100.0 * r.unobservable_fraction);
+  }
+  std::string weak;
+  for (const auto& s : e.summary.sectors) {
+    if (s.weak) {
+      char buffer[64];
+      const std::string ratio =
+          std::isfinite(s.worst_ratio) ? cell(s.worst_ratio) + " x median" : "unobservable";
+      std::snprintf(buffer, sizeof(buffer), " %+.1f deg (%s)", s.centre_deg, ratio.c_str());
+      weak += buffer;
+    }
+  }
+  std::printf("  weak sectors (> %.1f x ring median):%s\n", config.weak_factor,
+              weak.empty() ? " none" : weak.c_str());
+  for (const auto& w : e.summary.warnings) {
+    std::printf("  WARNING: %s\n", w.c_str());
+  }
+}
+
+Evaluated evaluate(const std::string& path, const Options& opt, const fs::path& out) {
+  Evaluated e;
+  e.name = fs::path(path).stem().string();
+  e.layout = rf::loadLayoutFile(path);
+  e.summary = rf::estimation::summarize(e.layout, opt.config);
+  const std::string csv = e.name + "_map.csv";
+  writeMap(out / csv, rf::estimation::computeMap(e.layout, opt.config));
+  writeSummary(out / (e.name + "_summary.json"), e, opt.config, csv);
+  print(e, opt.config);
+  return e;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options opt;
+  try {
+    opt = parse(argc, argv);
+  } catch (const std::exception& ex) {
+    std::fprintf(stderr, "placement_advisor: %s\n%s", ex.what(), kUsage);
+    return 2;
+  }
+  try {
+    const fs::path out(opt.out);
+    fs::create_directories(out);
+    const Evaluated first = evaluate(opt.layout, opt, out);
+    std::string plot_args = "'" + (out / (first.name + "_summary.json")).string() + "'";
+    std::string png = first.name;
+    if (opt.compare) {
+      if (fs::path(*opt.compare).stem().string() == first.name) {
+        throw rf::ParamError("--compare", rf::paramValueString(*opt.compare),
+                             "a layout file whose name differs from the first one's");
+      }
+      const Evaluated second = evaluate(*opt.compare, opt, out);
+      std::printf("== %s / %s median bound ratio:", second.name.c_str(), first.name.c_str());
+      for (std::size_t i = 0; i < first.summary.rings.size(); ++i) {
+        std::printf(" %.1f m: %s", first.summary.rings[i].radius,
+                    cell(second.summary.rings[i].median / first.summary.rings[i].median).c_str());
+      }
+      std::printf("\n");
+      plot_args += " '" + (out / (second.name + "_summary.json")).string() + "'";
+      png += "_vs_" + second.name;
+    }
+    if (opt.plot_script) {
+      const std::string command = "python3 '" + *opt.plot_script + "' " + plot_args + " --out '" +
+                                  (out / (png + ".png")).string() + "'";
+      if (std::system(command.c_str()) != 0) {
+        std::fprintf(stderr, "placement_advisor: plotting failed: %s\n", command.c_str());
+        return 1;
+      }
+    }
+  } catch (const std::exception& ex) {
+    std::fprintf(stderr, "placement_advisor: %s\n", ex.what());
+    return 1;
+  }
+  return 0;
+}

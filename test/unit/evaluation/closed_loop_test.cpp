@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The lockstep closed loop (sim/closed_loop.hpp) on the shipped configuration: every
+// experiment of test/experiments.yaml (the thesis's Experiment 3 analogues and the fault
+// runs) meets its thresholds on several noise seeds, and a run is deterministic.
+#include "radio_follow/evaluation/closed_loop.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "radio_follow/common/param_error.hpp"
+#include "radio_follow/evaluation/experiment.hpp"
+
+namespace radio_follow {
+namespace evaluation {
+namespace {
+
+/// Noise seeds every experiment must pass (the ROS smoke runs use seed 1).
+constexpr int kSeeds = 8;
+
+ClosedLoopConfig config(const std::string& layout, const std::string& scenario,
+                        FollowController controller, int seed) {
+  return loadClosedLoopConfig(RF_CONFIG_DIR, layout, scenario, controller, seed);
+}
+
+TEST(ClosedLoop, SameSeedGivesBitIdenticalMetrics) {
+  const ClosedLoopConfig c = config("spot", "outdoor_loop", FollowController::kVelocity, 3);
+  ClosedLoop a(c);
+  ClosedLoop b(c);
+  const std::string first = a.run().toJson();
+  EXPECT_EQ(first, b.run().toJson());
+  EXPECT_EQ(a.metrics().toCsv(), b.metrics().toCsv());
+  ClosedLoop other(config("spot", "outdoor_loop", FollowController::kVelocity, 4));
+  EXPECT_NE(first, other.run().toJson()) << "the seed must change the noise";
+}
+
+TEST(ClosedLoop, EveryExperimentMeetsItsThresholdsOnEverySeed) {
+  const std::vector<Experiment> experiments = loadExperiments(RF_EXPERIMENTS_FILE);
+  ASSERT_GE(experiments.size(), 10u);
+  for (const Experiment& e : experiments) {
+    for (int seed = 1; seed <= kSeeds; ++seed) {
+      const ExperimentResult result = runExperiment(e, RF_CONFIG_DIR, seed);
+      for (const std::string& v : result.violations) {
+        ADD_FAILURE() << e.name << ", seed " << seed << ": " << v;
+      }
+    }
+  }
+}
+
+TEST(ClosedLoop, ThresholdsCanFail) {
+  // Without the speed feed-forward the robot trails the walking person: the checks see it.
+  Experiment e = loadExperiments(RF_EXPERIMENTS_FILE).front();
+  ClosedLoopConfig c = config(e.layout, e.scenario, e.controller, 1);
+  c.law.feed_forward = 0.0;
+  ClosedLoop loop(c);
+  const FollowReport r = loop.run();
+  EXPECT_FALSE(checkRun(e.check, r, {}).empty());
+
+  ExperimentCheck stop;
+  stop.stop_window = std::make_pair(10.0, 12.0);
+  stop.resume_after = 12.0;
+  EXPECT_EQ(checkRun(stop, r, {{11.0, 0.0}, {13.0, 0.5}}).size(), 0u);
+  EXPECT_EQ(checkRun(stop, r, {{11.0, 0.2}, {13.0, 0.05}}).size(), 2u);
+  EXPECT_EQ(checkRun(stop, r, {}).size(), 2u) << "no command in the window is a failure too";
+}
+
+TEST(ClosedLoop, AllModulesSilentStopsTheRobot) {
+  ClosedLoopConfig c = config("spot", "outdoor_loop", FollowController::kVelocity, 1);
+  c.outages = {{"5722", 20.0, 6.0}, {"5A84", 20.0, 6.0}, {"C4B5", 20.0, 6.0}};
+  ClosedLoop loop(c);
+  loop.run();
+  bool stopped = false;
+  for (const auto& command : loop.commands()) {
+    // range_timeout (1 s) after the last range the safety layer has stopped the robot.
+    if (command.t > 22.1 && command.t < 27.0) {
+      EXPECT_TRUE(command.stopped) << "at " << command.t << " s";
+      stopped = true;
+    }
+  }
+  EXPECT_TRUE(stopped);
+}
+
+TEST(ClosedLoopConfigTest, RefusesUnknownSensorsAndBadFiles) {
+  ClosedLoopConfig c = config("spot", "outdoor_loop", FollowController::kVelocity, 1);
+  c.outages = {{"nope", 1.0, 1.0}};
+  EXPECT_THROW(ClosedLoop{c}, ParamError);
+  EXPECT_THROW(config("no_such_layout", "outdoor_loop", FollowController::kVelocity, 1),
+               ParamError);
+  EXPECT_THROW(config("spot", "outdoor_loop", FollowController::kVelocity, -1), ParamError);
+}
+
+}  // namespace
+}  // namespace evaluation
+}  // namespace radio_follow

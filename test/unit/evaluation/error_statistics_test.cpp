@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/evaluation/error_statistics.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "radio_follow/common/angles.hpp"
+
+namespace radio_follow {
+namespace evaluation {
+namespace {
+
+TEST(ErrorSummary, QuantilesOfKnownValues) {
+  std::vector<double> errors;
+  for (int i = 1; i <= 100; ++i) {
+    errors.push_back(0.01 * i);
+  }
+  const ErrorSummary s = summarize(errors);
+  EXPECT_EQ(s.count, 100u);
+  EXPECT_NEAR(s.mean, 0.505, 1e-12);
+  EXPECT_NEAR(s.median, 0.51, 1e-12);  // nearest rank of 0.5 * 99 = 49.5 -> index 50
+  EXPECT_NEAR(s.p95, 0.95, 1e-12);     // 0.95 * 99 = 94.05 -> index 94
+  EXPECT_NEAR(s.max, 1.0, 1e-12);
+  EXPECT_TRUE(std::isnan(summarize({}).median));
+}
+
+TEST(ErrorStatistics, SectorsAreCentredOnTheFrontAndCountCounterClockwise) {
+  EXPECT_EQ(ErrorStatistics::sectorOf(0.0), 0u);
+  EXPECT_EQ(ErrorStatistics::sectorOf(deg2rad(22.0)), 0u);
+  EXPECT_EQ(ErrorStatistics::sectorOf(deg2rad(-22.0)), 0u);
+  EXPECT_EQ(ErrorStatistics::sectorOf(deg2rad(23.0)), 1u);
+  EXPECT_EQ(ErrorStatistics::sectorOf(deg2rad(90.0)), 2u);
+  EXPECT_EQ(ErrorStatistics::sectorOf(deg2rad(180.0)), 4u);
+  EXPECT_EQ(ErrorStatistics::sectorOf(deg2rad(-180.0)), 4u);
+  EXPECT_EQ(ErrorStatistics::sectorOf(deg2rad(-90.0)), 6u);
+  EXPECT_EQ(ErrorStatistics::sectorOf(deg2rad(-30.0)), 7u);
+}
+
+TEST(ErrorStatistics, SplitsByDirectionAndDistance) {
+  ErrorStatistics stats;
+  stats.add(3.0, 0.0, 0.1);   // ahead, 3 m
+  stats.add(0.0, -1.0, 0.5);  // right, 1 m
+  stats.add(-9.0, 0.0, 0.9);  // behind, 9 m
+  stats.add(std::nan(""), 0.0, 1.0);
+  EXPECT_EQ(stats.overall().count, 3u);
+  EXPECT_EQ(stats.sector(0).count, 1u);
+  EXPECT_DOUBLE_EQ(stats.sector(6).median, 0.5);
+  EXPECT_DOUBLE_EQ(stats.sector(4).max, 0.9);
+  EXPECT_EQ(stats.band(0).count, 1u);  // 0-2 m
+  EXPECT_EQ(stats.band(1).count, 1u);  // 2-4 m
+  EXPECT_EQ(stats.band(2).count, 0u);  // 4-8 m
+  EXPECT_EQ(stats.band(3).count, 1u);  // 8+ m
+  EXPECT_EQ(ErrorStatistics::bandName(3), "8+ m");
+  const std::string json = stats.toJson();
+  EXPECT_NE(json.find("\"by_sector\""), std::string::npos);
+  EXPECT_NE(json.find("\"median_m\": null"), std::string::npos);  // empty sectors
+}
+
+}  // namespace
+}  // namespace evaluation
+}  // namespace radio_follow

@@ -1,0 +1,123 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/evaluation/homing_trial.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "radio_follow/common/angles.hpp"
+#include "radio_follow/control/homing_controller.hpp"
+
+namespace radio_follow {
+namespace evaluation {
+namespace {
+
+/// A controller that trusts each reading: turn towards the bearing, drive when facing it,
+/// stop within 0.3 m. Enough to exercise the harness and its metrics.
+HomingCommand naive(const HomingMeasurement& m) {
+  HomingCommand c;
+  c.goal_x = m.odom.x + m.distance * std::cos(m.odom.yaw + m.bearing);
+  c.goal_y = m.odom.y + m.distance * std::sin(m.odom.yaw + m.bearing);
+  c.arrived = m.distance < 0.3;
+  c.angular = 2.0 * m.bearing;
+  c.linear = std::abs(m.bearing) < 0.3 ? std::min(1.0, m.distance) : 0.0;
+  return c;
+}
+
+TEST(HomingTrial, NoiseFreeStraightAheadIsEfficient) {
+  HomingTrialConfig config;
+  const HomingResult r = runHomingTrial(naive, 5.0, 0.0, HomingNoise{}, config, 1);
+  EXPECT_TRUE(r.success);
+  EXPECT_LT(r.final_error, 0.31);
+  EXPECT_NEAR(r.goal_error, 0.0, 1e-9);
+  EXPECT_GT(r.path_efficiency, 0.999);
+  EXPECT_GT(r.net_velocity, 0.3);
+  EXPECT_LT(r.time, 30.0);
+}
+
+TEST(HomingTrial, TargetBehindNeedsATurnAndCostsEfficiencyNothingElse) {
+  const HomingResult r = runHomingTrial(naive, -4.0, 1.0, HomingNoise{}, HomingTrialConfig{}, 1);
+  EXPECT_TRUE(r.success);
+  EXPECT_GT(r.path_efficiency, 0.9);
+}
+
+TEST(HomingTrial, ControllerThatNeverArrivesFailsAtTheTimeLimit) {
+  HomingTrialConfig config;
+  config.time_limit = 5.0;
+  const HomingResult r = runHomingTrial([](const HomingMeasurement&) { return HomingCommand{}; },
+                                        3.0, 3.0, HomingNoise{}, config, 1);
+  EXPECT_FALSE(r.success);
+  EXPECT_NEAR(r.time, 5.0, 1e-9);
+  EXPECT_TRUE(std::isnan(r.goal_error));
+}
+
+TEST(HomingTrial, NoiseIsUniformWithinTheConfiguredBounds) {
+  const HomingNoise noise = seed000NoiseConfigurations()[4];  // +-20 deg, +-1 m +-20 %
+  double max_angle = 0.0, max_distance = 0.0;
+  HomingTrialConfig config;
+  config.time_limit = 20.0;
+  runHomingTrial(
+      [&](const HomingMeasurement& m) {
+        const double true_bearing = std::atan2(0.0 - m.odom.y, 8.0 - m.odom.x) - m.odom.yaw;
+        max_angle = std::max(max_angle, std::abs(wrapAngleFast(m.bearing - true_bearing)));
+        max_distance = std::max(max_distance, std::abs(m.distance - 8.0));
+        return HomingCommand{};
+      },
+      8.0, 0.0, noise, config, 3);
+  EXPECT_LE(max_angle, deg2rad(20.0) + 1e-12);
+  EXPECT_GT(max_angle, deg2rad(17.0));  // 200 draws reach close to the bound
+  EXPECT_LE(max_distance, 1.0 + 0.2 * 8.0 + 1e-12);
+  EXPECT_GT(max_distance, 2.2);
+}
+
+TEST(HomingTrial, TargetsFillEachQuadrant) {
+  const auto targets = homingTargets(10, 10.0, 1.0, 7);
+  ASSERT_EQ(targets.size(), 40u);
+  int q[4] = {0, 0, 0, 0};
+  for (const auto& [x, y] : targets) {
+    EXPECT_GE(std::hypot(x, y), 1.0);
+    EXPECT_LE(std::abs(x), 10.0);
+    q[(x >= 0 ? (y >= 0 ? 0 : 3) : (y >= 0 ? 1 : 2))]++;
+  }
+  for (int n : q)
+    EXPECT_EQ(n, 10);
+  EXPECT_EQ(homingTargets(10, 10.0, 1.0, 7), targets);
+}
+
+TEST(HomingTrial, SummaryAveragesSuccessfulRunsOnly) {
+  HomingResult good;
+  good.success = true;
+  good.time = 10.0;
+  good.goal_error = 0.1;
+  HomingResult bad;
+  bad.time = 120.0;
+  const HomingSummary s = summarize({good, bad});
+  EXPECT_DOUBLE_EQ(s.success_rate, 0.5);
+  EXPECT_DOUBLE_EQ(s.time, 10.0);
+  EXPECT_DOUBLE_EQ(s.goal_error, 0.1);
+}
+
+TEST(HomingTrial, HomingControllerReachesBeaconsInEveryQuadrantUnderTheWorstNoise) {
+  // The homing_controller node's law in the loop, seed 000's noisiest configuration.
+  control::HomingControllerParams params;
+  params.distance_source = "uwb";
+  params.homing.max_linear = 1.0;
+  HomingTrialConfig config;
+  config.robot.max_linear = 1.0;
+  const HomingNoise noise = seed000NoiseConfigurations()[4];
+  std::vector<HomingResult> results;
+  int seed = 0;
+  for (const auto& [x, y] : homingTargets(2, 10.0, 1.0, 11)) {
+    results.push_back(runHomingTrial(homingControllerStep(params), x, y, noise, config, ++seed));
+  }
+  const HomingSummary s = summarize(results);
+  EXPECT_DOUBLE_EQ(s.success_rate, 1.0);
+  EXPECT_LT(s.goal_error, 0.4);
+  EXPECT_LT(s.final_error, 0.6);
+}
+
+}  // namespace
+}  // namespace evaluation
+}  // namespace radio_follow
