@@ -54,12 +54,12 @@ struct Pool {
 void runCase(const Case& c, int trials, unsigned long seed) {
   const rf::Layout layout =
       rf::loadLayoutFile(std::string(RF_CONFIG_DIR) + "/layouts/" + c.layout + ".yaml");
-  rf::SyntheticNoise noise;
+  rf::estimation::SyntheticNoise noise;
   noise.range_sigma = kRangeSigma;
   noise.azimuth_sigma = noise.elevation_sigma = rf::deg2rad(std::max(c.azimuth_deg, 1.0));
-  rf::SolverConfig config;
+  rf::estimation::SolverConfig config;
   config.height = kHeight;
-  const rf::PositionSolver locator(config);
+  const rf::estimation::PositionSolver locator(config);
   const thesis_baseline::ThesisSolver thesis(kHeight);
   std::mt19937_64 rng(seed);
   Pool ours;
@@ -71,16 +71,18 @@ void runCase(const Case& c, int trials, unsigned long seed) {
       ++points;
       const double a = rf::deg2rad(15.0 + 30.0 * k);  // off the boards' seams and axes
       const Eigen::Vector3d truth(r * std::cos(a), r * std::sin(a), kHeight);
-      const rf::ObservationSet ideal = rf::idealObservations(layout, truth, noise, c.max_bearings);
-      const auto crlb = rf::positionCrlb(rf::fisherInformation(ideal, truth), true);
+      const rf::estimation::ObservationSet ideal =
+          rf::estimation::idealObservations(layout, truth, noise, c.max_bearings);
+      const auto crlb =
+          rf::estimation::positionCrlb(rf::estimation::fisherInformation(ideal, truth), true);
       double se_ours = 0.0;
       double se_theirs = 0.0;
       int n_ours = 0;
       int n_theirs = 0;
       for (int t = 0; t < trials; ++t) {
-        rf::ObservationSet obs = ideal;
-        rf::addGaussianNoise(obs, rng);
-        const rf::SolveResult mine = locator.solveCostOnly(obs, truth);
+        rf::estimation::ObservationSet obs = ideal;
+        rf::estimation::addGaussianNoise(obs, rng);
+        const rf::estimation::SolveResult mine = locator.solveCostOnly(obs, truth);
         const thesis_baseline::ThesisResult base = thesis.solve(obs, truth);
         if (mine.success) {
           se_ours += (mine.position - truth).squaredNorm();

@@ -50,7 +50,7 @@ class SquaredRangeCost : public ceres::SizedCostFunction<1, 2> {
 /// 3 |azimuth(p) - measured azimuth| in the board's frame, radians.
 class AbsAzimuthCost : public ceres::SizedCostFunction<1, 2> {
  public:
-  AbsAzimuthCost(const radio_follow::BearingObservation& z, double height)
+  AbsAzimuthCost(const radio_follow::estimation::BearingObservation& z, double height)
       : z_(z), height_(height) {}
 
   bool Evaluate(double const* const* parameters, double* residuals,
@@ -75,7 +75,7 @@ class AbsAzimuthCost : public ceres::SizedCostFunction<1, 2> {
 
  private:
   static constexpr double kWeight = 3.0;  // radio_locator.py: 3.0 * abs(angle)
-  radio_follow::BearingObservation z_;
+  radio_follow::estimation::BearingObservation z_;
   double height_;
 };
 
@@ -103,7 +103,7 @@ class ThesisSolver {
     options_.parameter_tolerance = 1e-9;
   }
 
-  ThesisResult solve(const radio_follow::ObservationSet& observations,
+  ThesisResult solve(const radio_follow::estimation::ObservationSet& observations,
                      const Eigen::Vector3d& initial) const {
     double xy[2] = {initial.x(), initial.y()};
     std::deque<SquaredRangeCost> ranges;
