@@ -6,7 +6,7 @@
 # not timings are deterministic (fixed seeds, lockstep loops); every timing is printed
 # with a baseline measured in the same run and the ratio to it.
 #   bash scripts/results.sh [section ...]
-# Sections, in order (default: all; about 8 minutes on a 2-core machine):
+# Sections, in order (default: all; 387 s in one run on a shared 2-core machine, built):
 #   accuracy latency load experiments homing placement offline stop demo
 # Not part of scripts/test.sh: too slow, and timings vary with the machine's load.
 # Masters: RF_RESULTS_PORT (default 11751) for the stop-latency benchmark and the demo;
