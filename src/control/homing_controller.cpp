@@ -11,17 +11,68 @@
 namespace radio_follow {
 namespace control {
 
+namespace {
+
+const ParamTable<RssiModel>& rssiTable() {
+  static const ParamTable<RssiModel> t =
+      ParamTable<RssiModel>()
+          .add("rssi_at_1m", &RssiModel::rssi_at_1m, "dBm", "RSSI of the tag at 1 m.")
+          .add("rssi_exponent", &RssiModel::exponent, "", "Path-loss exponent.", Range::above(0.0));
+  return t;
+}
+
+const ParamTable<HomingParams>& estimatorTable() {
+  using H = HomingParams;
+  static const ParamTable<H> t =
+      ParamTable<H>()
+          .add("tau", &H::tau, "readings", "Eq 3 decay.", Range::above(0.0))
+          .add("window", &H::window, "", "Vector goals kept.", Range::atLeast(3))
+          .add("kohonen_k", &H::k, "", "Kohonen step.", Range::aboveUpTo(0.0, 1.0))
+          .add("min_baseline", &H::min_baseline, "m", "Parallax baseline needed.",
+               Range::above(0.0))
+          .add("min_parallax_angle", &H::min_parallax_angle, "rad", "Parallax angle needed.",
+               Range::open(0.0, kPi / 2.0))
+          .add("error_threshold", &H::error_threshold, "", "Eq 14 threshold.", Range::above(0.0))
+          .add("z_threshold", &H::z_threshold, "", "One-sided z of the agreement test.",
+               Range::above(0.0))
+          .add("arrival_distance", &H::arrival_distance, "m", "Arrived within this.",
+               Range::above(0.0))
+          .add("agreement_distance", &H::agreement_distance, "m",
+               "Parallax vs vector goal at arrival.", Range::above(0.0))
+          .add("linear_gain", &H::linear_gain, "1/s", "speed = min(max_linear, gain * distance).",
+               Range::above(0.0))
+          .add("angular_gain", &H::angular_gain, "1/s", "Yaw rate per rad of heading error.",
+               Range::above(0.0));
+  return t;
+}
+
+}  // namespace
+
+const ParamTable<HomingControllerParams>& HomingControllerParams::table() {
+  using P = HomingControllerParams;
+  static const ParamTable<P> t =
+      ParamTable<P>()
+          .add("board_x", &P::board_x, "m", "AoA board position in base_link, x.")
+          .add("board_y", &P::board_y, "m", "AoA board position in base_link, y.")
+          .add("board_yaw", &P::board_yaw, "rad", "Yaw of the board's boresight.")
+          .addChoice(
+              "distance_source", &P::distance_source,
+              std::vector<std::pair<std::string, std::string>>{{"rssi", "rssi"}, {"uwb", "uwb"}},
+              "rssi: log-distance model; uwb: the newest range.")
+          .add("distance_max_age", &P::distance_max_age, "s", "Older UWB ranges are not used.",
+               Range::above(0.0))
+          .add("odom_timeout", &P::odom_timeout, "s", "Older odometry is not used.",
+               Range::above(0.0))
+          .add("search_speed", &P::search_speed, "m/s", "Forward speed while no goal exists.",
+               Range::atLeast(0.0))
+          .include(rssiTable(), &P::rssi)
+          .include(estimatorTable(), &P::homing);
+  return t;
+}
+
 void HomingControllerParams::validate() const {
-  require(std::isfinite(board_x) && std::isfinite(board_y), "~board_x/~board_y", board_x,
-          "finite metres");
-  require(std::isfinite(board_yaw), "~board_yaw", board_yaw, "a finite angle in rad");
-  require(distance_source == "rssi" || distance_source == "uwb", "~distance_source",
-          distance_source, "'rssi' or 'uwb'");
-  require(distance_max_age > 0.0, "~distance_max_age", distance_max_age, "seconds > 0");
-  require(odom_timeout > 0.0, "~odom_timeout", odom_timeout, "seconds > 0");
-  require(search_speed >= 0.0, "~search_speed", search_speed, "a speed >= 0 in m/s");
-  rssi.validate();
-  homing.validate();
+  table().check(*this);
+  homing.validate();  // max_linear and max_angular, copied from the common limits
 }
 
 HomingController::HomingController(const HomingControllerParams& params)
@@ -136,31 +187,10 @@ HomingOutput HomingController::compute(double now) const {
   return out;
 }
 
-void HomingControllerParams::load(const ParamSource& pnh, const MotionLimits& limits) {
-  HomingControllerParams& p = *this;
-  pnh.param("board_x", p.board_x, p.board_x);
-  pnh.param("board_y", p.board_y, p.board_y);
-  pnh.param("board_yaw", p.board_yaw, p.board_yaw);
-  pnh.param("distance_source", p.distance_source, p.distance_source);
-  pnh.param("distance_max_age", p.distance_max_age, p.distance_max_age);
-  pnh.param("odom_timeout", p.odom_timeout, p.odom_timeout);
-  pnh.param("search_speed", p.search_speed, p.search_speed);
-  pnh.param("rssi_at_1m", p.rssi.rssi_at_1m, p.rssi.rssi_at_1m);
-  pnh.param("rssi_exponent", p.rssi.exponent, p.rssi.exponent);
-  HomingParams& h = p.homing;
-  pnh.param("tau", h.tau, h.tau);
-  pnh.param("window", h.window, h.window);
-  pnh.param("kohonen_k", h.k, h.k);
-  pnh.param("min_baseline", h.min_baseline, h.min_baseline);
-  pnh.param("min_parallax_angle", h.min_parallax_angle, h.min_parallax_angle);
-  pnh.param("error_threshold", h.error_threshold, h.error_threshold);
-  pnh.param("z_threshold", h.z_threshold, h.z_threshold);
-  pnh.param("arrival_distance", h.arrival_distance, h.arrival_distance);
-  pnh.param("agreement_distance", h.agreement_distance, h.agreement_distance);
-  pnh.param("linear_gain", h.linear_gain, h.linear_gain);
-  pnh.param("angular_gain", h.angular_gain, h.angular_gain);
-  h.max_linear = limits.max_linear;
-  h.max_angular = limits.max_angular;
+void HomingControllerParams::load(const ParamSource& source, const MotionLimits& limits) {
+  table().load(source, *this);
+  homing.max_linear = limits.max_linear;
+  homing.max_angular = limits.max_angular;
 }
 
 }  // namespace control

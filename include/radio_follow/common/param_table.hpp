@@ -113,7 +113,11 @@ class ParamTable {
           return ParamValue(c.first);
         }
       }
-      return ParamValue(std::string("?"));
+      if constexpr (std::is_same_v<E, std::string>) {
+        return ParamValue(s.*member);  // not one of the choices: check() names it
+      } else {
+        return ParamValue(std::string("?"));
+      }
     };
     e.set = [member, choices, name](S& s, const ParamValue& v) {
       const std::string& text = std::get<std::string>(v);
@@ -171,6 +175,15 @@ class ParamTable {
         const double x = number ? *number : static_cast<double>(*count);
         require(e.range.contains(x), "~" + e.name, x,
                 "a value " + e.range.text() + (e.unit.empty() ? "" : " " + e.unit));
+      }
+      const std::string* text = std::get_if<std::string>(&v);
+      if (text && !e.choices.empty()) {
+        std::string expected;
+        for (const std::string& c : e.choices) {
+          expected += (expected.empty() ? "" : " or ") + c;
+        }
+        require(std::find(e.choices.begin(), e.choices.end(), *text) != e.choices.end(),
+                "~" + e.name, *text, expected);
       }
     }
   }

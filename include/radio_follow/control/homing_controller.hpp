@@ -39,6 +39,9 @@ struct HomingControllerParams {
   /// Reads the law's parameters by their names (doc/nodes/homing_controller.md); the
   /// speed caps come from the controller's common `limits`. Absent keys keep their value.
   void load(const ParamSource& source, const MotionLimits& limits);
+  /// The node's law parameters (config/homing_controller.yaml), rssi_* and the
+  /// estimator's (HomingParams) included.
+  static const ParamTable<HomingControllerParams>& table();
   void validate() const;
 };
 

@@ -16,6 +16,7 @@
 #include "radio_follow/common/param_table.hpp"
 #include "radio_follow/common/yaml_params.hpp"
 #include "radio_follow/control/command_pipeline.hpp"
+#include "radio_follow/control/homing_controller.hpp"
 #include "radio_follow/control/path_follower.hpp"
 #include "radio_follow/control/velocity_law.hpp"
 #include "radio_follow/estimation/locator.hpp"
@@ -219,6 +220,11 @@ TEST(ParamTables, VelocityLawIsInItsYamlAndDoc) {
 
 TEST(ParamTables, PathFollowerIsInItsYamlAndDoc) {
   expectCovered(control::PathFollowParams::table(), {"path_follower.yaml"}, "path_follower.md");
+}
+
+TEST(ParamTables, HomingControllerIsInItsYamlAndDoc) {
+  expectCovered(control::HomingControllerParams::table(), {"homing_controller.yaml"},
+                "homing_controller.md");
 }
 
 TEST(ParamTables, LocatorIsInItsYamlAndDoc) {

@@ -244,7 +244,7 @@ void expectParamError(const std::function<void(HomingControllerParams&)>& change
 TEST(HomingControllerParams, BadValuesThrowNamingTheParameter) {
   EXPECT_NO_THROW(HomingController{HomingControllerParams{}});
   expectParamError([](auto& p) { p.distance_source = "sonar"; }, "~distance_source");
-  expectParamError([](auto& p) { p.board_x = kNaN; }, "~board_x/~board_y");
+  expectParamError([](auto& p) { p.board_x = kNaN; }, "~board_x");
   expectParamError([](auto& p) { p.board_yaw = std::numeric_limits<double>::infinity(); },
                    "~board_yaw");
   expectParamError([](auto& p) { p.distance_max_age = 0.0; }, "~distance_max_age");
