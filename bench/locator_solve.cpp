@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Latency of one fused locator solve per sensor layout (warm start, as in steady tracking)
-// and of a whole Locator::update (buffer, board selection, solve, filter).
+// and of a whole Locator::update (buffer, board selection, solve, filter). Baseline in the
+// same run: the thesis's solve formulation (thesis_solver.hpp) on the same epochs from the
+// same starts (thesisSolve/<case>).
 // Each benchmark also times every solve and reports its median and 99th percentile
 // (counters p50_us, p99_us): the mean alone hides the tail.
 //
@@ -17,6 +19,7 @@
 #include "radio_follow/estimation/locator.hpp"
 #include "radio_follow/estimation/position_solver.hpp"
 #include "radio_follow/estimation/synthetic_observations.hpp"
+#include "thesis_solver.hpp"
 
 namespace rf = radio_follow;
 
@@ -74,6 +77,23 @@ void solve(benchmark::State& state, const std::string& layout, int max_bearings)
   reportPercentiles(state, micros);
 }
 
+void thesisSolve(benchmark::State& state, const std::string& layout, int max_bearings) {
+  const std::vector<Epoch> data = epochs(layout, max_bearings);
+  const thesis_baseline::ThesisSolver solver(1.0);
+  std::vector<double> micros;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Epoch& e = data[i++ % data.size()];
+    const auto start = std::chrono::steady_clock::now();
+    thesis_baseline::ThesisResult r = solver.solve(e.obs, e.warm);
+    micros.push_back(
+        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start)
+            .count());
+    benchmark::DoNotOptimize(r);
+  }
+  reportPercentiles(state, micros);
+}
+
 // The node's whole per-epoch work for the Spot layout: fresh ranges and bearings from all
 // four boards (the one behind the robot included), selection, warm solve, filter, and the
 // mirror test with ambiguity_margin = the argument (0: off, the baseline; 2: the default:
@@ -117,6 +137,14 @@ BENCHMARK_CAPTURE(solve, tracked, std::string("tracked"), 0)->Unit(benchmark::kM
 BENCHMARK_CAPTURE(solve, cube_1_bearing, std::string("cube"), 1)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(solve, spot_1_bearing, std::string("spot"), 1)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(solve, spot_all_in_fov, std::string("spot"), 4)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(thesisSolve, spot_twr, std::string("spot_twr"), 0)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(thesisSolve, tracked, std::string("tracked"), 0)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(thesisSolve, cube_1_bearing, std::string("cube"), 1)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(thesisSolve, spot_1_bearing, std::string("spot"), 1)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(thesisSolve, spot_all_in_fov, std::string("spot"), 4)
+    ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(locatorUpdate, spot, std::string("spot"))
     ->Arg(0)
     ->Arg(2)

@@ -11,7 +11,7 @@ export PATH="/usr/bin:$PATH"
 # shellcheck disable=SC1091
 source "$repo/scripts/env.sh" >/dev/null
 trials="${1:-40}"
-port=11711
+port="${RF_BENCH_PORT:-11711}"  # RF_BENCH_PORT: another free master port
 export ROS_MASTER_URI="http://localhost:$port"
 export ROS_HOME="${ROS_HOME:-$RF_WS/ros_home}"
 bin="$RF_WS/devel/lib/radio_follow"

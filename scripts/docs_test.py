@@ -17,9 +17,14 @@ line right before the fence may say how (an HTML comment, invisible on GitHub):
                                           is printed, so skipping is never silent
 
 It also checks what `roslaunch --ros-args` shows for every launch file: every argument
-documented, and none listed as required unless it is (REQUIRED_ARGS).
+documented, and none listed as required unless it is (REQUIRED_ARGS); and that every row of
+README.md's "Results in short" table that quotes a figure names the command that produces
+it (`bash scripts/<script>.sh ...`, the script present; for scripts/results.sh, a section
+it has).
 
-Usage: docs_test.py [--list]   (--list prints the blocks and what would happen)
+Usage: docs_test.py [--list | --results-table]
+  --list           prints the blocks and what would happen
+  --results-table  only the results-table check (no ROS, a fraction of a second)
 Exit status 1 if any block or launch file failed.
 """
 import os
@@ -183,8 +188,35 @@ def check_launch_args(env):
     return failures
 
 
+def results_table_failures():
+    """Rows of README's "Results in short" with a figure but no command that produces it."""
+    text = (REPO / "README.md").read_text()
+    table = text.partition("## Results in short")[2].split("\n\n", 2)[1]
+    results_sh = (REPO / "scripts" / "results.sh").read_text()
+    sections = set(re.search(r"^all=\((.*)\)$", results_sh, re.M).group(1).split())
+    failures = []
+    for row in table.splitlines()[2:]:
+        cells = [c.strip() for c in row.strip().strip("|").split("|")]
+        if len(cells) < 3 or not re.search(r"\d", cells[1]):
+            continue
+        named = re.findall(r"`bash scripts/([\w.]+\.sh)([^`]*)`", row)
+        good = [(script, args) for script, args in named if (REPO / "scripts" / script).is_file()
+                and (script != "results.sh" or set(args.split()) <= sections)]
+        if not good:
+            failures.append(f"README results row '{cells[0]}': no `bash scripts/<script>.sh` "
+                            "command that exists (results.sh sections: "
+                            f"{' '.join(sorted(sections))})")
+    return failures
+
+
 def main():
     listing = "--list" in sys.argv
+    if "--results-table" in sys.argv:
+        problems = results_table_failures()
+        for problem in problems:
+            print(f"docs_test: FAIL {problem}")
+        print(f"docs_test: results table: {len(problems)} rows without a command")
+        return 1 if problems else 0
     found = list(blocks())
     if listing:
         for path, line, mode, reason, _ in found:
@@ -197,6 +229,9 @@ def main():
     for problem in check_launch_args(env):
         print(f"docs_test: FAIL {problem}")
         failures.append("launch arguments")
+    for problem in results_table_failures():
+        print(f"docs_test: FAIL {problem}")
+        failures.append("results table")
     demo = None
     try:
         # Plain blocks first, then the ones that need the demo (started once).

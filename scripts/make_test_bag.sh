@@ -5,8 +5,7 @@
 # velocity controller in the loop, through launch/record.launch. Run it again after
 # changing the simulator or the message definitions.
 # Arguments: an output path (default: the file above) and extra demo.launch arguments;
-# RF_BAG_SCENARIO and RF_BAG_TIME_FACTOR choose another scenario and speed (the offline
-# evaluator's speed was measured on a long random walk made this way).
+# RF_BAG_SCENARIO and RF_BAG_TIME_FACTOR choose another scenario and speed.
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 out="${1:-$repo/test/data/sim_spot_straight.bag}"

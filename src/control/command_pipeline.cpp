@@ -10,8 +10,25 @@
 namespace radio_follow {
 namespace control {
 
+const ParamTable<CommandPipelineParams>& CommandPipelineParams::table() {
+  using P = CommandPipelineParams;
+  static const ParamTable<P> t =
+      ParamTable<P>()
+          .include(SafetyParams::table(), &P::safety)
+          .include(MotionLimits::table(), &P::limits)
+          .add("use_scan", &P::use_scan, "", "Enable laser-scan avoidance.")
+          .add("scan_timeout", &P::scan_timeout, "s", "Older scan = forward motion blocked.",
+               Range::above(0.0))
+          .include(AvoidanceParams::table(), &P::avoidance)
+          .add("calibrate_ranges", &P::calibrate_ranges, "",
+               "Apply each module's layout calibration to its ranges before the stop check.")
+          .add("target_anchor_id", &P::target_anchor_id, "",
+               "Target's anchor (case-insensitive); empty = any anchor.");
+  return t;
+}
+
 void CommandPipelineParams::load(const ParamSource& p, const Layout* layout) {
-  p.param("calibrate_ranges", calibrate_ranges, calibrate_ranges);
+  table().load(p, *this, "calibrate_ranges");
   if (layout != nullptr) {
     // Explicit parameters below still win over what the layout implies.
     target_anchor_id = layout->target_anchor_id;
@@ -22,28 +39,12 @@ void CommandPipelineParams::load(const ParamSource& p, const Layout* layout) {
       }
     }
   }
-  p.param("target_anchor_id", target_anchor_id, target_anchor_id);
+  table().load(p, *this);  // target_anchor_id: the layout's unless set
   target_anchor_id = normalizeId(target_anchor_id);
-  p.param("use_scan", use_scan, use_scan);
-  p.param("scan_timeout", scan_timeout, scan_timeout);
-  p.param("safe_distance", safety.safe_distance, safety.safe_distance);
-  p.param("estimate_timeout", safety.estimate_timeout, safety.estimate_timeout);
-  p.param("range_timeout", safety.range_timeout, safety.range_timeout);
-  p.param("hold_time", safety.hold_time, safety.hold_time);
-  p.param("max_linear", limits.max_linear, limits.max_linear);
-  p.param("max_angular", limits.max_angular, limits.max_angular);
-  p.param("max_linear_accel", limits.max_linear_accel, limits.max_linear_accel);
-  p.param("max_linear_decel", limits.max_linear_decel, limits.max_linear_decel);
-  p.param("max_angular_accel", limits.max_angular_accel, limits.max_angular_accel);
-  p.param("avoidance/obstacle_threshold", avoidance.obstacle_threshold,
-          avoidance.obstacle_threshold);
-  p.param("avoidance/stop_threshold", avoidance.stop_threshold, avoidance.stop_threshold);
-  p.param("avoidance/side_threshold", avoidance.side_threshold, avoidance.side_threshold);
-  p.param("avoidance/turn_rate", avoidance.turn_rate, avoidance.turn_rate);
 }
 
 void CommandPipelineParams::validate() const {
-  require(scan_timeout > 0.0, "~scan_timeout", scan_timeout, "a timeout > 0 in seconds");
+  table().check(*this);
   // A calibration that moves the stop threshold far, or turns it around, is more likely a
   // typo in the layout than a module: the safety stop must not silently depend on it.
   const double d = safety.safe_distance;
@@ -59,15 +60,6 @@ void CommandPipelineParams::validate() const {
   safety.validate();
   limits.validate();
   avoidance.validate();
-}
-
-void loadPidGains(const ParamSource& p, const std::string& ns, PidGains& gains) {
-  p.param(ns + "/kp", gains.kp, gains.kp);
-  p.param(ns + "/ki", gains.ki, gains.ki);
-  p.param(ns + "/kd", gains.kd, gains.kd);
-  p.param(ns + "/integral_limit", gains.integral_limit, gains.integral_limit);
-  p.param(ns + "/derivative_time_constant", gains.derivative_time_constant,
-          gains.derivative_time_constant);
 }
 
 CommandPipeline::CommandPipeline(const CommandPipelineParams& params)

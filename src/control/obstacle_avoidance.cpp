@@ -11,16 +11,24 @@
 namespace radio_follow {
 namespace control {
 
+const ParamTable<AvoidanceParams>& AvoidanceParams::table() {
+  static const ParamTable<AvoidanceParams> t =
+      ParamTable<AvoidanceParams>()
+          .add("avoidance/obstacle_threshold", &AvoidanceParams::obstacle_threshold, "m",
+               "Slow and bend below this (ahead).", Range::above(0.0))
+          .add("avoidance/stop_threshold", &AvoidanceParams::stop_threshold, "m",
+               "No forward motion below this (ahead).", Range::above(0.0))
+          .add("avoidance/side_threshold", &AvoidanceParams::side_threshold, "m",
+               "Turn away from a side below this.", Range::above(0.0))
+          .add("avoidance/turn_rate", &AvoidanceParams::turn_rate, "rad/s",
+               "Yaw rate used to bend.", Range::above(0.0));
+  return t;
+}
+
 void AvoidanceParams::validate() const {
-  require(std::isfinite(stop_threshold) && stop_threshold > 0.0, "~avoidance/stop_threshold",
-          stop_threshold, "a distance > 0 in metres");
-  require(std::isfinite(obstacle_threshold) && obstacle_threshold > stop_threshold,
-          "~avoidance/obstacle_threshold", obstacle_threshold,
+  table().check(*this);
+  require(obstacle_threshold > stop_threshold, "~avoidance/obstacle_threshold", obstacle_threshold,
           "a distance in metres above stop_threshold");
-  require(std::isfinite(side_threshold) && side_threshold > 0.0, "~avoidance/side_threshold",
-          side_threshold, "a distance > 0 in metres");
-  require(std::isfinite(turn_rate) && turn_rate > 0.0, "~avoidance/turn_rate", turn_rate,
-          "a yaw rate > 0 in rad/s");
 }
 
 SectorRanges scanSectors(const std::vector<float>& ranges, double angle_min, double angle_increment,

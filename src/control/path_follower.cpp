@@ -82,20 +82,28 @@ PursuitTarget purePursuit(const std::deque<Eigen::Vector2d>& path, const Pose2& 
   return target;
 }
 
+const ParamTable<PathFollowParams>& PathFollowParams::table() {
+  using P = PathFollowParams;
+  static const ParamTable<P> t =
+      ParamTable<P>()
+          .add("path_spacing", &P::path_spacing, "m", "Minimum spacing of stored path points.",
+               Range::above(0.0))
+          .add("max_path_points", &P::max_path_points, "", "Path buffer size.", Range::atLeast(2))
+          .add("lookahead", &P::lookahead, "m", "Pure-pursuit lookahead distance.",
+               Range::above(0.0))
+          .add("reached_radius", &P::reached_radius, "m",
+               "A path point this close to the robot is dropped.", Range::above(0.0))
+          .add("turn_gain", &P::turn_gain, "1/s",
+               "Yaw rate per rad when turning in place towards a goal behind.", Range::above(0.0));
+  return t;
+}
+
 void PathFollowParams::load(const ParamSource& p) {
-  p.param("path_spacing", path_spacing, path_spacing);
-  p.param("max_path_points", max_path_points, max_path_points);
-  p.param("lookahead", lookahead, lookahead);
-  p.param("reached_radius", reached_radius, reached_radius);
-  p.param("turn_gain", turn_gain, turn_gain);
+  table().load(p, *this);
 }
 
 void PathFollowParams::validate() const {
-  require(path_spacing > 0.0, "~path_spacing", path_spacing, "a spacing > 0 in metres");
-  require(max_path_points >= 2, "~max_path_points", max_path_points, "a count >= 2");
-  require(lookahead > 0.0, "~lookahead", lookahead, "a distance > 0 in metres");
-  require(reached_radius > 0.0, "~reached_radius", reached_radius, "a distance > 0 in metres");
-  require(turn_gain > 0.0, "~turn_gain", turn_gain, "a gain > 0 in 1/s");
+  table().check(*this);
 }
 
 PathFollowLaw::PathFollowLaw(const PathFollowParams& params, const VelocityLawParams& law)

@@ -9,6 +9,20 @@
 namespace radio_follow {
 namespace control {
 
+const ParamTable<PidGains>& PidGains::table() {
+  static const ParamTable<PidGains> t =
+      ParamTable<PidGains>()
+          .add("kp", &PidGains::kp, "", "Proportional gain.", Range::atLeast(0.0))
+          .add("ki", &PidGains::ki, "", "Integral gain.", Range::atLeast(0.0))
+          .add("kd", &PidGains::kd, "", "Derivative gain.", Range::atLeast(0.0))
+          .add("integral_limit", &PidGains::integral_limit, "",
+               "|ki * integral| never exceeds this (anti-windup), output units.",
+               Range::atLeast(0.0))
+          .add("derivative_time_constant", &PidGains::derivative_time_constant, "s",
+               "Low-pass on the derivative term; 0 = unfiltered.", Range::atLeast(0.0));
+  return t;
+}
+
 void PidGains::validate(const std::string& prefix) const {
   require(std::isfinite(kp) && kp >= 0.0, prefix + ".kp", kp, "a finite gain >= 0");
   require(std::isfinite(ki) && ki >= 0.0, prefix + ".ki", ki, "a finite gain >= 0");

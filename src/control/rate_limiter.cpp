@@ -9,16 +9,23 @@
 namespace radio_follow {
 namespace control {
 
+const ParamTable<MotionLimits>& MotionLimits::table() {
+  static const ParamTable<MotionLimits> t =
+      ParamTable<MotionLimits>()
+          .add("max_linear", &MotionLimits::max_linear, "m/s", "Speed limit.", Range::above(0.0))
+          .add("max_angular", &MotionLimits::max_angular, "rad/s", "Yaw-rate limit.",
+               Range::above(0.0))
+          .add("max_linear_accel", &MotionLimits::max_linear_accel, "m/s^2", "Speeding up.",
+               Range::above(0.0))
+          .add("max_linear_decel", &MotionLimits::max_linear_decel, "m/s^2",
+               "Slowing down (safety stops bypass it).", Range::above(0.0))
+          .add("max_angular_accel", &MotionLimits::max_angular_accel, "rad/s^2",
+               "Yaw acceleration.", Range::above(0.0));
+  return t;
+}
+
 void MotionLimits::validate() const {
-  const auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
-  require(positive(max_linear), "~max_linear", max_linear, "a speed > 0 in m/s");
-  require(positive(max_angular), "~max_angular", max_angular, "a yaw rate > 0 in rad/s");
-  require(positive(max_linear_accel), "~max_linear_accel", max_linear_accel,
-          "an acceleration > 0 in m/s^2");
-  require(positive(max_linear_decel), "~max_linear_decel", max_linear_decel,
-          "a deceleration > 0 in m/s^2");
-  require(positive(max_angular_accel), "~max_angular_accel", max_angular_accel,
-          "an angular acceleration > 0 in rad/s^2");
+  table().check(*this);
 }
 
 double RateLimiter::update(double request, double dt) {

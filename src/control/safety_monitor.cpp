@@ -11,25 +11,28 @@
 namespace radio_follow {
 namespace control {
 
-void SafetyParams::validate() const {
+const ParamTable<SafetyParams>& SafetyParams::table() {
   // Physical bounds, not just signs: a stop distance below a UWB module's own error (a
   // few cm, Table 3.1) is no stop at all, and a freshness timeout of minutes means a
   // dead sensor keeps the robot driving on its last word.
-  require(std::isfinite(safe_distance) && safe_distance >= kMinSafeDistance &&
-              safe_distance <= kMaxSafeDistance,
-          "~safe_distance", safe_distance,
-          "a distance in [" + paramValueString(kMinSafeDistance) + ", " +
-              paramValueString(kMaxSafeDistance) + "] m");
-  require(std::isfinite(estimate_timeout) && estimate_timeout > 0.0 &&
-              estimate_timeout <= kMaxFreshnessTimeout,
-          "~estimate_timeout", estimate_timeout,
-          "a timeout in (0, " + paramValueString(kMaxFreshnessTimeout) + "] s");
-  require(
-      std::isfinite(range_timeout) && range_timeout > 0.0 && range_timeout <= kMaxFreshnessTimeout,
-      "~range_timeout", range_timeout,
-      "a timeout in (0, " + paramValueString(kMaxFreshnessTimeout) + "] s");
-  require(std::isfinite(hold_time) && hold_time >= 0.0 && hold_time <= kMaxHoldTime, "~hold_time",
-          hold_time, "a time in [0, " + paramValueString(kMaxHoldTime) + "] s");
+  static const ParamTable<SafetyParams> t =
+      ParamTable<SafetyParams>()
+          .add("safe_distance", &SafetyParams::safe_distance, "m",
+               "Stop below this range (calibrated per calibrate_ranges).",
+               Range::closed(kMinSafeDistance, kMaxSafeDistance))
+          .add("estimate_timeout", &SafetyParams::estimate_timeout, "s",
+               "Stop when the estimate is older.", Range::aboveUpTo(0.0, kMaxFreshnessTimeout))
+          .add("range_timeout", &SafetyParams::range_timeout, "s",
+               "Forget a silent range source; all silent = stop.",
+               Range::aboveUpTo(0.0, kMaxFreshnessTimeout))
+          .add("hold_time", &SafetyParams::hold_time, "s",
+               "A stop condition must be clear this long to resume.",
+               Range::closed(0.0, kMaxHoldTime));
+  return t;
+}
+
+void SafetyParams::validate() const {
+  table().check(*this);
 }
 
 SafetyMonitor::SafetyMonitor(const SafetyParams& params) : params_(params) {}

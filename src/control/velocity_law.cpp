@@ -11,29 +11,44 @@
 namespace radio_follow {
 namespace control {
 
+const ParamTable<VelocityLawParams>& VelocityLawParams::table() {
+  using P = VelocityLawParams;
+  static const ParamTable<P> t =
+      ParamTable<P>()
+          .add("follow_distance", &P::follow_distance, "m", "Desired gap to the target.",
+               Range::above(0.0))
+          .add("slowdown_distance", &P::slowdown_distance, "m",
+               "Beyond the follow distance the speed cap ramps up to max_linear over this.",
+               Range::above(0.0))
+          .add("closing_distance", &P::closing_distance, "m",
+               "Inside the follow distance the cap falls to zero over this.", Range::above(0.0))
+          .add("stop_margin", &P::stop_margin, "m",
+               "Keep the nearest module this far beyond safe_distance.", Range::atLeast(0.0))
+          .add("feed_forward", &P::feed_forward, "",
+               "Fraction of the target's own speed added to the command.", Range::closed(0.0, 1.0))
+          .add("degraded_speed_factor", &P::degraded_speed_factor, "",
+               "Speed factor while the estimate is DEGRADED.", Range::closed(0.0, 1.0))
+          .add("allow_backwards", &P::allow_backwards, "",
+               "Drive backwards when the target stays behind (reversible robots only).")
+          .addScaled("backwards_angle_deg", &P::backwards_angle, kPi / 180.0, "deg",
+                     "|bearing| beyond this counts as behind.", Range::open(90.0, 180.0))
+          .add("backwards_cycles", &P::backwards_cycles, "",
+               "Consecutive behind cycles before the direction switches.", Range::atLeast(1))
+          .include(PidGains::table(), &P::linear, "linear_pid/")
+          .include(PidGains::table(), &P::angular, "angular_pid/");
+  return t;
+}
+
 void VelocityLawParams::validate() const {
-  require(std::isfinite(follow_distance) && follow_distance > 0.0, "~follow_distance",
-          follow_distance, "a distance > 0 in metres");
-  require(std::isfinite(slowdown_distance) && slowdown_distance > 0.0, "~slowdown_distance",
-          slowdown_distance, "a distance > 0 in metres");
-  require(std::isfinite(closing_distance) && closing_distance > 0.0 &&
-              closing_distance < follow_distance,
-          "~closing_distance", closing_distance, "a distance in (0, follow_distance) in metres");
+  table().check(*this);
+  require(closing_distance < follow_distance, "~closing_distance", closing_distance,
+          "a distance in (0, follow_distance) in metres");
   require(follow_distance - closing_distance >= safe_distance, "~follow_distance", follow_distance,
           "at least safe_distance + closing_distance (" + paramValueString(safe_distance) + " + " +
               paramValueString(closing_distance) +
               " m): the law must stop the robot before the safety stop trips");
-  require(std::isfinite(stop_margin) && stop_margin >= 0.0, "~stop_margin", stop_margin,
-          "a distance >= 0 in metres");
-  require(degraded_speed_factor >= 0.0 && degraded_speed_factor <= 1.0, "~degraded_speed_factor",
-          degraded_speed_factor, "a factor in [0, 1]");
-  require(std::isfinite(feed_forward) && feed_forward >= 0.0 && feed_forward <= 1.0,
-          "~feed_forward", feed_forward, "a fraction in [0, 1]");
   require(std::isfinite(max_linear) && max_linear > 0.0, "~max_linear", max_linear,
           "a speed > 0 in m/s");
-  require(backwards_angle > kPi / 2.0 && backwards_angle < kPi, "~backwards_angle", backwards_angle,
-          "an angle in (pi/2, pi) rad");
-  require(backwards_cycles >= 1, "~backwards_cycles", backwards_cycles, "a count >= 1");
   linear.validate("~linear_pid");
   angular.validate("~angular_pid");
 }
@@ -140,19 +155,7 @@ LawOutput VelocityLaw::step(const TargetPolar& target, double dt) {
 
 VelocityLawParams loadVelocityLawParams(const ParamSource& p, const CommandPipelineParams& common) {
   VelocityLawParams law;
-  p.param("follow_distance", law.follow_distance, law.follow_distance);
-  p.param("slowdown_distance", law.slowdown_distance, law.slowdown_distance);
-  p.param("closing_distance", law.closing_distance, law.closing_distance);
-  p.param("stop_margin", law.stop_margin, law.stop_margin);
-  p.param("feed_forward", law.feed_forward, law.feed_forward);
-  p.param("degraded_speed_factor", law.degraded_speed_factor, law.degraded_speed_factor);
-  p.param("allow_backwards", law.allow_backwards, law.allow_backwards);
-  double backwards_deg = rad2deg(law.backwards_angle);
-  p.param("backwards_angle_deg", backwards_deg, backwards_deg);
-  law.backwards_angle = deg2rad(backwards_deg);
-  p.param("backwards_cycles", law.backwards_cycles, law.backwards_cycles);
-  loadPidGains(p, "linear_pid", law.linear);
-  loadPidGains(p, "angular_pid", law.angular);
+  VelocityLawParams::table().load(p, law);
   return lawWithCommon(law, common);
 }
 

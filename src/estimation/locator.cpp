@@ -48,7 +48,7 @@ std::optional<Eigen::Vector3d> mirrorImage(const ObservationSet& obs, const Eige
 
 void validateLoss(const LossConfig& loss, const std::string& name) {
   require(loss.type == LossType::kNone || (std::isfinite(loss.scale) && loss.scale > 0.0),
-          name + "_scale", loss.scale, "a positive loss scale (in sigmas)");
+          "~" + name + "_scale", loss.scale, "a positive loss scale (in sigmas)");
 }
 
 SolverConfig solverConfig(const LocatorConfig& c) {
@@ -81,36 +81,15 @@ const LocatorConfig& validated(const LocatorConfig& config) {
 }  // namespace
 
 void LocatorConfig::validate() const {
-  auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
-  require(std::isfinite(height) && std::abs(height) < 100.0, "target_height", height,
-          "a finite height in metres");
-  require(positive(range_sigma), "range_sigma", range_sigma, "a positive sigma in metres");
-  require(positive(tdoa_sigma), "tdoa_sigma", tdoa_sigma, "a positive sigma in metres");
-  require(positive(azimuth_sigma), "azimuth_sigma_deg", rad2deg(azimuth_sigma),
-          "a positive sigma in degrees");
-  require(positive(elevation_sigma), "elevation_sigma_deg", rad2deg(elevation_sigma),
-          "a positive sigma in degrees");
+  table().check(*this);
+  // Beyond the table's bounds: a loss needs a scale, gating a probability above 1/2.
   validateLoss(range_loss, "range_loss");
   validateLoss(tdoa_loss, "tdoa_loss");
   validateLoss(bearing_loss, "bearing_loss");
-  require(positive(max_age), "max_age", max_age, "a positive age in seconds");
-  require(aoa.rssi_window >= 1, "aoa_rssi_window", aoa.rssi_window, "at least 1");
-  require(aoa.vote_window >= 1, "aoa_vote_window", aoa.vote_window, "at least 1");
-  require(positive(process_noise), "process_noise", process_noise, "a positive noise");
-  require(positive(measurement_noise), "measurement_noise", measurement_noise,
-          "a positive variance in m^2");
   require(gate_probability == 0.0 || (gate_probability > 0.5 && gate_probability < 1.0),
-          "gate_probability", gate_probability, "0 (no gating) or a probability in (0.5, 1)");
-  require(max_consecutive_rejections >= 1, "max_consecutive_rejections", max_consecutive_rejections,
-          "at least 1");
-  require(positive(max_position_sigma), "max_position_sigma", max_position_sigma,
-          "a positive sigma in metres");
-  require(
-      std::isfinite(max_relative_sigma) && max_relative_sigma >= 0.0 && max_relative_sigma < 1.0,
-      "max_relative_sigma", max_relative_sigma, "a fraction of the distance in [0, 1)");
-  require(positive(default_range), "default_range", default_range, "a positive range in metres");
-  require(std::isfinite(ambiguity_margin) && ambiguity_margin >= 0.0, "ambiguity_margin",
-          ambiguity_margin, "0 (no mirror test) or a positive cost margin");
+          "~gate_probability", gate_probability, "0 (no gating) or a probability in (0.5, 1)");
+  require(max_relative_sigma < 1.0, "~max_relative_sigma", max_relative_sigma,
+          "a fraction of the distance in [0, 1)");
 }
 
 Locator::Locator(const Layout& layout, const LocatorConfig& config)

@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Loading the locator's tuning from a ParamSource (the node's private parameters or a
-// YAML file): the names are the node's parameters (doc/nodes/locator.md).
+// The locator's tuning as one parameter table (names are the node's parameters,
+// doc/nodes/locator.md): loading from ROS or YAML, bounds, live tuning and the docs'
+// coverage test all read it.
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
@@ -11,68 +14,96 @@ namespace radio_follow {
 namespace estimation {
 namespace {
 
-LossConfig loadLoss(const ParamSource& nh, const std::string& name, const LossConfig& def) {
-  std::string type = toString(def.type);
-  LossConfig loss = def;
-  nh.param(name, type, type);
-  nh.param(name + "_scale", loss.scale, loss.scale);
-  loss.type = parseLossType(type, "~" + name);
-  return loss;
+/// The choices of an enum, named as its toString() names them.
+template <typename E>
+std::vector<std::pair<std::string, E>> named(std::initializer_list<E> values) {
+  std::vector<std::pair<std::string, E>> choices;
+  for (const E v : values) {
+    choices.emplace_back(toString(v), v);
+  }
+  return choices;
+}
+
+const ParamTable<LossConfig>& lossTable() {
+  static const ParamTable<LossConfig> t =
+      ParamTable<LossConfig>()
+          .addChoice(
+              "", &LossConfig::type,
+              named({LossType::kNone, LossType::kHuber, LossType::kSoftL1, LossType::kCauchy}),
+              "Robust loss of the residuals.")
+          .add("_scale", &LossConfig::scale, "sigma", "Where the loss starts, in sigmas.",
+               Range::above(0.0));
+  return t;
+}
+
+const ParamTable<AoaSelectorConfig>& aoaTable() {
+  static const ParamTable<AoaSelectorConfig> t =
+      ParamTable<AoaSelectorConfig>()
+          .addChoice("aoa_selection", &AoaSelectorConfig::mode,
+                     named({AoaSelectionMode::kRssi, AoaSelectionMode::kExternal,
+                            AoaSelectionMode::kAllInFov}),
+                     "Which AoA boards' bearings the solve uses.")
+          .add("aoa_rssi_window", &AoaSelectorConfig::rssi_window, "",
+               "RSSI values per board the selection averages.", Range::atLeast(1))
+          .add("aoa_vote_window", &AoaSelectorConfig::vote_window, "",
+               "Epochs the board vote runs over.", Range::atLeast(1));
+  return t;
 }
 
 }  // namespace
 
-void LocatorConfig::load(const ParamSource& nh) {
-  LocatorConfig& c = *this;
-  std::string mode = c.planar ? "2d" : "3d";
-  nh.param("mode", mode, mode);
-  require(mode == "2d" || mode == "3d", "~mode", mode, "2d or 3d");
-  c.planar = mode == "2d";
-  nh.param("target_height", c.height, c.height);
-  nh.param("range_sigma", c.range_sigma, c.range_sigma);
-  nh.param("tdoa_sigma", c.tdoa_sigma, c.tdoa_sigma);
-  double az_deg = rad2deg(c.azimuth_sigma);
-  double el_deg = rad2deg(c.elevation_sigma);
-  nh.param("azimuth_sigma_deg", az_deg, az_deg);
-  nh.param("elevation_sigma_deg", el_deg, el_deg);
-  c.azimuth_sigma = deg2rad(az_deg);
-  c.elevation_sigma = deg2rad(el_deg);
-  nh.param("use_elevation", c.use_elevation, c.use_elevation);
-  c.range_loss = loadLoss(nh, "range_loss", c.range_loss);
-  c.tdoa_loss = loadLoss(nh, "tdoa_loss", c.tdoa_loss);
-  c.bearing_loss = loadLoss(nh, "bearing_loss", c.bearing_loss);
-  nh.param("max_age", c.max_age, c.max_age);
+const ParamTable<LocatorConfig>& LocatorConfig::table() {
+  using C = LocatorConfig;
+  static const ParamTable<C> t =
+      ParamTable<C>()
+          .addChoice("mode", &C::planar,
+                     std::vector<std::pair<std::string, bool>>{{"2d", true}, {"3d", false}},
+                     "2d: the target on the plane z = target_height; 3d: z estimated.")
+          .add("target_height", &C::height, "m", "Height of the target's tags (2d mode).",
+               Range::open(-100.0, 100.0))
+          .add("range_sigma", &C::range_sigma, "m", "TWR range standard deviation.",
+               Range::above(0.0))
+          .add("tdoa_sigma", &C::tdoa_sigma, "m",
+               "TDoA difference standard deviation when a message carries none.", Range::above(0.0))
+          .addScaled("azimuth_sigma_deg", &C::azimuth_sigma, kPi / 180.0, "deg",
+                     "AoA azimuth standard deviation.", Range::above(0.0))
+          .addScaled("elevation_sigma_deg", &C::elevation_sigma, kPi / 180.0, "deg",
+                     "AoA elevation standard deviation.", Range::above(0.0))
+          .add("use_elevation", &C::use_elevation, "", "Use the boards' elevation angles.")
+          .include(lossTable(), &C::range_loss, "range_loss")
+          .include(lossTable(), &C::tdoa_loss, "tdoa_loss")
+          .include(lossTable(), &C::bearing_loss, "bearing_loss")
+          .add("max_age", &C::max_age, "s", "Older measurements are dropped.", Range::above(0.0))
+          .include(aoaTable(), &C::aoa)
+          .addChoice("motion_model", &C::motion_model,
+                     named({MotionModel::kConstantPosition, MotionModel::kConstantVelocity}),
+                     "The Kalman filter's motion model.")
+          .add("process_noise", &C::process_noise, "", "The filter's process noise.",
+               Range::above(0.0))
+          .addChoice("measurement_covariance", &C::filter_uses_solver_covariance,
+                     std::vector<std::pair<std::string, bool>>{{"solver", true}, {"fixed", false}},
+                     "solver: R = the solver's covariance; fixed: R = measurement_noise * I.")
+          .add("measurement_noise", &C::measurement_noise, "m^2", "R with fixed covariance.",
+               Range::above(0.0))
+          .add("gate_probability", &C::gate_probability, "",
+               "Chi-square gate of the filter; 0 = no gating.", Range::closed(0.0, 1.0))
+          .add("max_consecutive_rejections", &C::max_consecutive_rejections, "",
+               "Gated solves in a row before the filter restarts.", Range::atLeast(1))
+          .add("ceres_covariance", &C::ceres_covariance, "",
+               "Covariance from Ceres instead of the Gauss-Newton approximation.")
+          .add("max_position_sigma", &C::max_position_sigma, "m",
+               "Largest position sigma still OK.", Range::above(0.0))
+          .add("max_relative_sigma", &C::max_relative_sigma, "",
+               "... or this fraction of the distance; 0 disables.", Range::closed(0.0, 1.0))
+          .add("ambiguity_margin", &C::ambiguity_margin, "",
+               "Mirror test margin (0.5 chi-square units); 0 disables.", Range::atLeast(0.0))
+          .add("default_range", &C::default_range, "m",
+               "Distance assumed along a bearing without a range.", Range::above(0.0));
+  return t;
+}
 
-  std::string selection = toString(c.aoa.mode);
-  nh.param("aoa_selection", selection, selection);
-  c.aoa.mode = parseAoaSelectionMode(selection, "~aoa_selection");
-  int rssi_window = static_cast<int>(c.aoa.rssi_window);
-  int vote_window = static_cast<int>(c.aoa.vote_window);
-  nh.param("aoa_rssi_window", rssi_window, rssi_window);
-  nh.param("aoa_vote_window", vote_window, vote_window);
-  require(rssi_window >= 1, "~aoa_rssi_window", rssi_window, "at least 1");
-  require(vote_window >= 1, "~aoa_vote_window", vote_window, "at least 1");
-  c.aoa.rssi_window = static_cast<std::size_t>(rssi_window);
-  c.aoa.vote_window = static_cast<std::size_t>(vote_window);
-
-  std::string model = toString(c.motion_model);
-  nh.param("motion_model", model, model);
-  c.motion_model = parseMotionModel(model, "~motion_model");
-  nh.param("process_noise", c.process_noise, c.process_noise);
-  std::string r_source = c.filter_uses_solver_covariance ? "solver" : "fixed";
-  nh.param("measurement_covariance", r_source, r_source);
-  require(r_source == "fixed" || r_source == "solver", "~measurement_covariance", r_source,
-          "fixed or solver");
-  c.filter_uses_solver_covariance = r_source == "solver";
-  nh.param("measurement_noise", c.measurement_noise, c.measurement_noise);
-  nh.param("gate_probability", c.gate_probability, c.gate_probability);
-  nh.param("max_consecutive_rejections", c.max_consecutive_rejections,
-           c.max_consecutive_rejections);
-  nh.param("ceres_covariance", c.ceres_covariance, c.ceres_covariance);
-  nh.param("max_position_sigma", c.max_position_sigma, c.max_position_sigma);
-  nh.param("max_relative_sigma", c.max_relative_sigma, c.max_relative_sigma);
-  nh.param("ambiguity_margin", c.ambiguity_margin, c.ambiguity_margin);
-  nh.param("default_range", c.default_range, c.default_range);
+void LocatorConfig::load(const ParamSource& source) {
+  table().load(source, *this);
 }
 
 }  // namespace estimation

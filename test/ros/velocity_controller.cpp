@@ -7,6 +7,7 @@
 #include <std_srvs/SetBool.h>
 
 #include <atomic>
+#include <mutex>
 
 #include "controller_test_utils.hpp"
 #include "radio_follow/TargetEstimate.h"
@@ -24,6 +25,15 @@ class Feeder {
       : estimate_pub_(nh.advertise<radio_follow::TargetEstimate>("target", 10)),
         range_pub_(nh.advertise<radio_follow::UwbRanges>("uwb_ranges", 10)),
         timer_(nh.createTimer(ros::Duration(0.05), &Feeder::tick, this)) {}
+  /// The spinner threads keep running after a failed ASSERT returns: stop the ticks
+  /// first, so a failure is reported instead of a publish on a destroyed publisher.
+  ~Feeder() {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    stopped_ = true;
+    timer_.stop();
+  }
+  Feeder(const Feeder&) = delete;
+  Feeder& operator=(const Feeder&) = delete;
 
   std::atomic<double> range{4.0};
   std::atomic<bool> send_estimates{true};
@@ -31,6 +41,10 @@ class Feeder {
 
  private:
   void tick(const ros::TimerEvent&) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (stopped_) {
+      return;
+    }
     const ros::Time now = ros::Time::now();
     if (send_estimates) {
       radio_follow::TargetEstimate e;
@@ -55,6 +69,8 @@ class Feeder {
     }
   }
 
+  std::mutex mutex_;
+  bool stopped_ = false;
   ros::Publisher estimate_pub_;
   ros::Publisher range_pub_;
   ros::Timer timer_;

@@ -42,13 +42,12 @@ struct CommandPipelineParams {
   /// layout's), `use_scan`, `scan_timeout`, the safety thresholds, the motion limits and
   /// `avoidance/*`. Absent keys keep their value.
   void load(const ParamSource& source, const Layout* layout);
+  /// The safety thresholds, the limits, avoidance/*, use_scan, scan_timeout,
+  /// calibrate_ranges and target_anchor_id.
+  static const ParamTable<CommandPipelineParams>& table();
   /// Throws ParamError naming the first unusable parameter.
   void validate() const;
 };
-
-/// Reads `<ns>/kp`, `ki`, `kd`, `integral_limit`, `derivative_time_constant` into `gains`
-/// (the output limit is set by the caller from its speed limits).
-void loadPidGains(const ParamSource& source, const std::string& ns, PidGains& gains);
 
 /// One command through the pipeline: its value, and the status that goes with it.
 struct PipelineResult {

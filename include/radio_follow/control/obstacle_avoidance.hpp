@@ -15,6 +15,8 @@ struct AvoidanceParams {
   double side_threshold = 0.4;      ///< sideObsThreshold, m: turn away from a side
   double turn_rate = 0.6;           ///< rad/s used when bending around an obstacle
 
+  /// Names with their `avoidance/` namespace, as the controllers read them.
+  static const ParamTable<AvoidanceParams>& table();
   void validate() const;
 };
 

@@ -69,6 +69,7 @@ struct PathFollowParams {
   double reached_radius = 0.3;  ///< m
   double turn_gain = 1.5;       ///< 1/s, turning in place towards a goal behind
 
+  static const ParamTable<PathFollowParams>& table();
   /// Reads the fields from their parameter names; absent keys keep their value.
   void load(const ParamSource& source);
   /// Throws ParamError naming the first unusable field.

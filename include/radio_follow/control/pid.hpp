@@ -3,6 +3,8 @@
 
 #include <string>
 
+#include "radio_follow/common/param_table.hpp"
+
 namespace radio_follow {
 namespace control {
 
@@ -19,6 +21,9 @@ struct PidGains {
   /// Output saturation (symmetric), output units.
   double output_limit = 1.0;
 
+  /// kp, ki, kd, integral_limit, derivative_time_constant (output_limit is the node's
+  /// speed limit, not a parameter).
+  static const ParamTable<PidGains>& table();
   /// Throws ParamError naming `prefix`.<field> for an unusable value.
   void validate(const std::string& prefix) const;
 };

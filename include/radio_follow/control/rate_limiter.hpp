@@ -3,6 +3,8 @@
 
 #include <string>
 
+#include "radio_follow/common/param_table.hpp"
+
 namespace radio_follow {
 namespace control {
 
@@ -23,6 +25,7 @@ struct MotionLimits {
   double max_linear_decel = 2.0;   ///< m/s^2, slowing down
   double max_angular_accel = 2.0;  ///< rad/s^2, both ways
 
+  static const ParamTable<MotionLimits>& table();
   /// Throws ParamError naming the first unusable field.
   void validate() const;
 };

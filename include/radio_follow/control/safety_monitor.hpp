@@ -4,6 +4,7 @@
 #include <map>
 #include <string>
 
+#include "radio_follow/common/param_table.hpp"
 #include "radio_follow/common/time_policy.hpp"
 #include "radio_follow/control/follower_state.hpp"
 #include "radio_follow/control/rate_limiter.hpp"
@@ -31,6 +32,8 @@ struct SafetyParams {
   /// Whether raw ranges are watched at all (false for AoA-only homing).
   bool watch_ranges = true;
 
+  /// The parameters (not watch_ranges, which the node derives): names, units, bounds.
+  static const ParamTable<SafetyParams>& table();
   void validate() const;
 };
 

@@ -51,6 +51,9 @@ struct VelocityLawParams {
   PidGains linear{1.0, 0.0, 0.0, 0.3, 0.2, 1.5};
   PidGains angular{1.5, 0.0, 0.1, 0.3, 0.1, 1.0};
 
+  /// The law's parameters (max_linear and safe_distance are the pipeline's, copied by
+  /// lawWithCommon), linear_pid/* and angular_pid/* included.
+  static const ParamTable<VelocityLawParams>& table();
   void validate() const;
 };
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "radio_follow/common/param_source.hpp"
+#include "radio_follow/common/param_table.hpp"
 #include "radio_follow/common/time_policy.hpp"
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/estimation/aoa_selector.hpp"
@@ -61,6 +62,8 @@ struct LocatorConfig {
   /// Reads the fields from their parameters (the locator node's names, e.g. `range_sigma`,
   /// `azimuth_sigma_deg`, `measurement_covariance`); absent keys keep their value.
   void load(const ParamSource& source);
+  /// The parameters, as the locator node names them.
+  static const ParamTable<LocatorConfig>& table();
   /// Throws ParamError naming the first invalid field (names match the ROS parameters).
   void validate() const;
 };

@@ -66,7 +66,7 @@ TEST(LocatorSetConfig, InvalidOrModeChangingConfigIsRefusedAndTheOldOneKept) {
     locator.setConfig(bad);
     FAIL() << "a negative sigma was accepted";
   } catch (const ParamError& e) {
-    EXPECT_EQ(e.name(), "range_sigma");
+    EXPECT_EQ(e.name(), "~range_sigma");
   }
   EXPECT_DOUBLE_EQ(locator.config().range_sigma, config.range_sigma);
   LocatorConfig three_d = config;

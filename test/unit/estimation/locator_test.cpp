@@ -224,7 +224,7 @@ TEST(LocatorConfig, ValidationNamesTheParameter) {
     config.validate();
     FAIL() << "expected ParamError";
   } catch (const ParamError& e) {
-    EXPECT_EQ(e.name(), "range_sigma");
+    EXPECT_EQ(e.name(), "~range_sigma");
   }
   config = LocatorConfig{};
   config.gate_probability = 1.0;

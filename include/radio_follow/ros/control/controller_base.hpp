@@ -49,8 +49,6 @@ struct ControllerCommonParams : control::CommandPipelineParams {
   void validate() const;
 };
 
-using control::loadPidGains;
-
 /// The ROS side of the command pipeline (control::CommandPipeline) shared by the three
 /// controllers: raw-range safety stop on its own thread (published from the range
 /// callback, not only at the next tick), enable service and topic, status on change, the
