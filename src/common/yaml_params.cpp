@@ -96,24 +96,13 @@ bool YamlParams::readAs(const std::string& name, T& out) const {
   return true;
 }
 
-bool YamlParams::read(const std::string& name, bool& out) const {
-  return readAs(name, out);
-}
-bool YamlParams::read(const std::string& name, int& out) const {
-  return readAs(name, out);
-}
-bool YamlParams::read(const std::string& name, double& out) const {
-  return readAs(name, out);
-}
-bool YamlParams::read(const std::string& name, std::string& out) const {
-  return readAs(name, out);
-}
-bool YamlParams::read(const std::string& name, std::vector<std::string>& out) const {
-  return readAs(name, out);
-}
-bool YamlParams::read(const std::string& name, std::vector<double>& out) const {
-  return readAs(name, out);
-}
+// The six types TypedParamSource reads (its overrides are inline in every user).
+template bool YamlParams::readAs(const std::string&, bool&) const;
+template bool YamlParams::readAs(const std::string&, int&) const;
+template bool YamlParams::readAs(const std::string&, double&) const;
+template bool YamlParams::readAs(const std::string&, std::string&) const;
+template bool YamlParams::readAs(const std::string&, std::vector<std::string>&) const;
+template bool YamlParams::readAs(const std::string&, std::vector<double>&) const;
 
 YAML::Node YamlParams::lookup(const std::string& name) const {
   return child(root_, name, 0);

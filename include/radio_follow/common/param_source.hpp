@@ -48,4 +48,28 @@ class ParamSource {
   virtual bool read(const std::string& name, std::vector<double>& out) const = 0;
 };
 
+/// The six typed reads of a ParamSource forwarded to one `readAs<T>(name, out)` template
+/// of `Derived` (CRTP): a source implements one function, not six.
+template <typename Derived>
+class TypedParamSource : public ParamSource {
+ protected:
+  bool read(const std::string& name, bool& out) const override { return self().readAs(name, out); }
+  bool read(const std::string& name, int& out) const override { return self().readAs(name, out); }
+  bool read(const std::string& name, double& out) const override {
+    return self().readAs(name, out);
+  }
+  bool read(const std::string& name, std::string& out) const override {
+    return self().readAs(name, out);
+  }
+  bool read(const std::string& name, std::vector<std::string>& out) const override {
+    return self().readAs(name, out);
+  }
+  bool read(const std::string& name, std::vector<double>& out) const override {
+    return self().readAs(name, out);
+  }
+
+ private:
+  const Derived& self() const { return static_cast<const Derived&>(*this); }
+};
+
 }  // namespace radio_follow

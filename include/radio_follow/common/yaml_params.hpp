@@ -15,7 +15,7 @@ namespace radio_follow {
 /// without a ROS master load a node's parameters with the node's own loading code, the
 /// same keys and the same strictness: wrong types and non-finite numbers throw, and
 /// requireAllKnown() refuses keys nobody read.
-class YamlParams : public ParamSource {
+class YamlParams : public TypedParamSource<YamlParams> {
  public:
   explicit YamlParams(YAML::Node root) : root_(std::move(root)) {}
   /// Loads a file; throws ParamError naming the file when it is not a readable mapping.
@@ -29,15 +29,8 @@ class YamlParams : public ParamSource {
   void requireAllKnown() const override;
   const YAML::Node& root() const { return root_; }
 
- protected:
-  bool read(const std::string& name, bool& out) const override;
-  bool read(const std::string& name, int& out) const override;
-  bool read(const std::string& name, double& out) const override;
-  bool read(const std::string& name, std::string& out) const override;
-  bool read(const std::string& name, std::vector<std::string>& out) const override;
-  bool read(const std::string& name, std::vector<double>& out) const override;
-
  private:
+  friend class TypedParamSource<YamlParams>;
   template <typename T>
   bool readAs(const std::string& name, T& out) const;
   YAML::Node lookup(const std::string& name) const;

@@ -124,24 +124,13 @@ bool ParamReader::readAs(const std::string& name, T& out) const {
   return true;
 }
 
-bool ParamReader::read(const std::string& name, bool& out) const {
-  return readAs(name, out);
-}
-bool ParamReader::read(const std::string& name, int& out) const {
-  return readAs(name, out);
-}
-bool ParamReader::read(const std::string& name, double& out) const {
-  return readAs(name, out);
-}
-bool ParamReader::read(const std::string& name, std::string& out) const {
-  return readAs(name, out);
-}
-bool ParamReader::read(const std::string& name, std::vector<std::string>& out) const {
-  return readAs(name, out);
-}
-bool ParamReader::read(const std::string& name, std::vector<double>& out) const {
-  return readAs(name, out);
-}
+// The six types TypedParamSource reads (its overrides are inline in every user).
+template bool ParamReader::readAs(const std::string&, bool&) const;
+template bool ParamReader::readAs(const std::string&, int&) const;
+template bool ParamReader::readAs(const std::string&, double&) const;
+template bool ParamReader::readAs(const std::string&, std::string&) const;
+template bool ParamReader::readAs(const std::string&, std::vector<std::string>&) const;
+template bool ParamReader::readAs(const std::string&, std::vector<double>&) const;
 
 bool ParamReader::getRaw(const std::string& name, XmlRpcValue& out) const {
   known_.insert(name);

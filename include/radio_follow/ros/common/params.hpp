@@ -21,7 +21,7 @@ namespace radio_follow {
 /// - every name read is remembered, so that requireAllKnown() can refuse the keys nobody
 ///   read (`_safe_distanse:=2.0`, a file meant for another node).
 /// The same loading code runs on a YamlParams (tools without a master).
-class ParamReader : public ParamSource {
+class ParamReader : public TypedParamSource<ParamReader> {
  public:
   explicit ParamReader(const ros::NodeHandle& private_nh);
 
@@ -39,15 +39,8 @@ class ParamReader : public ParamSource {
 
   const ros::NodeHandle& handle() const { return nh_; }
 
- protected:
-  bool read(const std::string& name, bool& out) const override;
-  bool read(const std::string& name, int& out) const override;
-  bool read(const std::string& name, double& out) const override;
-  bool read(const std::string& name, std::string& out) const override;
-  bool read(const std::string& name, std::vector<std::string>& out) const override;
-  bool read(const std::string& name, std::vector<double>& out) const override;
-
  private:
+  friend class TypedParamSource<ParamReader>;
   template <typename T>
   bool readAs(const std::string& name, T& out) const;
   std::string relative(const std::string& resolved) const;
