@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Decoder throughput, lines per second (items_per_second), for the serial drivers'
-// line formats, and the framer's byte throughput on a realistic stream.
+// line formats, and the byte throughput of the framer, and of the drivers' LineDriver
+// around it, on a realistic stream.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "radio_follow/drivers/dwm1001_decoder.hpp"
+#include "radio_follow/drivers/line_driver.hpp"
 #include "radio_follow/drivers/line_framer.hpp"
 #include "radio_follow/drivers/uudf_decoder.hpp"
 
@@ -67,28 +69,51 @@ void BM_UudfDecodeEvent(benchmark::State& state) {
 }
 BENCHMARK(BM_UudfDecodeEvent);
 
-// Framer + decoder on a stream cut into 64-byte chunks (USB CDC packet size).
-void BM_FramerAndDwmDecoder(benchmark::State& state) {
+// Feeds `feed(data, size, lines)` a stream of the two DWM output formats cut into 64-byte
+// chunks (USB CDC packet size); `lines` counts the lines decoded.
+template <typename Feed>
+void runDwmStream(benchmark::State& state, Feed feed) {
   std::string stream;
   for (int i = 0; i < 100; ++i) {
     stream += kDwmLines[i % 2] + "\r\n";
   }
-  LineFramer framer;
-  DwmMeasurement out;
   std::size_t lines = 0;
   for (auto _ : state) {
     for (std::size_t pos = 0; pos < stream.size(); pos += 64) {
-      const std::size_t n = std::min<std::size_t>(64, stream.size() - pos);
-      framer.feed(stream.data() + pos, n, 0.0, [&](std::string_view line, double) {
-        benchmark::DoNotOptimize(decodeDwmLine(line, out));
-        ++lines;
-      });
+      feed(stream.data() + pos, std::min<std::size_t>(64, stream.size() - pos), lines);
     }
   }
   state.SetItemsProcessed(static_cast<int64_t>(lines));
   state.SetBytesProcessed(static_cast<int64_t>(state.iterations() * stream.size()));
 }
+
+// Framer + decoder.
+void BM_FramerAndDwmDecoder(benchmark::State& state) {
+  LineFramer framer;
+  DwmMeasurement out;
+  runDwmStream(state, [&](const char* data, std::size_t size, std::size_t& lines) {
+    framer.feed(data, size, 0.0, [&](std::string_view line, double) {
+      benchmark::DoNotOptimize(decodeDwmLine(line, out));
+      ++lines;
+    });
+  });
+}
 BENCHMARK(BM_FramerAndDwmDecoder);
+
+// The drivers' own path: LineDriver (framer and the diagnostics' counters) + decoder +
+// the verdict counted, as dwm1001_driver runs it on its I/O thread.
+void BM_LineDriverAndDwmDecoder(benchmark::State& state) {
+  LineDriver driver(1024);
+  DwmMeasurement out;
+  runDwmStream(state, [&](const char* data, std::size_t size, std::size_t& lines) {
+    driver.onBytes(data, size, 0.0, [&](std::string_view line, double) {
+      const DwmLineStatus status = decodeDwmLine(line, out);
+      benchmark::DoNotOptimize(driver.count(verdictOf(status, DwmLineStatus::kMeasurement)));
+      ++lines;
+    });
+  });
+}
+BENCHMARK(BM_LineDriverAndDwmDecoder);
 
 }  // namespace
 

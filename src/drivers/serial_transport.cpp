@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/drivers/serial_transport.hpp"
 
-#include <algorithm>
 #include <boost/asio/post.hpp>
 #include <boost/asio/read.hpp>
 #include <boost/asio/write.hpp>
@@ -17,7 +16,7 @@ SerialTransport::SerialTransport(Options options, Callbacks callbacks)
       callbacks_(std::move(callbacks)),
       port_(io_),
       retry_timer_(io_),
-      backoff_(options_.initial_backoff) {}
+      backoff_(options_.initial_backoff, options_.max_backoff) {}
 
 SerialTransport::~SerialTransport() {
   stop(std::chrono::milliseconds(0));
@@ -107,7 +106,7 @@ void SerialTransport::tryOpen() {
   }
   ever_opened_ = true;
   reported_absent_ = false;
-  backoff_ = options_.initial_backoff;
+  backoff_.reset();
   state_ = State::kOpen;
   if (callbacks_.on_connected) {
     callbacks_.on_connected();
@@ -116,8 +115,7 @@ void SerialTransport::tryOpen() {
 }
 
 void SerialTransport::scheduleRetry() {
-  retry_timer_.expires_after(backoff_);
-  backoff_ = std::min(backoff_ * 2, options_.max_backoff);
+  retry_timer_.expires_after(backoff_.next());
   retry_timer_.async_wait([this](const boost::system::error_code& ec) {
     if (!ec) {
       tryOpen();

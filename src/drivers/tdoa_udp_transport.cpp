@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/drivers/tdoa_udp_transport.hpp"
 
-#include <algorithm>
 #include <boost/asio/ip/address.hpp>
 #include <boost/asio/post.hpp>
 #include <chrono>
@@ -13,6 +12,14 @@ namespace drivers {
 namespace asio = boost::asio;
 using asio::ip::udp;
 
+namespace {
+
+Backoff::Duration fromSeconds(double seconds) {
+  return std::chrono::duration_cast<Backoff::Duration>(std::chrono::duration<double>(seconds));
+}
+
+}  // namespace
+
 TdoaUdpTransport::TdoaUdpTransport(Config config, DatagramHandler on_datagram,
                                    ErrorHandler on_error)
     : config_(std::move(config)),
@@ -20,7 +27,7 @@ TdoaUdpTransport::TdoaUdpTransport(Config config, DatagramHandler on_datagram,
       on_error_(std::move(on_error)),
       socket_(io_),
       retry_timer_(io_),
-      backoff_(config_.initial_backoff) {}
+      backoff_(fromSeconds(config_.initial_backoff), fromSeconds(config_.max_backoff)) {}
 
 TdoaUdpTransport::~TdoaUdpTransport() {
   stop();
@@ -65,7 +72,7 @@ void TdoaUdpTransport::tryOpen() {
   }
   local_port_ = socket_.local_endpoint(ec).port();
   open_ = true;
-  backoff_ = config_.initial_backoff;
+  backoff_.reset();
   if (binds_++ > 0) {
     ++reconnects_;
   }
@@ -92,11 +99,9 @@ void TdoaUdpTransport::fail(const std::string& what) {
   open_ = false;
   boost::system::error_code ignored;
   socket_.close(ignored);
-  const double delay = backoff_;
-  backoff_ = std::min(backoff_ * 2.0, config_.max_backoff);
-  on_error_(what, delay);
-  retry_timer_.expires_after(std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-      std::chrono::duration<double>(delay)));
+  const Backoff::Duration delay = backoff_.next();
+  on_error_(what, std::chrono::duration<double>(delay).count());
+  retry_timer_.expires_after(delay);
   retry_timer_.async_wait([this](const boost::system::error_code& ec) {
     if (!ec) {
       tryOpen();

@@ -13,11 +13,13 @@
 #include <string>
 #include <thread>
 
+#include "radio_follow/drivers/backoff.hpp"
+
 namespace radio_follow::drivers {
 
 /// A serial device on its own Boost.Asio I/O thread, with an explicit reconnect state
 /// machine: Closed -> (open ok) Open -> (read error: unplug) Closed -> retry after a
-/// backoff that doubles from `initial_backoff` up to `max_backoff` while the device is
+/// Backoff that doubles from `initial_backoff` up to `max_backoff` while the device is
 /// absent. The path is re-resolved on every attempt, so a udev symlink that comes back
 /// pointing at a new tty node is picked up. The thread sleeps on a timer while the
 /// device is absent: a dead port never spins a core. No ROS, no logging: events go to
@@ -73,7 +75,7 @@ class SerialTransport {
   boost::asio::steady_timer retry_timer_;
   std::array<char, 4096> read_buffer_{};
   std::deque<std::string> write_queue_;  // I/O thread only
-  std::chrono::milliseconds backoff_;
+  Backoff backoff_;
   std::atomic<State> state_{State::kStopped};
   std::atomic<unsigned> reconnects_{0};
   bool ever_opened_ = false;

@@ -12,13 +12,15 @@
 #include <string>
 #include <thread>
 
+#include "radio_follow/drivers/backoff.hpp"
+
 namespace radio_follow {
 namespace drivers {
 
 /// Receives UDP datagrams on its own io_context thread and keeps the socket alive:
-/// any open/bind/receive error closes the socket and schedules a new attempt after an
-/// exponential backoff (initial_backoff doubling up to max_backoff; reset by a bind
-/// that succeeds). It never busy-waits and never logs; it reports through callbacks.
+/// any open/bind/receive error closes the socket and schedules a new attempt after a
+/// Backoff (initial_backoff doubling up to max_backoff; reset by a bind that succeeds). It never
+/// busy-waits and never logs; it reports through callbacks.
 class TdoaUdpTransport {
  public:
   struct Config {
@@ -65,7 +67,7 @@ class TdoaUdpTransport {
   boost::asio::ip::udp::endpoint sender_;
   std::array<std::uint8_t, 65536> buffer_{};
   std::thread thread_;
-  double backoff_;
+  Backoff backoff_;
   std::atomic<bool> open_{false};
   std::atomic<std::uint16_t> local_port_{0};
   std::atomic<std::uint64_t> binds_{0};

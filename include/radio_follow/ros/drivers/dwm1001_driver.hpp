@@ -3,85 +3,77 @@
 
 #include <ros/ros.h>
 
-#include <memory>
-#include <mutex>
-#include <optional>
 #include <string>
+#include <string_view>
 
 #include "radio_follow/UwbRanges.h"
 #include "radio_follow/UwbTagLocation.h"
-#include "radio_follow/drivers/delivery_queue.hpp"
-#include "radio_follow/drivers/driver_stats.hpp"
 #include "radio_follow/drivers/dwm1001_decoder.hpp"
 #include "radio_follow/drivers/dwm1001_shell.hpp"
-#include "radio_follow/drivers/line_framer.hpp"
-#include "radio_follow/drivers/serial_transport.hpp"
-#include "radio_follow/ros/drivers/driver_diagnostics.hpp"
+#include "radio_follow/drivers/serial_line_params.hpp"
 #include "radio_follow/ros/common/output_diagnostic.hpp"
 #include "radio_follow/ros/common/params.hpp"
+#include "radio_follow/ros/drivers/serial_line_driver.hpp"
 
 namespace radio_follow {
+
+/// The messages of one DWM1001 output line: built on the I/O thread, published on the
+/// delivery queue's.
+struct Dwm1001Output {
+  bool has_ranges = false;
+  UwbRanges ranges;
+  bool has_location = false;
+  UwbTagLocation location;
+};
 
 /// Driver for a Qorvo DWM1001 module in tag mode on its UART shell. Publishes
 /// `ranges` (UwbRanges) for every output line and `tag_location` (UwbTagLocation) when
 /// the line carried the module's own position. With `configure` it runs the shell
-/// dialogue (Dwm1001Shell) on every (re)connect and stops the stream on shutdown. The I/O
-/// thread decodes and queues; a DeliveryQueue thread publishes, so a burst is never lost
-/// silently: what does not fit is counted as dropped in the diagnostics.
-class Dwm1001DriverNode {
+/// dialogue (Dwm1001Shell) on every (re)connect and stops the stream on shutdown. Port,
+/// framing, counting, reconnects, diagnostics and the delivery queue are the
+/// QueuedSerialLineDriver's.
+class Dwm1001DriverNode : public QueuedSerialLineDriver<Dwm1001Output> {
  public:
-  struct Params {
-    std::string port;  ///< device path (udev symlink), required
-    int baud = 115200;
+  struct Params : drivers::SerialLineParams {
     bool configure = true;            ///< run the shell dialogue; false = only listen
     std::string output_mode = "lec";  ///< "lec" or "les"
     std::string tag_id;               ///< used when configure is false ("" = unknown)
     std::string frame_id;             ///< "" = "uwb_<tag id>"
     std::string network_frame_id = "uwb_network";
-    double reconnect_backoff = 1.0;  ///< s, longest wait between open attempts
-    double silence_timeout = 2.0;    ///< s
-    double shell_timeout = 2.0;      ///< s per dialogue step before it restarts
-    int max_line_length = 1024;      ///< bytes
+    double shell_timeout = 2.0;  ///< s per dialogue step before it restarts
 
     void load(const ParamReader& private_nh);
     void validate() const;
   };
 
   Dwm1001DriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh);
-  ~Dwm1001DriverNode();
+  ~Dwm1001DriverNode() override;
 
  private:
-  void onBytes(const char* data, std::size_t size);
-  void onConnected();
-  void onDisconnected(const std::string& reason);
-  /// The messages of one output line: built on the I/O thread, published on the queue's.
-  struct Outgoing {
-    bool has_ranges = false;
-    UwbRanges ranges;
-    bool has_location = false;
-    UwbTagLocation location;
-  };
+  Dwm1001DriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const Params& params);
 
-  void onLine(std::string_view line, double stamp);
-  void enqueue(double stamp);
-  void publish(Outgoing& out);
+  std::string onOpened(double now) override;
+  void onClosed() override;
+  std::string onLine(std::string_view line, double stamp) override;
+  std::string onPending(std::string_view pending, double now) override;
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) override;
+  void publish(Dwm1001Output& out) override;
+
+  void decode(std::string_view line, double stamp);
+  Dwm1001Output messages(double stamp) const;
   void onShellTimer(const ros::TimerEvent& event);
+  const std::string& tagId() const;
   std::string frameId() const;
 
   Params params_;
   ros::Publisher ranges_pub_;
   ros::Publisher location_pub_;
-  drivers::DriverStats stats_;
-  std::mutex mutex_;  // guards framer_, shell_, measurement_ (I/O thread vs timer)
-  drivers::LineFramer framer_;
+  OutputDiagnostic* ranges_output_ = nullptr;  // the base's, ticked by the delivery thread
+  OutputDiagnostic* location_output_ = nullptr;
+  // Guarded by mutex() (I/O thread vs shell timer and diagnostics):
   drivers::Dwm1001Shell shell_;
   drivers::DwmMeasurement measurement_;
-  std::unique_ptr<DriverDiagnostics> diagnostics_;
-  std::optional<OutputDiagnostic> ranges_diagnostic_;  // ticked by the queue's thread
-  std::optional<OutputDiagnostic> location_diagnostic_;
   ros::Timer shell_timer_;
-  std::unique_ptr<drivers::DeliveryQueue<Outgoing>> queue_;
-  std::unique_ptr<drivers::SerialTransport> transport_;
 };
 
 }  // namespace radio_follow
