@@ -15,12 +15,8 @@ namespace {
 
 /// The simulator's clock reads this at the scenario's start (stamps are never zero).
 constexpr double kClockStart = 1.0;
-/// Estimates older than this (s) count as missing in a sample (as the follow evaluator).
-constexpr double kEstimateMaxAge = 1.0;
 /// Seconds of odometry and ground truth kept (the TF buffer, the evaluator's history).
 constexpr double kHistory = 2.0;
-/// The controllers' default tf_timeout: the newest transform counts this far from a stamp.
-constexpr double kTfTimeout = 0.05;
 
 bool rateOk(double hz) {
   return std::isfinite(hz) && hz > 0.0 && hz <= 1000.0;
@@ -40,6 +36,8 @@ void ClosedLoopConfig::validate() const {
   require(rateOk(controller_rate), "controller rate", controller_rate, "a rate in (0, 1000] Hz");
   law.validate();
   path.validate();
+  require(std::isfinite(tf_timeout) && tf_timeout >= 0.0 && tf_timeout < 1.0, "~tf_timeout",
+          tf_timeout, "a timeout in [0, 1) seconds");
   require(rateOk(evaluator_rate), "evaluator rate", evaluator_rate, "a rate in (0, 1000] Hz");
   for (const SensorOutage& o : outages) {
     const bool known = std::any_of(layout.twr_modules.begin(), layout.twr_modules.end(),
@@ -114,12 +112,12 @@ ClosedLoopConfig loadClosedLoopConfig(const std::string& dir, const std::string&
   std::string odom_frame = "odom";
   p.param("odom_frame", odom_frame, odom_frame);
   c.feed_forward_from_odometry = !odom_frame.empty();
+  p.param("tf_timeout", c.tf_timeout, c.tf_timeout);
   if (controller == FollowController::kPathFollower) {
     c.path.load(p);
     p.allow("base_frame");
   }
-  for (const char* key :
-       {"cmd_vel_topic", "start_enabled", "layout_file", "range_topics", "tf_timeout", "law"}) {
+  for (const char* key : {"cmd_vel_topic", "start_enabled", "layout_file", "range_topics", "law"}) {
     p.allow(key);
   }
   p.requireAllKnown();
@@ -240,8 +238,8 @@ std::optional<Pose2> ClosedLoop::poseAt(double t) const {
   }
   if (t >= poses_.back().t) {
     // TF has nothing newer: the newest transform, when it is within tf_timeout.
-    return t - poses_.back().t <= kTfTimeout ? std::optional<Pose2>(poses_.back().pose)
-                                             : std::nullopt;
+    return t - poses_.back().t <= config_.tf_timeout ? std::optional<Pose2>(poses_.back().pose)
+                                                     : std::nullopt;
   }
   if (t < poses_.front().t) {
     return std::nullopt;
@@ -332,7 +330,7 @@ void ClosedLoop::sample(double now) {
   if (estimate_) {
     s.estimate_status = toString(estimate_->status);
     if (hasPosition(estimate_->status) && estimate_stamp_ <= now &&
-        now - estimate_stamp_ <= kEstimateMaxAge) {
+        now - estimate_stamp_ <= kSampleEstimateMaxAge) {
       // Compare with the truth closest to the estimate's stamp.
       const auto closest =
           std::min_element(truth_.begin(), truth_.end(), [&](const auto& a, const auto& b) {

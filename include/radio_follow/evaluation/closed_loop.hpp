@@ -48,6 +48,9 @@ struct ClosedLoopConfig {
   /// The velocity controller's speed feed-forward from the target's motion in the
   /// odometry frame (its `odom_frame` parameter non-empty).
   bool feed_forward_from_odometry = true;
+  /// The controller's tf_timeout: an estimate newer than the newest odometry pose is
+  /// placed with that pose when it is at most this much newer, s.
+  double tf_timeout = 0.05;
   FollowSettings metrics;
   double evaluator_rate = 20.0;  ///< Hz, as the follow evaluator samples
   std::vector<SensorOutage> outages;

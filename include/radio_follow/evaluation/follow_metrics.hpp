@@ -32,6 +32,10 @@ struct FollowSample {
   std::string estimate_status = "none";
 };
 
+/// An estimate older than this (s) counts as missing in a FollowSample (the follow
+/// evaluator node and the lockstep loop sample alike).
+constexpr double kSampleEstimateMaxAge = 1.0;
+
 /// What the experiments assert and the demo reports.
 struct FollowSettings {
   double follow_distance = 1.6;  ///< m

@@ -21,8 +21,6 @@
 namespace radio_follow {
 namespace {
 
-/// Estimates older than this (s) count as missing in the sample.
-constexpr double kEstimateMaxAge = 1.0;
 /// Seconds of ground truth kept to match estimates by stamp.
 constexpr double kTruthHistory = 2.0;
 
@@ -212,7 +210,8 @@ void FollowEvaluatorNode::onTick(const ros::TimerEvent& event) {
   const bool trusted =
       usable && time_.check(estimate_->header.stamp.toSec(), event.current_real.toSec()) ==
                     TimePolicy::Verdict::kFresh;
-  if (trusted && (event.current_real - estimate_->header.stamp).toSec() <= kEstimateMaxAge) {
+  if (trusted &&
+      (event.current_real - estimate_->header.stamp).toSec() <= evaluation::kSampleEstimateMaxAge) {
     // Compare with the truth closest to the estimate's stamp.
     const ros::Time stamp = estimate_->header.stamp;
     const auto closest = std::min_element(relative_history_.begin(), relative_history_.end(),
