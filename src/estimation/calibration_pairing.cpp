@@ -26,6 +26,14 @@ std::string flow(const YAML::Node& node) {
   return out.c_str();
 }
 
+/// require() for a value already rendered as YAML (require would quote it as a string).
+void requireYaml(bool ok, const std::string& name, const YAML::Node& node,
+                 const std::string& expected) {
+  if (!ok) {
+    throw ParamError(name, flow(node), expected);
+  }
+}
+
 double readSeconds(const YAML::Node& item, const std::string& key, const std::string& path) {
   const YAML::Node node = item[key];
   const std::string expected = "seconds from the recording's start, a finite number >= 0";
@@ -35,15 +43,15 @@ double readSeconds(const YAML::Node& item, const std::string& key, const std::st
   } catch (const YAML::Exception&) {
     throw ParamError(path + key, flow(node), expected);
   }
-  require(std::isfinite(value) && value >= 0.0, path + key, flow(node), expected);
+  requireYaml(std::isfinite(value) && value >= 0.0, path + key, node, expected);
   return value;
 }
 
 Eigen::Vector3d readPosition(const YAML::Node& item, const std::string& path) {
   const YAML::Node node = item["position"];
   const std::string expected = "[x, y, z] in the layout's fixed frame, 3 finite metres";
-  require(node.IsDefined() && node.IsSequence() && node.size() == 3, path + "position", flow(node),
-          expected);
+  requireYaml(node.IsDefined() && node.IsSequence() && node.size() == 3, path + "position", node,
+              expected);
   Eigen::Vector3d p;
   for (int k = 0; k < 3; ++k) {
     try {
@@ -52,7 +60,7 @@ Eigen::Vector3d readPosition(const YAML::Node& item, const std::string& path) {
       throw ParamError(path + "position", flow(node), expected);
     }
   }
-  require(p.allFinite(), path + "position", flow(node), expected);
+  requireYaml(p.allFinite(), path + "position", node, expected);
   return p;
 }
 
@@ -66,12 +74,12 @@ std::vector<TapePoint> parseTapePoints(const std::string& yaml_text, const std::
     throw ParamError("points", paramValueString(origin),
                      std::string("valid YAML (") + e.what() + ")");
   }
-  require(root.IsMap(), "points", paramValueString(origin),
+  require(root.IsMap(), "points", origin,
           "a YAML mapping with `points: [{position: [x, y, z], from: s, until: s}, ...]`");
   requireYamlKeys(root, {"points"}, "");
   const YAML::Node list = root["points"];
-  require(list.IsDefined() && list.IsSequence() && list.size() > 0, "points", flow(list),
-          "a non-empty list of {position: [x, y, z], from: s, until: s}");
+  requireYaml(list.IsDefined() && list.IsSequence() && list.size() > 0, "points", list,
+              "a non-empty list of {position: [x, y, z], from: s, until: s}");
   std::vector<TapePoint> points;
   for (std::size_t i = 0; i < list.size(); ++i) {
     const std::string path = "points[" + std::to_string(i) + "].";
