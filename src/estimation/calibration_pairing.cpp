@@ -5,8 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 #include "radio_follow/common/param_error.hpp"
@@ -17,20 +15,11 @@ namespace radio_follow {
 namespace estimation {
 namespace {
 
-std::string flow(const YAML::Node& node) {
-  if (!node.IsDefined() || node.IsNull()) {
-    return "(missing)";
-  }
-  YAML::Emitter out;
-  out << YAML::Flow << node;
-  return out.c_str();
-}
-
 /// require() for a value already rendered as YAML (require would quote it as a string).
 void requireYaml(bool ok, const std::string& name, const YAML::Node& node,
                  const std::string& expected) {
   if (!ok) {
-    throw ParamError(name, flow(node), expected);
+    throw ParamError(name, yamlValueString(node), expected);
   }
 }
 
@@ -41,7 +30,7 @@ double readSeconds(const YAML::Node& item, const std::string& key, const std::st
   try {
     value = node.IsDefined() && node.IsScalar() ? node.as<double>() : -1.0;
   } catch (const YAML::Exception&) {
-    throw ParamError(path + key, flow(node), expected);
+    throw ParamError(path + key, yamlValueString(node), expected);
   }
   requireYaml(std::isfinite(value) && value >= 0.0, path + key, node, expected);
   return value;
@@ -57,7 +46,7 @@ Eigen::Vector3d readPosition(const YAML::Node& item, const std::string& path) {
     try {
       p[k] = node[k].as<double>();
     } catch (const YAML::Exception&) {
-      throw ParamError(path + "position", flow(node), expected);
+      throw ParamError(path + "position", yamlValueString(node), expected);
     }
   }
   requireYaml(p.allFinite(), path + "position", node, expected);
@@ -111,13 +100,7 @@ std::vector<TapePoint> parseTapePoints(const std::string& yaml_text, const std::
 }
 
 std::vector<TapePoint> loadTapePointsFile(const std::string& path) {
-  std::ifstream file(path);
-  if (!file) {
-    throw ParamError("points", paramValueString(path), "a readable tape-points YAML file");
-  }
-  std::stringstream text;
-  text << file.rdbuf();
-  return parseTapePoints(text.str(), path);
+  return parseTapePoints(readConfigFile(path, "points", "a readable tape-points YAML file"), path);
 }
 
 CalibrationReference CalibrationReference::fromTrack(std::vector<TimedPosition> track,

@@ -6,13 +6,16 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/common/yaml_keys.hpp"
 #include "radio_follow/config/layout_writer.hpp"
 #include "radio_follow/ros/replay/calibration_bag.hpp"
 
@@ -106,56 +109,60 @@ double parseNumber(const std::string& flag, const std::string& text, const std::
 
 Options parse(int argc, char** argv) {
   Options o;
+  // Every flag but --help and --no-aoa takes one value.
+  using Setter = std::function<void(const std::string& flag, const std::string& value)>;
+  const std::map<std::string, Setter> flags = {
+      {"--bag", [&](const std::string&, const std::string& v) { o.bag = v; }},
+      {"--layout", [&](const std::string&, const std::string& v) { o.layout = v; }},
+      {"--out", [&](const std::string&, const std::string& v) { o.out = v; }},
+      {"--truth-topic", [&](const std::string&, const std::string& v) { o.truth_topic = v; }},
+      {"--points", [&](const std::string&, const std::string& v) { o.points = v; }},
+      {"--degree",
+       [&](const std::string& f, const std::string& v) {
+         const double d = parseNumber(f, v, "a whole number from 0 to 3");
+         if (d != std::floor(d) || d < 0 || d > 3) {
+           usage(f + " '" + v + "': expected a whole number from 0 to 3");
+         }
+         o.degree = static_cast<int>(d);
+       }},
+      {"--max-gap",
+       [&](const std::string& f, const std::string& v) {
+         o.max_gap = parseNumber(f, v, "seconds > 0");
+         if (o.max_gap <= 0.0) {
+           usage(f + " '" + v + "': expected seconds > 0");
+         }
+       }},
+      {"--min-samples",
+       [&](const std::string& f, const std::string& v) {
+         const double n = parseNumber(f, v, "a whole number >= 5");
+         if (n != std::floor(n) || n < 5) {
+           usage(f + " '" + v + "': expected a whole number >= 5");
+         }
+         o.min_samples = static_cast<std::size_t>(n);
+       }},
+      {"--uwb-topics",
+       [&](const std::string& f, const std::string& v) { o.uwb_topics = splitList(f, v); }},
+      {"--aoa-topics",
+       [&](const std::string& f, const std::string& v) { o.aoa_topics = splitList(f, v); }},
+  };
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) {
-        usage(a + " needs a value");
-      }
-      return argv[++i];
-    };
     if (a == "-h" || a == "--help") {
       std::cout << kUsage << "\n" << kHelp;
       std::exit(0);
-    } else if (a == "--bag") {
-      o.bag = value();
-    } else if (a == "--layout") {
-      o.layout = value();
-    } else if (a == "--out") {
-      o.out = value();
-    } else if (a == "--truth-topic") {
-      o.truth_topic = value();
-    } else if (a == "--points") {
-      o.points = value();
-    } else if (a == "--degree") {
-      const std::string text = value();
-      const double d = parseNumber(a, text, "a whole number from 0 to 3");
-      if (d != std::floor(d) || d < 0 || d > 3) {
-        usage(a + " '" + text + "': expected a whole number from 0 to 3");
-      }
-      o.degree = static_cast<int>(d);
-    } else if (a == "--max-gap") {
-      const std::string text = value();
-      o.max_gap = parseNumber(a, text, "seconds > 0");
-      if (o.max_gap <= 0.0) {
-        usage(a + " '" + text + "': expected seconds > 0");
-      }
-    } else if (a == "--min-samples") {
-      const std::string text = value();
-      const double n = parseNumber(a, text, "a whole number >= 5");
-      if (n != std::floor(n) || n < 5) {
-        usage(a + " '" + text + "': expected a whole number >= 5");
-      }
-      o.min_samples = static_cast<std::size_t>(n);
-    } else if (a == "--uwb-topics") {
-      o.uwb_topics = splitList(a, value());
-    } else if (a == "--aoa-topics") {
-      o.aoa_topics = splitList(a, value());
-    } else if (a == "--no-aoa") {
+    }
+    if (a == "--no-aoa") {
       o.aoa = false;
-    } else {
+      continue;
+    }
+    const auto flag = flags.find(a);
+    if (flag == flags.end()) {
       usage("unknown argument '" + a + "'");
     }
+    if (i + 1 >= argc) {
+      usage(a + " needs a value");
+    }
+    flag->second(a, argv[++i]);
   }
   if (o.bag.empty() || o.layout.empty() || o.out.empty()) {
     usage("--bag, --layout and --out are required");
@@ -167,16 +174,6 @@ Options parse(int argc, char** argv) {
     usage("--aoa-topics with --no-aoa: choose one");
   }
   return o;
-}
-
-std::string readFile(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) {
-    throw rf::ParamError("layout", rf::paramValueString(path), "a readable layout YAML file");
-  }
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 std::string coefficients(const std::vector<double>& c) {
@@ -217,6 +214,17 @@ void checkTopics(const Options& o, const rf::CalibrationBag& bag, const std::str
   }
 }
 
+/// Why sensor `i` of `count` was not fitted: with one topic per sensor (the layout's
+/// convention, or as many given), a silent topic says more than "0 samples".
+template <typename Calibration>
+std::string whyNotFitted(const Calibration& sensor, std::size_t i, std::size_t count,
+                         const std::vector<std::string>& topics, const rf::CalibrationBag& bag) {
+  if (topics.size() == count && bag.messages.at(topics[i]) == 0) {
+    return "no message on " + topics[i];
+  }
+  return sensor.error;
+}
+
 void printTable(const est::LayoutCalibration& c, const rf::Layout& layout,
                 const rf::CalibrationTopics& topics, const rf::CalibrationBag& bag) {
   std::printf("%-10s %7s %8s %11s %10s  %s\n", "module", "used", "rejected", "rms before",
@@ -229,11 +237,9 @@ void printTable(const est::LayoutCalibration& c, const rf::Layout& layout,
                   coefficients(m.fit->coefficients).c_str());
       continue;
     }
-    const std::string& topic = i < topics.uwb.size() ? topics.uwb[i] : "";
-    const bool silent = topics.uwb.size() == c.modules.size() && bag.messages.at(topic) == 0;
     std::printf("%-10s not fitted, keeps %s: %s\n", m.id.c_str(),
                 coefficients(layout.twr_modules[i].calibration).c_str(),
-                silent ? ("no message on " + topic).c_str() : m.error.c_str());
+                whyNotFitted(m, i, c.modules.size(), topics.uwb, bag).c_str());
   }
   if (c.boards.empty()) {
     return;
@@ -248,15 +254,14 @@ void printTable(const est::LayoutCalibration& c, const rf::Layout& layout,
                   rf::rad2deg(b.fit->residual_sigma), rf::rad2deg(b.fit->yaw_offset));
       continue;
     }
-    const std::string& topic = i < topics.aoa.size() ? topics.aoa[i] : "";
-    const bool silent = topics.aoa.size() == c.boards.size() && bag.messages.at(topic) == 0;
     std::printf("%-10s not fitted, keeps its rpy_deg: %s\n", b.id.c_str(),
-                silent ? ("no message on " + topic).c_str() : b.error.c_str());
+                whyNotFitted(b, i, c.boards.size(), topics.aoa, bag).c_str());
   }
 }
 
 int run(const Options& o) {
-  const std::string layout_text = readFile(o.layout);
+  const std::string layout_text =
+      rf::readConfigFile(o.layout, "layout", "a readable layout YAML file");
   const rf::Layout layout = rf::parseLayout(layout_text, o.layout);
   const rf::SensorTopics conventional = rf::conventionalTopics(layout);
   rf::CalibrationTopics topics;

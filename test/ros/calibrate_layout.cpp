@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/private_param.hpp"
 #include "../support/run_tool.hpp"
 #include "radio_follow/AoaBearing.h"
 #include "radio_follow/UwbRanges.h"
@@ -28,9 +29,7 @@ namespace rf = radio_follow;
 namespace {
 
 std::string param(const std::string& name) {
-  std::string value;
-  EXPECT_TRUE(ros::param::get("~" + name, value)) << name;
-  return value;
+  return rf::test::privateParam(name);
 }
 
 int runTool(const std::string& args, std::string& output) {

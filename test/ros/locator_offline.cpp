@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/private_param.hpp"
 #include "../support/run_tool.hpp"
 #include "radio_follow/common/yaml_params.hpp"
 #include "radio_follow/ros/locator/locator_node.hpp"
@@ -25,9 +26,7 @@ namespace rf = radio_follow;
 namespace {
 
 std::string param(const std::string& name) {
-  std::string value;
-  EXPECT_TRUE(ros::param::get("~" + name, value)) << name;
-  return value;
+  return rf::test::privateParam(name);
 }
 
 /// Runs the tool (built next to this test binary).
