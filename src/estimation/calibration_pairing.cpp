@@ -173,6 +173,10 @@ CalibrationSamples pairWithReference(const std::vector<CalibrationMeasurement>& 
       ++out.unknown_sensor;
       continue;
     }
+    if (!std::isfinite(m.value)) {
+      ++out.non_finite;
+      continue;
+    }
     Eigen::Vector3d tag;
     switch (reference.at(m.stamp, m.since_start, tag)) {
       case CalibrationReference::Lookup::kGap:

@@ -292,8 +292,10 @@ int run(const Options& o) {
     std::printf(", %zu tape points; %zu measurements outside every window", points.size(),
                 samples.outside_windows);
   }
-  std::printf(", %zu bearings outside the board's field of view, %zu of unknown sensors\n\n",
-              samples.outside_view, samples.unknown_sensor);
+  std::printf(
+      ", %zu bearings outside the board's field of view, %zu of unknown sensors, %zu "
+      "not finite\n\n",
+      samples.outside_view, samples.unknown_sensor, samples.non_finite);
 
   const est::LayoutCalibration c =
       est::fitLayoutCalibration(samples, layout, o.degree, o.min_samples, o.aoa);

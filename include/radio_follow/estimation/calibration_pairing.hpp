@@ -85,6 +85,7 @@ struct CalibrationSamples {
   std::size_t outside_windows = 0;  ///< tape points: not in any window
   std::size_t outside_view = 0;     ///< bearings with the tag outside the board's field of view
   std::size_t unknown_sensor = 0;   ///< sensor not in the layout
+  std::size_t non_finite = 0;       ///< NaN or infinite readings (one would void the fit)
 };
 
 /// True distance |tag - module| (3D, module position from the layout) and true azimuth

@@ -97,7 +97,8 @@ TEST(PairWithReference, TrueDistanceIs3dAndTrueAzimuthIsInTheBoardFrame) {
                                                   {Kind::kRange, "uwb_5722", 0.5, 0.0, 3.4},
                                                   {Kind::kBearing, "aoa_left", 0.6, 0.0, 0.1},
                                                   {Kind::kRange, "FFFF", 0.5, 0.0, 1.0},
-                                                  {Kind::kRange, "5722", 3.0, 0.0, 1.0}},
+                                                  {Kind::kRange, "5722", 3.0, 0.0, 1.0},
+                                                  {Kind::kRange, "5722", 0.5, 0.0, NAN}},
                                                  layout, r);
   ASSERT_EQ(s.ranges.at("5722").size(), 2u);  // by ID and by frame
   EXPECT_NEAR(s.ranges.at("5722")[0].truth, std::hypot(3.0, 1.0), 1e-12);
@@ -107,6 +108,7 @@ TEST(PairWithReference, TrueDistanceIs3dAndTrueAzimuthIsInTheBoardFrame) {
   EXPECT_NEAR(s.azimuths.at("left")[0].truth, -std::atan2(0.2, 2.9), 1e-12);
   EXPECT_EQ(s.unknown_sensor, 1u);
   EXPECT_EQ(s.gap_dropped, 1u);
+  EXPECT_EQ(s.non_finite, 1u);
 }
 
 TEST(PairWithReference, LeavesOutBearingsFromOutsideTheFieldOfView) {
