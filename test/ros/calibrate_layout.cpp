@@ -4,7 +4,9 @@
 // tool binary against a ground-truth topic and against tape points; the written layout
 // loads and holds the truth. Then the shipped simulator bag, and every refusal.
 #include <geometry_msgs/PointStamped.h>
+#include <geometry_msgs/PoseStamped.h>
 #include <gtest/gtest.h>
+#include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <rosbag/bag.h>
 
@@ -13,6 +15,7 @@
 #include <fstream>
 #include <random>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "../support/private_param.hpp"
@@ -216,6 +219,56 @@ TEST_F(CalibrateLayout, ASilentModuleKeepsItsCalibrationAndTheRestIsFitted) {
   const rf::Layout out = rf::loadLayoutFile(dir_ + "/out.yaml");
   EXPECT_EQ(out.twr_modules[1].calibration, layout_.twr_modules[1].calibration);
   EXPECT_NE(out.twr_modules[0].calibration, layout_.twr_modules[0].calibration);
+}
+
+/// Appends the walk as a motion-capture system would publish it: `T` (PoseStamped or
+/// Odometry) on `topic` at 100 Hz in `frame`.
+template <typename T>
+void appendMocap(const std::string& path, const std::string& topic, const std::string& frame,
+                 double seconds) {
+  rosbag::Bag bag(path, rosbag::bagmode::Append);
+  for (int step = 0; step < static_cast<int>(seconds * 100.0); ++step) {
+    const double t = 0.01 * step;
+    T m;
+    m.header.stamp = ros::Time(1000.0 + t);
+    m.header.frame_id = frame;
+    const Eigen::Vector3d p = walk(t);
+    geometry_msgs::Pose& pose = [&]() -> geometry_msgs::Pose& {
+      if constexpr (std::is_same_v<T, nav_msgs::Odometry>) {
+        return m.pose.pose;
+      } else {
+        return m.pose;
+      }
+    }();
+    pose.position.x = p.x();
+    pose.position.y = p.y();
+    pose.position.z = p.z();
+    pose.orientation.w = 1.0;
+    bag.write(topic, m.header.stamp, m);
+  }
+}
+
+TEST_F(CalibrateLayout, ReadsAMotionCaptureTopicInTheLayoutsFrameOnly) {
+  const std::string bag = dir_ + "/mocap.bag";
+  writeBag(bag, layout_, errors_, 120.0, false, walk);
+  appendMocap<geometry_msgs::PoseStamped>(bag, "/mocap/tag_pose", "base_link", 120.0);
+  appendMocap<nav_msgs::Odometry>(bag, "/mocap/tag_odom", "base_link", 120.0);
+  appendMocap<geometry_msgs::PoseStamped>(bag, "/mocap/tag_in_map", "map", 120.0);
+  for (const std::string topic : {"/mocap/tag_pose", "mocap/tag_odom"}) {
+    std::string output;
+    ASSERT_EQ(runTool(args(bag, "--no-aoa --truth-topic " + topic), output), 0) << output;
+    const rf::Layout out = rf::loadLayoutFile(dir_ + "/out.yaml");
+    EXPECT_NEAR(out.twr_modules[2].calibration[0], -errors_.bias[2] / (1.0 + errors_.slope[2]),
+                0.02)
+        << topic << "\n"
+        << output;
+  }
+  std::string output;
+  EXPECT_EQ(runTool(args(bag, "--truth-topic mocap/tag_in_map"), output), 1);
+  EXPECT_NE(output.find("/mocap/tag_in_map is in frame 'map', the layout's fixed frame is "
+                        "'base_link'"),
+            std::string::npos)
+      << output;
 }
 
 TEST_F(CalibrateLayout, OnTheShippedSimulatorBagEveryModuleImproves) {
