@@ -30,6 +30,15 @@ std::string readConfigFile(const std::string& path, const std::string& name,
   return text.str();
 }
 
+YAML::Node loadConfigYaml(const std::string& text, const std::string& name,
+                          const std::string& origin) {
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw ParamError(name, paramValueString(origin), std::string("valid YAML (") + e.what() + ")");
+  }
+}
+
 std::string yamlValueString(const YAML::Node& node) {
   return !node.IsDefined() || node.IsNull() ? "(missing)" : flow(node);
 }

@@ -231,13 +231,7 @@ const TdoaAnchor* Layout::findTdoaAnchor(const std::string& id) const {
 }
 
 Layout parseLayout(const std::string& yaml_text, const std::string& origin) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(yaml_text);
-  } catch (const YAML::Exception& e) {
-    throw ParamError("layout", paramValueString(origin),
-                     std::string("valid YAML (") + e.what() + ")");
-  }
+  YAML::Node root = loadConfigYaml(yaml_text, "layout", origin);
   if (!root.IsMap()) {
     throw ParamError("layout", paramValueString(origin),
                      "a YAML mapping with fixed_frame, target, "

@@ -56,13 +56,7 @@ Eigen::Vector3d readPosition(const YAML::Node& item, const std::string& path) {
 }  // namespace
 
 std::vector<TapePoint> parseTapePoints(const std::string& yaml_text, const std::string& origin) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(yaml_text);
-  } catch (const YAML::Exception& e) {
-    throw ParamError("points", paramValueString(origin),
-                     std::string("valid YAML (") + e.what() + ")");
-  }
+  YAML::Node root = loadConfigYaml(yaml_text, "points", origin);
   require(root.IsMap(), "points", origin,
           "a YAML mapping with `points: [{position: [x, y, z], from: s, until: s}, ...]`");
   requireYamlKeys(root, {"points"}, "");

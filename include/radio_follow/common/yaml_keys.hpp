@@ -20,6 +20,11 @@ void requireYamlKeys(const YAML::Node& map, const std::set<std::string>& allowed
 std::string readConfigFile(const std::string& path, const std::string& name,
                            const std::string& expected);
 
+/// The YAML document of a configuration file's text; throws ParamError(`name`, origin,
+/// "valid YAML (...)") with the parser's message when it is not YAML.
+YAML::Node loadConfigYaml(const std::string& text, const std::string& name,
+                          const std::string& origin);
+
 /// A YAML value as a ParamError message shows it: in flow style (`[1, 2]`, `{a: 1}`), or
 /// "(missing)" for an absent or null node.
 std::string yamlValueString(const YAML::Node& node);

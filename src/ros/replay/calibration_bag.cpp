@@ -13,6 +13,7 @@
 #include "radio_follow/AoaBearing.h"
 #include "radio_follow/UwbRanges.h"
 #include "radio_follow/common/param_keys.hpp"
+#include "radio_follow/ros/replay/bag_file.hpp"
 
 namespace radio_follow {
 namespace {
@@ -62,11 +63,7 @@ CalibrationBag loadCalibrationBag(const std::string& path, const Layout& layout,
                                   const CalibrationTopics& topics) {
   CalibrationBag data;
   rosbag::Bag bag;
-  try {
-    bag.open(path, rosbag::bagmode::Read);
-  } catch (const rosbag::BagException& e) {
-    throw std::runtime_error("cannot read bag '" + path + "': " + e.what());
-  }
+  openBagForReading(bag, path);
   rosbag::View everything(bag);
   for (const rosbag::ConnectionInfo* c : everything.getConnections()) {
     data.bag_topics[c->topic] = c->datatype;
