@@ -2,6 +2,7 @@
 #include "radio_follow/estimation/locator.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -73,6 +74,36 @@ KalmanConfig kalmanConfig(const LocatorConfig& c) {
   return k;
 }
 
+ParticleTrackerConfig trackerConfig(const LocatorConfig& c) {
+  ParticleTrackerConfig t;
+  t.filter.particles = static_cast<std::size_t>(c.particles);
+  t.filter.planar = c.planar;
+  t.filter.height = c.height;
+  t.filter.process_noise = c.process_noise;
+  t.range.sigma = c.range_sigma;
+  t.range.outlier_share = c.range_outlier_share;
+  t.range.outlier_length = c.range_outlier_length;
+  t.tdoa = t.range;
+  t.tdoa.one_sided = false;  // either anchor's path may be the long one
+  t.bearing.azimuth_sigma = c.azimuth_sigma;
+  t.bearing.elevation_sigma = c.elevation_sigma;
+  t.bearing.use_elevation = c.use_elevation;
+  t.bearing.outlier_share = c.bearing_outlier_share;
+  t.max_age = c.max_age;
+  t.ambiguity_margin = c.ambiguity_margin;
+  t.max_position_sigma = c.max_position_sigma;
+  t.max_relative_sigma = c.max_relative_sigma;
+  t.lost_sigma = c.lost_sigma;
+  t.default_range = c.default_range;
+  return t;
+}
+
+/// `p` (tracking frame) in the robot frame of `pose`.
+Eigen::Vector3d inRobotFrame(const Pose2& pose, const Eigen::Vector3d& p) {
+  const Eigen::Matrix3d r = Eigen::AngleAxisd(pose.yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  return r.transpose() * (p - Eigen::Vector3d(pose.x, pose.y, 0.0));
+}
+
 const LocatorConfig& validated(const LocatorConfig& config) {
   config.validate();
   return config;
@@ -98,6 +129,7 @@ Locator::Locator(const Layout& layout, const LocatorConfig& config)
       solver_(std::make_unique<PositionSolver>(solverConfig(config_))),
       selector_(layout.aoa_boards.size(), config_.aoa),
       filter_(kalmanConfig(config_)),
+      tracker_(layout, trackerConfig(config_)),
       ranges_(layout.twr_modules.size()),
       bearings_(layout.aoa_boards.size()) {
   init_config_.planar = config.planar;
@@ -113,6 +145,7 @@ bool Locator::setConfig(const LocatorConfig& config) {
   const bool selection_changed = config.aoa.mode != config_.aoa.mode ||
                                  config.aoa.rssi_window != config_.aoa.rssi_window ||
                                  config.aoa.vote_window != config_.aoa.vote_window;
+  const bool estimator_changed = config.estimator != config_.estimator;
   auto solver = std::make_unique<PositionSolver>(solverConfig(config));
   // Nothing below throws: the new tuning is applied entirely or not at all.
   config_ = config;
@@ -122,10 +155,18 @@ bool Locator::setConfig(const LocatorConfig& config) {
   }
   init_config_.height = config_.height;
   init_config_.default_range = config_.default_range;
+  tracker_.setConfig(trackerConfig(config_));
+  if (estimator_changed) {
+    tracker_.reset();
+    filter_.reset();
+    warm_.reset();
+    return false;
+  }
   return filter_.reconfigure(kalmanConfig(config_));
 }
 
-bool Locator::addRange(const std::string& module_id, double raw_range, double t) {
+bool Locator::addRange(const std::string& module_id, double raw_range, double t,
+                       const std::optional<Pose2>& pose) {
   const TwrModule* module = layout_.findTwrModule(module_id);
   if (module == nullptr || !std::isfinite(raw_range) || raw_range <= 0.0 ||
       raw_range > kMaxPlausibleRange || !std::isfinite(t)) {
@@ -136,11 +177,20 @@ bool Locator::addRange(const std::string& module_id, double raw_range, double t)
   slot.range = module->correctRange(raw_range);
   slot.t = t;
   slot.valid = slot.range > 0.0;
+  if (slot.valid && config_.estimator == Estimator::kParticle) {
+    TrackedMeasurement m;
+    m.kind = TrackedMeasurement::Kind::kRange;
+    m.t = t;
+    m.pose = pose;
+    m.sensor = static_cast<std::size_t>(module - layout_.twr_modules.data());
+    m.value = slot.range;
+    tracker_.add(m);
+  }
   return slot.valid;
 }
 
 bool Locator::addBearing(const std::string& board_id, double azimuth, double elevation, double rssi,
-                         double t) {
+                         double t, const std::optional<Pose2>& pose) {
   const AoaBoard* board = layout_.findAoaBoard(board_id);
   if (board == nullptr || !std::isfinite(azimuth) || !std::isfinite(elevation) ||
       !std::isfinite(t)) {
@@ -155,11 +205,21 @@ bool Locator::addBearing(const std::string& board_id, double azimuth, double ele
   slot.t = t;
   slot.valid = true;
   selector_.recordRssi(index, rssi);
+  if (config_.estimator == Estimator::kParticle) {
+    TrackedMeasurement m;
+    m.kind = TrackedMeasurement::Kind::kBearing;
+    m.t = t;
+    m.pose = pose;
+    m.sensor = index;
+    m.value = azimuth;
+    m.elevation = elevation;
+    tracker_.add(m);
+  }
   return true;
 }
 
 bool Locator::addTdoa(const std::string& anchor_a, const std::string& anchor_b, double difference,
-                      double variance, double t) {
+                      double variance, double t, const std::optional<Pose2>& pose) {
   const TdoaAnchor* a = layout_.findTdoaAnchor(anchor_a);
   const TdoaAnchor* b = layout_.findTdoaAnchor(anchor_b);
   if (a == nullptr || b == nullptr || a == b || !std::isfinite(difference) ||
@@ -185,6 +245,17 @@ bool Locator::addTdoa(const std::string& anchor_a, const std::string& anchor_b, 
       variance > 0.0 && std::isfinite(variance) ? std::sqrt(variance) : config_.tdoa_sigma;
   slot->t = t;
   slot->valid = true;
+  if (config_.estimator == Estimator::kParticle) {
+    TrackedMeasurement m;
+    m.kind = TrackedMeasurement::Kind::kTdoa;
+    m.t = t;
+    m.pose = pose;
+    m.sensor = ia;
+    m.sensor_b = ib;
+    m.value = difference;
+    m.sigma = slot->sigma;
+    tracker_.add(m);
+  }
   return true;
 }
 
@@ -276,6 +347,7 @@ LocatorEstimate Locator::update(double now) {
     tdoas_.clear();
     warm_.reset();
     filter_.reset();
+    tracker_.reset();
     forgetSide();
   }
   LocatorEstimate out;
@@ -322,6 +394,9 @@ LocatorEstimate Locator::update(double now) {
     candidates.push_back(c);
     out.bearings_fresh.push_back(i);
     out.bearing_angles.emplace_back(bearings_[i].azimuth, bearings_[i].elevation);
+  }
+  if (config_.estimator == Estimator::kParticle) {
+    return updateParticle(now, out);
   }
   std::optional<Eigen::Vector3d> believed;
   if (warm_ && warm_ranged_) {
@@ -427,6 +502,51 @@ LocatorEstimate Locator::update(double now) {
   if (!out.position.allFinite() || !out.velocity.allFinite() || !out.covariance.allFinite()) {
     ++stats_.non_finite;  // never hand a NaN to a controller; the next epoch starts cold
     return lose(out);
+  }
+  return out;
+}
+
+LocatorEstimate Locator::updateParticle(double now, LocatorEstimate out) {
+  const auto start = std::chrono::steady_clock::now();
+  const TrackerOutput track = tracker_.update(now);
+  stats_.last_solve_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ++stats_.solves;
+  out.bearings_used = out.bearings_fresh;  // the particle filter weighs every bearing
+  out.sources = track.sources;
+  out.in_odom = track.in_odom;
+  if (track.status == TargetStatus::kLost) {
+    out.status = TargetStatus::kLost;
+    ++stats_.lost;
+    return out;
+  }
+  out.stamp = track.stamp;
+  out.robot_pose = track.pose;
+  out.tracking_position = track.position;
+  out.tracking_velocity.head<2>() = track.velocity;
+  out.tracking_covariance = track.covariance;
+  const Eigen::Matrix3d rotation =
+      Eigen::AngleAxisd(track.pose.yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  out.position = inRobotFrame(track.pose, track.position);
+  out.velocity = rotation.transpose() * out.tracking_velocity;
+  out.covariance = rotation.transpose() * track.covariance * rotation;
+  out.alternative = inRobotFrame(track.pose, track.alternative);
+  out.hypotheses = track.hypotheses;
+  out.hypothesis_weight = track.hypothesis_weight;
+  out.status = track.status;
+  if (config_.planar) {
+    out.position.z() = config_.height;
+    out.alternative.z() = config_.height;
+  }
+  if (!out.position.allFinite() || !out.velocity.allFinite() || !out.covariance.allFinite()) {
+    ++stats_.non_finite;
+    tracker_.reset();
+    out.status = TargetStatus::kLost;
+    ++stats_.lost;
+    return out;
+  }
+  if (out.status == TargetStatus::kAmbiguous) {
+    ++stats_.ambiguous;
   }
   return out;
 }

@@ -56,6 +56,11 @@ const ParamTable<LocatorConfig>& LocatorConfig::table() {
   using C = LocatorConfig;
   static const ParamTable<C> t =
       ParamTable<C>()
+          .addChoice("estimator", &C::estimator,
+                     std::vector<std::pair<std::string, Estimator>>{
+                         {"particle", Estimator::kParticle}, {"solver", Estimator::kSolver}},
+                     "particle: every measurement at its stamp into a particle filter with a "
+                     "mirror hypothesis; solver: a Ceres solve per update and a Kalman filter.")
           .addChoice("mode", &C::planar,
                      std::vector<std::pair<std::string, bool>>{{"2d", true}, {"3d", false}},
                      "2d: the target on the plane z = target_height; 3d: z estimated.")
@@ -98,7 +103,18 @@ const ParamTable<LocatorConfig>& LocatorConfig::table() {
           .add("ambiguity_margin", &C::ambiguity_margin, "",
                "Mirror test margin (0.5 chi-square units); 0 disables.", Range::atLeast(0.0))
           .add("default_range", &C::default_range, "m",
-               "Distance assumed along a bearing without a range.", Range::above(0.0));
+               "Distance assumed along a bearing without a range.", Range::above(0.0))
+          .add("particles", &C::particles, "", "Particles of the main hypothesis (particle).",
+               Range::closed(50, 100000))
+          .add("range_outlier_share", &C::range_outlier_share, "",
+               "Share of ranges that are outliers, mostly long (particle).",
+               Range::open(0.0, 0.5))
+          .add("range_outlier_length", &C::range_outlier_length, "m",
+               "Mean excess of a long range outlier (particle).", Range::above(0.0))
+          .add("bearing_outlier_share", &C::bearing_outlier_share, "",
+               "Share of bearings that are reflections (particle).", Range::open(0.0, 0.5))
+          .add("lost_sigma", &C::lost_sigma, "m",
+               "Worst-axis sigma beyond which the track is lost (particle).", Range::above(0.0));
   return t;
 }
 

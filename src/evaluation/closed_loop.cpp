@@ -206,7 +206,7 @@ void ClosedLoop::feedSensors(const sim::StepEvents& events, double now) {
     if (silent(module.id, stamp)) {
       continue;
     }
-    locator_.addRange(module.id, e.range, stamp);
+    locator_.addRange(module.id, e.range, stamp, poseAt(stamp));
     // The controller watches the same ranges (uwb/<id>/ranges) for its safety stop.
     pipeline_.onRange(stamp, now, "uwb/" + module.id + "/ranges/" + module.id, module.id,
                       layout.target_anchor_id, e.range);
@@ -217,7 +217,8 @@ void ClosedLoop::feedSensors(const sim::StepEvents& events, double now) {
     if (silent(board.id, stamp)) {
       continue;
     }
-    locator_.addBearing(board.id, e.sample.azimuth, e.sample.elevation, e.sample.rssi, stamp);
+    locator_.addBearing(board.id, e.sample.azimuth, e.sample.elevation, e.sample.rssi, stamp,
+                        poseAt(stamp));
   }
   for (const sim::TdoaEvent& e : events.tdoa) {
     const std::size_t ref = config_.world.tdoa_reference;
@@ -226,7 +227,7 @@ void ClosedLoop::feedSensors(const sim::StepEvents& events, double now) {
     for (std::size_t i = 0; i < layout.tdoa_anchors.size(); ++i) {
       if (i != ref) {
         locator_.addTdoa(layout.tdoa_anchors[i].id, layout.tdoa_anchors[ref].id, e.differences[k++],
-                         variance, kClockStart + e.t);
+                         variance, kClockStart + e.t, poseAt(kClockStart + e.t));
       }
     }
   }

@@ -21,6 +21,14 @@ inline Layout uncalibratedLayout(const std::string& name) {
   return layout;
 }
 
+/// The default tuning with the solver estimator (Ceres per update + Kalman filter): the
+/// tests of that estimator's own behaviour (the mirror test, board selection, gating).
+inline estimation::LocatorConfig solverBackend() {
+  estimation::LocatorConfig config;
+  config.estimator = estimation::Estimator::kSolver;
+  return config;
+}
+
 /// Every module of the locator's layout reports its exact range to `truth` at time t.
 inline void feedRanges(estimation::Locator& locator, const Eigen::Vector3d& truth, double t) {
   for (const auto& m : locator.layout().twr_modules) {

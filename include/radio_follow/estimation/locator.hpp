@@ -11,19 +11,32 @@
 
 #include "radio_follow/common/param_source.hpp"
 #include "radio_follow/common/param_table.hpp"
+#include "radio_follow/common/pose2.hpp"
 #include "radio_follow/common/time_policy.hpp"
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/estimation/aoa_selector.hpp"
 #include "radio_follow/estimation/initializer.hpp"
 #include "radio_follow/estimation/kalman_filter.hpp"
+#include "radio_follow/estimation/particle_tracker.hpp"
 #include "radio_follow/estimation/position_solver.hpp"
 #include "radio_follow/estimation/target_status.hpp"
 
 namespace radio_follow {
 namespace estimation {
 
+/// How the position is estimated (doc/nodes/locator.md, "Estimators").
+enum class Estimator {
+  /// Every measurement at its stamp into a particle filter in the odometry frame, with a
+  /// mirror hypothesis (ParticleTracker). The default.
+  kParticle,
+  /// A Ceres solve of the newest measurement of each sensor per update, filtered by a
+  /// Kalman filter in the robot frame (the thesis's structure).
+  kSolver,
+};
+
 /// The locator's tuning (the sensor positions come from the Layout).
 struct LocatorConfig {
+  Estimator estimator = Estimator::kParticle;
   bool planar = true;                      ///< 2D mode: target on the plane z = height
   double height = 1.0;                     ///< m
   double range_sigma = 0.03;               ///< m
@@ -58,6 +71,16 @@ struct LocatorConfig {
   /// side by less than about 2 sigma), the data cannot tell the two apart: the estimate is
   /// AMBIGUOUS until a few epochs in a row have preferred one side by more. 0 disables.
   double ambiguity_margin = 2.0;
+  /// Particle estimator: particles of the main hypothesis (the mirror gets a quarter).
+  int particles = 500;
+  /// Share of ranges (and TDoA differences) that are outliers, mostly long (reflections).
+  double range_outlier_share = 0.02;
+  /// Mean excess of a long range outlier, m.
+  double range_outlier_length = 1.0;
+  /// Share of bearings that are reflections (any direction).
+  double bearing_outlier_share = 0.05;
+  /// Worst-axis sigma beyond which a ranged track is LOST and restarts, m.
+  double lost_sigma = 1.5;
 
   /// Reads the fields from their parameters (the locator node's names, e.g. `range_sigma`,
   /// `azimuth_sigma_deg`, `measurement_covariance`); absent keys keep their value.
@@ -83,6 +106,19 @@ struct LocatorEstimate {
   /// (azimuth, elevation) in the board frame of each entry of bearings_fresh, rad.
   std::vector<Eigen::Vector2d> bearing_angles;
   std::vector<std::size_t> bearings_used;
+  /// The particle estimator's view: the state in the tracking frame (the odometry frame
+  /// when the measurements came with poses, else the robot frame) at `stamp`.
+  bool in_odom = false;
+  Pose2 robot_pose;  ///< robot in the tracking frame at `stamp`
+  Eigen::Vector3d tracking_position = Eigen::Vector3d::Zero();
+  Eigen::Vector3d tracking_velocity = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d tracking_covariance = Eigen::Matrix3d::Zero();
+  /// Hypotheses the data allow (1; 2 when the mirror image holds probability; 0 = not
+  /// computed: the solver estimator, or LOST), the probability of `position`'s, and the
+  /// other one's position (robot frame).
+  int hypotheses = 0;
+  double hypothesis_weight = 1.0;
+  Eigen::Vector3d alternative = Eigen::Vector3d::Zero();
 };
 
 /// A range or distance difference beyond this is no measurement (a DWM1001C ranges to
@@ -112,13 +148,16 @@ class Locator {
 
   /// Raw (uncalibrated) range of TWR module `module_id`; false if the module is unknown
   /// or the range is not finite and positive.
-  bool addRange(const std::string& module_id, double raw_range, double t);
+  /// `pose`: the robot in the odometry frame at `t` (particle estimator: the track is
+  /// then kept in the odometry frame; give it for every measurement or for none).
+  bool addRange(const std::string& module_id, double raw_range, double t,
+                const std::optional<Pose2>& pose = std::nullopt);
   /// Bearing of board `board_id` (its id or frame_id) in the board frame.
   bool addBearing(const std::string& board_id, double azimuth, double elevation, double rssi,
-                  double t);
+                  double t, const std::optional<Pose2>& pose = std::nullopt);
   /// Distance difference |p - a| - |p - b| of anchors a and b; variance <= 0 uses tdoa_sigma.
   bool addTdoa(const std::string& anchor_a, const std::string& anchor_b, double difference,
-               double variance, double t);
+               double variance, double t, const std::optional<Pose2>& pose = std::nullopt);
 
   /// Applies new tuning without a restart (live tuning). Throws ParamError and keeps the
   /// old tuning when `config` is invalid or changes `mode` (2d/3d: the state's size).
@@ -133,6 +172,7 @@ class Locator {
 
   const LocatorStats& stats() const { return stats_; }
   const KalmanFilter& filter() const { return filter_; }
+  const ParticleTracker& tracker() const { return tracker_; }
   const Layout& layout() const { return layout_; }
   const LocatorConfig& config() const { return config_; }
 
@@ -157,6 +197,8 @@ class Locator {
   };
 
   bool fresh(Stamped& slot, double now);
+  /// The particle estimator's update (the slots only feed the diagnostics' lists).
+  LocatorEstimate updateParticle(double now, LocatorEstimate out);
   LocatorEstimate lose(LocatorEstimate estimate);
   /// The mirror test (LocatorConfig::ambiguity_margin): true when `solution` may as well
   /// be its mirror image. Updates the run of epochs that preferred this side.
@@ -169,6 +211,7 @@ class Locator {
   std::unique_ptr<PositionSolver> solver_;  // rebuilt by setConfig (it owns the losses)
   AoaSelector selector_;
   KalmanFilter filter_;
+  ParticleTracker tracker_;
   std::vector<RangeSlot> ranges_;
   std::vector<BearingSlot> bearings_;
   std::vector<TdoaSlot> tdoas_;

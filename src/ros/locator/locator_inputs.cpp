@@ -5,6 +5,19 @@
 
 namespace radio_follow {
 
+bool LocatorInputs::poseFor(const ros::Time& stamp, std::optional<Pose2>* pose) {
+  pose->reset();
+  if (!lookup_) {
+    return true;
+  }
+  *pose = lookup_(stamp);
+  const auto decision = placement_.decide(*pose, ros::Time::now().toSec());
+  if (decision == estimation::OdometryPlacement::Decision::kRobotFrame) {
+    pose->reset();
+  }
+  return decision != estimation::OdometryPlacement::Decision::kDrop;
+}
+
 std::size_t LocatorInputs::add(const UwbRanges& msg) {
   // The module is named by its ID; drivers started without one still set their frame.
   // IDs compare normalised (upper case), as the layout parser stores them: a layout
@@ -12,6 +25,10 @@ std::size_t LocatorInputs::add(const UwbRanges& msg) {
   // Layout::findTwrModule, normalises the module ID itself.)
   const std::string& module = msg.tag_id.empty() ? msg.header.frame_id : msg.tag_id;
   std::size_t refused = 0;
+  std::optional<Pose2> pose;
+  if (!poseFor(msg.header.stamp, &pose)) {
+    return 0;  // counted by the placement
+  }
   for (const auto& range : msg.ranges) {
     const std::string anchor = normalizeId(range.anchor_id);
     if (anchor != locator_.layout().target_anchor_id) {
@@ -19,7 +36,7 @@ std::size_t LocatorInputs::add(const UwbRanges& msg) {
       continue;
     }
     ++target_ranges_;
-    refused += !locator_.addRange(module, range.range, msg.header.stamp.toSec());
+    refused += !locator_.addRange(module, range.range, msg.header.stamp.toSec(), pose);
   }
   return refused;
 }
@@ -29,15 +46,23 @@ std::size_t LocatorInputs::add(const AoaBearing& msg) {
   if (!tag.empty() && normalizeId(msg.tag_id) != tag) {
     return 0;
   }
+  std::optional<Pose2> pose;
+  if (!poseFor(msg.header.stamp, &pose)) {
+    return 0;
+  }
   return !locator_.addBearing(msg.header.frame_id, msg.azimuth, msg.elevation, msg.rssi,
-                              msg.header.stamp.toSec());
+                              msg.header.stamp.toSec(), pose);
 }
 
 std::size_t LocatorInputs::add(const TdoaMeasurements& msg) {
   std::size_t refused = 0;
+  std::optional<Pose2> pose;
+  if (!poseFor(msg.header.stamp, &pose)) {
+    return 0;
+  }
   for (const auto& d : msg.differences) {
     refused += !locator_.addTdoa(d.anchor_a, d.anchor_b, d.distance_difference, d.variance,
-                                 msg.header.stamp.toSec());
+                                 msg.header.stamp.toSec(), pose);
   }
   return refused;
 }

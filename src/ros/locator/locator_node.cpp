@@ -39,6 +39,11 @@ TargetEstimate toMessage(const estimation::LocatorEstimate& estimate, const std:
   msg.sources = estimate.sources;
   msg.status = static_cast<std::uint8_t>(estimate.status);
   msg.solver_cost = estimate.solver_cost;
+  msg.hypotheses = static_cast<std::uint8_t>(estimate.hypotheses);
+  msg.hypothesis_weight = estimate.hypothesis_weight;
+  msg.alternative.x = estimate.alternative.x();
+  msg.alternative.y = estimate.alternative.y();
+  msg.alternative.z = estimate.alternative.z();
   return msg;
 }
 
@@ -53,7 +58,15 @@ LocatorNode::LocatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
   }
   layout_ = loadLayoutFile(params_.layout_file);  // validated: target anchor set with TWR
   locator_ = std::make_unique<estimation::Locator>(layout_, params_.locator);
-  inputs_ = std::make_unique<LocatorInputs>(*locator_);
+  if (params_.odom_frame.empty()) {
+    inputs_ = std::make_unique<LocatorInputs>(*locator_);
+  } else {
+    tf_buffer_ = std::make_unique<tf2_ros::Buffer>();
+    tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_);
+    inputs_ = std::make_unique<LocatorInputs>(
+        *locator_, [this](const ros::Time& stamp) { return odometryPose(stamp); });
+    target_odom_pub_ = nh.advertise<TargetEstimate>("target_odom", 10);
+  }
   if (params_.uwb_topics.empty() && params_.aoa_topics.empty() && params_.tdoa_topics.empty()) {
     const SensorTopics topics = conventionalTopics(layout_);
     params_.uwb_topics = topics.uwb;
@@ -109,6 +122,31 @@ LocatorNode::LocatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
   ROS_INFO("locator: %s mode, %zu TWR modules, %zu AoA boards, %zu TDoA anchors, %.1f Hz",
            params_.locator.planar ? "2D" : "3D", layout_.twr_modules.size(),
            layout_.aoa_boards.size(), layout_.tdoa_anchors.size(), params_.rate);
+}
+
+std::optional<Pose2> LocatorNode::odometryPose(const ros::Time& stamp) const {
+  geometry_msgs::TransformStamped t;
+  try {
+    t = tf_buffer_->lookupTransform(params_.odom_frame, layout_.fixed_frame, stamp);
+  } catch (const tf2::ExtrapolationException&) {
+    // Newer than the newest odometry (TF lags the drivers by a few ms): that one, when close.
+    try {
+      t = tf_buffer_->lookupTransform(params_.odom_frame, layout_.fixed_frame, ros::Time(0));
+    } catch (const tf2::TransformException&) {
+      return std::nullopt;
+    }
+    if (std::abs((stamp - t.header.stamp).toSec()) > params_.tf_tolerance) {
+      return std::nullopt;
+    }
+  } catch (const tf2::TransformException&) {
+    return std::nullopt;
+  }
+  const auto& q = t.transform.rotation;
+  Pose2 pose;
+  pose.x = t.transform.translation.x;
+  pose.y = t.transform.translation.y;
+  pose.yaw = std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
+  return pose;
 }
 
 template <typename Message>
@@ -236,6 +274,23 @@ void LocatorNode::publish(const estimation::LocatorEstimate& estimate, const ros
                               : ros::Time(std::max(0.0, estimate.stamp));
   // Always published, LOST included: a controller must hear that the target is gone.
   target_pub_.publish(toMessage(estimate, layout_.fixed_frame, stamp));
+  if (target_odom_pub_ && estimate.in_odom && estimate.status != estimation::TargetStatus::kLost) {
+    // The same estimate in the odometry frame, where the particle estimator tracks.
+    estimation::LocatorEstimate in_odom = estimate;
+    in_odom.position = estimate.tracking_position;
+    in_odom.velocity = estimate.tracking_velocity;
+    in_odom.covariance = estimate.tracking_covariance;
+    const double c = std::cos(estimate.robot_pose.yaw);
+    const double s = std::sin(estimate.robot_pose.yaw);
+    const Eigen::Vector3d& a = estimate.alternative;
+    in_odom.alternative = Eigen::Vector3d(estimate.robot_pose.x + c * a.x() - s * a.y(),
+                                          estimate.robot_pose.y + s * a.x() + c * a.y(), a.z());
+    TargetEstimate msg = toMessage(in_odom, params_.odom_frame, stamp);
+    // range and bearing stay relative to the robot, as the message defines them.
+    msg.range = estimate.position.head<2>().norm();
+    msg.bearing = std::atan2(estimate.position.y(), estimate.position.x());
+    target_odom_pub_.publish(msg);
+  }
   target_diagnostic_->tick(stamp);
 
   if (hasPosition(estimate.status)) {

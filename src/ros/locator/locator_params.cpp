@@ -16,6 +16,8 @@ void LocatorNode::Params::load(const ParamSource& nh) {
   nh.param("publish_tf", publish_tf, publish_tf);
   nh.param("input_timeout", input_timeout, input_timeout);
   nh.param("path_length", path_length, path_length);
+  nh.param("odom_frame", odom_frame, odom_frame);
+  nh.param("tf_tolerance", tf_tolerance, tf_tolerance);
 
   locator.load(nh);
 }
@@ -30,6 +32,8 @@ void LocatorNode::Params::validate() const {
           "~input_timeout", input_timeout, "seconds in (0, 600]");
   require(path_length >= 0 && path_length <= 100000, "~path_length", path_length,
           "a number of estimates in [0, 100000] (0 = no path)");
+  require(std::isfinite(tf_tolerance) && tf_tolerance >= 0.0 && tf_tolerance <= 1.0,
+          "~tf_tolerance", tf_tolerance, "seconds in [0, 1]");
   locator.validate();  // the core names its fields exactly like these private parameters
 }
 

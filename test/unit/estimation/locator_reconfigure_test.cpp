@@ -17,7 +17,7 @@ Layout spotTwr() {
 }
 
 TEST(LocatorSetConfig, NoiseChangesKeepTheTrack) {
-  LocatorConfig config;
+  LocatorConfig config = test::solverBackend();
   Locator locator(spotTwr(), config);
   const Eigen::Vector3d truth(-2.0, 3.0, config.height);
   feedRanges(locator, truth, 1.0);
@@ -40,7 +40,7 @@ TEST(LocatorSetConfig, NoiseChangesKeepTheTrack) {
 }
 
 TEST(LocatorSetConfig, MotionModelChangeRestartsTheFilter) {
-  LocatorConfig config;
+  LocatorConfig config = test::solverBackend();
   config.motion_model = MotionModel::kConstantPosition;  // the thesis's, to switch from
   Locator locator(spotTwr(), config);
   const Eigen::Vector3d truth(-2.0, 3.0, config.height);
@@ -57,7 +57,7 @@ TEST(LocatorSetConfig, MotionModelChangeRestartsTheFilter) {
 }
 
 TEST(LocatorSetConfig, InvalidOrModeChangingConfigIsRefusedAndTheOldOneKept) {
-  LocatorConfig config;
+  LocatorConfig config = test::solverBackend();
   config.motion_model = MotionModel::kConstantPosition;  // state size 2 in the plane
   Locator locator(spotTwr(), config);
   LocatorConfig bad = config;

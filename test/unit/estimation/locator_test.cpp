@@ -31,12 +31,12 @@ double headingError(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
 }
 
 TEST(Locator, NothingFreshIsLost) {
-  Locator locator(layoutFile("spot.yaml"), LocatorConfig{});
+  Locator locator(layoutFile("spot.yaml"), test::solverBackend());
   EXPECT_EQ(locator.update(1.0).status, TargetStatus::kLost);
 }
 
 TEST(Locator, ThreeRangesGiveAPositionThatGoesStale) {
-  LocatorConfig config;
+  LocatorConfig config = test::solverBackend();
   Locator locator(layoutFile("spot_twr.yaml"), config);
   const Eigen::Vector3d truth(-2.0, 3.0, config.height);
   feedRanges(locator, truth, 10.0);
@@ -53,7 +53,7 @@ TEST(Locator, ThreeRangesGiveAPositionThatGoesStale) {
 // Measurements stamped ahead of the clock never age: the locator kept publishing OK
 // estimates 80 s ahead with no input at all. Now they are dropped (and counted).
 TEST(Locator, MeasurementsFromTheFutureAreDroppedNotKeptFresh) {
-  LocatorConfig config;
+  LocatorConfig config = test::solverBackend();
   Locator locator(layoutFile("spot_twr.yaml"), config);
   const Eigen::Vector3d truth(-2.0, 3.0, config.height);
   feedRanges(locator, truth, 90.0);  // a clock 80 s ahead
@@ -65,7 +65,7 @@ TEST(Locator, MeasurementsFromTheFutureAreDroppedNotKeptFresh) {
 // A bag looped under /use_sim_time: the clock goes back; the locator starts over and
 // tracks on the new clock instead of freezing on slots stamped in its future.
 TEST(Locator, ClockJumpBackStartsOver) {
-  LocatorConfig config;
+  LocatorConfig config = test::solverBackend();
   Locator locator(layoutFile("spot_twr.yaml"), config);
   const Eigen::Vector3d truth(-2.0, 3.0, config.height);
   feedRanges(locator, truth, 50.0);
@@ -78,14 +78,14 @@ TEST(Locator, ClockJumpBackStartsOver) {
 }
 
 TEST(Locator, ImplausibleRangesAreRefused) {
-  Locator locator(layoutFile("spot_twr.yaml"), LocatorConfig{});
+  Locator locator(layoutFile("spot_twr.yaml"), test::solverBackend());
   EXPECT_FALSE(locator.addRange("5722", 1e154, 0.0));  // a long plain number from a device
   EXPECT_FALSE(locator.addRange("5722", kMaxPlausibleRange + 1.0, 0.0));
   EXPECT_EQ(locator.stats().invalid_measurements, 2u);
 }
 
 TEST(Locator, OneRangeAloneIsLost) {
-  Locator locator(layoutFile("spot_twr.yaml"), LocatorConfig{});
+  Locator locator(layoutFile("spot_twr.yaml"), test::solverBackend());
   ASSERT_TRUE(locator.addRange("5722", 3.0, 0.0));
   EXPECT_EQ(locator.update(0.0).status, TargetStatus::kLost);
   EXPECT_FALSE(locator.addRange("FFFF", 3.0, 0.0));
@@ -93,7 +93,7 @@ TEST(Locator, OneRangeAloneIsLost) {
 }
 
 TEST(Locator, CubeWithOneRangeIgnoresTheBoardBehind) {
-  LocatorConfig config;
+  LocatorConfig config = test::solverBackend();
   const Layout layout = layoutFile("cube.yaml");
   Locator locator(layout, config);
   const Eigen::Vector3d truth(4.0, 0.8, config.height);
@@ -122,7 +122,7 @@ TEST(Locator, CubeWithOneRangeIgnoresTheBoardBehind) {
 
 TEST(Locator, BearingOnlyIsHeadingOnly) {
   const Layout layout = layoutFile("cube.yaml");
-  Locator locator(layout, LocatorConfig{});
+  Locator locator(layout, test::solverBackend());
   const Eigen::Vector3d truth(1.0, 5.0, 1.0);
   LocatorEstimate e;
   for (std::size_t k = 0; k < kMinRssiToChoose; ++k) {
@@ -146,7 +146,7 @@ tdoa_anchors:
   - {id: d, position: [0.3, -0.3, 0.5]}
 )",
                                     "test");
-  LocatorConfig config;
+  LocatorConfig config = test::solverBackend();
   Locator locator(layout, config);
   const Eigen::Vector3d truth(-4.0, -2.0, config.height);
   auto diff = [&](int a, int b) {
@@ -172,7 +172,7 @@ twr_modules:
   - {id: "3", position: [-0.3, -0.25, 0.4], calibration: [-0.1, 1.0]}
 )",
                                     "test");
-  LocatorConfig config;
+  LocatorConfig config = test::solverBackend();
   Locator locator(layout, config);
   const Eigen::Vector3d truth(3.0, 1.0, config.height);
   for (const auto& m : layout.twr_modules) {
@@ -184,7 +184,7 @@ twr_modules:
 }
 
 TEST(Locator, TwoRangesNeedAWarmStart) {
-  LocatorConfig config;
+  LocatorConfig config = test::solverBackend();
   Locator locator(layoutFile("tracked.yaml"), config);
   const Eigen::Vector3d truth(3.0, -1.0, config.height);
   // Five epochs of four ranges: the data have told the sides apart (mirror test).
@@ -205,7 +205,7 @@ TEST(Locator, TwoRangesNeedAWarmStart) {
 // The same two ranges after a single epoch of four: nothing has confirmed the side yet,
 // and two circles cross twice.
 TEST(Locator, TwoRangesOfAnUnconfirmedTrackAreAmbiguous) {
-  LocatorConfig config;
+  LocatorConfig config = test::solverBackend();
   Locator locator(layoutFile("tracked.yaml"), config);
   const Eigen::Vector3d truth(3.0, -1.0, config.height);
   feedRanges(locator, truth, 0.0);
@@ -218,7 +218,7 @@ TEST(Locator, TwoRangesOfAnUnconfirmedTrackAreAmbiguous) {
 }
 
 TEST(LocatorConfig, ValidationNamesTheParameter) {
-  LocatorConfig config;
+  LocatorConfig config = test::solverBackend();
   config.range_sigma = 0.0;
   try {
     config.validate();
@@ -226,10 +226,10 @@ TEST(LocatorConfig, ValidationNamesTheParameter) {
   } catch (const ParamError& e) {
     EXPECT_EQ(e.name(), "~range_sigma");
   }
-  config = LocatorConfig{};
+  config = test::solverBackend();
   config.gate_probability = 1.0;
   EXPECT_THROW(config.validate(), ParamError);
-  config = LocatorConfig{};
+  config = test::solverBackend();
   config.range_loss = {LossType::kHuber, -1.0};
   EXPECT_THROW(Locator(layoutFile("spot.yaml"), config), ParamError);
 }
@@ -252,7 +252,7 @@ Layout collinearLayout() {
 }
 
 TEST(LocatorMirror, CollinearModulesAreAmbiguousAndStaySo) {
-  LocatorConfig config;
+  LocatorConfig config = test::solverBackend();
   Locator locator(collinearLayout(), config);
   const Eigen::Vector3d truth(2.0, 3.0, config.height);
   for (int k = 0; k < 20; ++k) {
@@ -267,7 +267,7 @@ TEST(LocatorMirror, CollinearModulesAreAmbiguousAndStaySo) {
 }
 
 TEST(LocatorMirror, OnTheModulesAxisBothSidesMeet) {
-  LocatorConfig config;
+  LocatorConfig config = test::solverBackend();
   Locator locator(collinearLayout(), config);
   const Eigen::Vector3d truth(3.0, 0.1, config.height);  // mirror 0.2 m away: the same answer
   feedRanges(locator, truth, 1.0);
@@ -277,14 +277,14 @@ TEST(LocatorMirror, OnTheModulesAxisBothSidesMeet) {
 }
 
 TEST(LocatorMirror, ZeroMarginDisablesTheTest) {
-  LocatorConfig config;
+  LocatorConfig config = test::solverBackend();
   config.ambiguity_margin = 0.0;
   Locator locator(collinearLayout(), config);
   feedRanges(locator, Eigen::Vector3d(2.0, 3.0, config.height), 1.0);
   EXPECT_EQ(locator.update(1.01).status, TargetStatus::kOk);
   EXPECT_THROW(
       [] {
-        LocatorConfig bad;
+        LocatorConfig bad = test::solverBackend();
         bad.ambiguity_margin = -1.0;
         bad.validate();
       }(),
@@ -295,7 +295,7 @@ TEST(LocatorMirror, ZeroMarginDisablesTheTest) {
 // four boards) is never ambiguous, on either side of the robot.
 TEST(LocatorMirror, ABearingDecides) {
   for (const double y : {3.0, -3.0}) {
-    LocatorConfig config;
+    LocatorConfig config = test::solverBackend();
     Locator locator(layoutFile("spot.yaml"), config);
     const Eigen::Vector3d truth(-1.0, y, config.height);
     for (int k = 0; k < 15; ++k) {  // the boards are chosen after 10 RSSI values each
@@ -319,7 +319,7 @@ TEST(LocatorMirror, ABearingDecides) {
 // ranges with the configured sigma of noise, 200 epochs: AMBIGUOUS throughout (a lucky run
 // of epochs preferring one side would stop the test from saying so).
 TEST(LocatorMirror, NoiseDoesNotConfirmASide) {
-  LocatorConfig config;
+  LocatorConfig config = test::solverBackend();
   Locator locator(collinearLayout(), config);
   const Eigen::Vector3d truth(-2.0, 3.0, config.height);
   std::mt19937 rng(7);

@@ -2,13 +2,18 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <map>
+#include <optional>
 #include <string>
+
+#include <ros/time.h>
 
 #include "radio_follow/AoaBearing.h"
 #include "radio_follow/TdoaMeasurements.h"
 #include "radio_follow/UwbRanges.h"
 #include "radio_follow/estimation/locator.hpp"
+#include "radio_follow/estimation/odometry_placement.hpp"
 
 namespace radio_follow {
 
@@ -18,7 +23,14 @@ namespace radio_follow {
 /// stamped with its message's header.
 class LocatorInputs {
  public:
+  /// The robot's odometry pose at a stamp (TF odom -> fixed frame), or nothing.
+  using PoseLookup = std::function<std::optional<Pose2>(const ros::Time& stamp)>;
+
   explicit LocatorInputs(estimation::Locator& locator) : locator_(locator) {}
+  /// With a lookup, every measurement is placed in the odometry frame at its stamp
+  /// (estimation::OdometryPlacement decides what happens without a pose).
+  LocatorInputs(estimation::Locator& locator, PoseLookup lookup)
+      : locator_(locator), lookup_(std::move(lookup)) {}
 
   /// Each returns how many entries the locator refused (unknown sensor, invalid value).
   std::size_t add(const UwbRanges& msg);
@@ -30,9 +42,15 @@ class LocatorInputs {
   /// Ranges to other anchors so far, by normalised anchor ID: with none to the target,
   /// the layout's target.uwb_anchor_id is probably wrong (the node warns).
   const std::map<std::string, std::size_t>& otherAnchors() const { return other_anchors_; }
+  const estimation::OdometryPlacement& placement() const { return placement_; }
 
  private:
+  /// The pose for a message stamped `stamp`; false: drop the message (TF gap).
+  bool poseFor(const ros::Time& stamp, std::optional<Pose2>* pose);
+
   estimation::Locator& locator_;
+  PoseLookup lookup_;
+  estimation::OdometryPlacement placement_;
   std::size_t target_ranges_ = 0;
   std::map<std::string, std::size_t> other_anchors_;
 };

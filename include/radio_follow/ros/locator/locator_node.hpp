@@ -4,7 +4,9 @@
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <nav_msgs/Path.h>
 #include <ros/ros.h>
+#include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_broadcaster.h>
+#include <tf2_ros/transform_listener.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include <memory>
@@ -45,6 +47,11 @@ class LocatorNode {
     double input_timeout = 3.0;
     /// Estimates kept in `target_path` (nav_msgs/Path); 0 = no path topic.
     int path_length = 200;
+    /// Odometry frame the particle estimator tracks in (TF odom_frame -> fixed frame at
+    /// each measurement's stamp); "" = the robot's own frame.
+    std::string odom_frame = "odom";
+    /// A stamp up to this much newer than the newest odometry TF uses that TF, s.
+    double tf_tolerance = 0.1;
     estimation::LocatorConfig locator;  ///< the core's tuning
 
     /// Reads the private parameters from `source`: the node's namespace (ParamReader) or
@@ -68,6 +75,8 @@ class LocatorNode {
   void noteInput(std::size_t index);
   /// Warns about silent inputs (rationed per input) and logs new measurement drops.
   void watchInputs(const ros::Time& now);
+  /// The robot's pose in odom_frame at `stamp` from TF, or nothing.
+  std::optional<Pose2> odometryPose(const ros::Time& stamp) const;
   void extendPath(const estimation::LocatorEstimate& estimate, const ros::Time& stamp);
   template <typename Message>
   void subscribe(ros::NodeHandle& nh, const std::string& topic,
@@ -80,6 +89,9 @@ class LocatorNode {
   std::unique_ptr<LocatorReconfigure> reconfigure_;  ///< live tuning, after the params load
   std::vector<ros::Subscriber> subscribers_;
   ros::Publisher target_pub_;
+  ros::Publisher target_odom_pub_;
+  std::unique_ptr<tf2_ros::Buffer> tf_buffer_;
+  std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
   ros::Publisher pose_pub_;
   ros::Publisher markers_pub_;
   ros::Publisher path_pub_;

@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace radio_follow {
+namespace estimation {
+
+/// A range or distance-difference likelihood with heavy tails (seed 001's robust
+/// measurement model; real UWB: doc/nodes/locator.md, "Particle filter"):
+///   l(e) = (1 - eps) N(e; 0, sigma^2) + eps [0.9 (e > 0) exp(-e / L) / L + 0.1 / (2 W)],
+/// e = measured - predicted. A reflection only ever makes a range longer, so most of the
+/// outlier mass is on the long side; the small two-sided floor keeps every particle
+/// alive under any measurement (no zero weights, no underflow).
+struct RangeLikelihood {
+  double sigma = 0.07;          ///< m
+  double outlier_share = 0.02;  ///< eps
+  double outlier_length = 1.0;  ///< L, mean excess of a long outlier, m
+  bool one_sided = true;        ///< false (TDoA: either anchor's path may be long): symmetric
+  double floor_width = 20.0;    ///< W, m
+
+  /// l(e), not normalised over the outlier floor's support.
+  double operator()(double error) const;
+};
+
+/// A bearing likelihood: von Mises in azimuth (and elevation), concentration
+/// 1 / sigma^2, mixed with a uniform share for reflections. A board cannot tell a tag in
+/// front from one behind its plane: for a particle behind the board the mirrored
+/// direction is predicted, with `behind_sigma_factor` times the sigma.
+struct BearingLikelihood {
+  double azimuth_sigma = 0.087;    ///< rad
+  double elevation_sigma = 0.17;   ///< rad
+  bool use_elevation = true;
+  double outlier_share = 0.05;     ///< reflections, from any direction
+  double field_of_view = 1.22;     ///< rad; beyond it (and behind) the sigma grows
+  double edge_sigma_factor = 6.0;  ///< sigma factor outside the field of view
+  double behind_sigma_factor = 6.0;
+};
+
+/// What one measurement told a filter: its marginal likelihood sum_i w_i l_i (the
+/// evidence the hypothesis bank compares) and the posterior probability that it was not
+/// an outlier (a filter whose particles no longer explain its inputs sees this drop).
+struct MeasurementFit {
+  double likelihood = 0.0;
+  double inlier = 0.0;
+};
+
+/// Constant-velocity particle filter of a point target (x, y, z, vx, vy) in a fixed
+/// tracking frame; z is a state only in 3D mode (a random walk). Weights are kept
+/// normalised; every `weight*` call multiplies them by one measurement's likelihood and
+/// returns the measurement's marginal likelihood sum_i w_i l_i (the evidence the
+/// hypothesis bank compares). Deterministic for a seed.
+class ParticleFilter {
+ public:
+  struct Config {
+    std::size_t particles = 500;
+    bool planar = true;
+    double height = 1.0;         ///< z of every particle in planar mode, m
+    double process_noise = 1.0;  ///< white-acceleration PSD per axis, m^2/s^3
+    double vertical_noise = 0.1; ///< 3D mode: z random-walk PSD, m^2/s
+    /// Resample (systematic) when the effective sample size falls below this share of N.
+    double resample_threshold = 0.5;
+    std::uint64_t seed = 1;
+  };
+
+  explicit ParticleFilter(const Config& config);
+
+  /// Particles at `positions` (cycled when fewer than N; a small spread is added) with
+  /// velocities ~ N(0, velocity_sigma^2) per axis, equal weights, clock at `t`.
+  void initialize(const std::vector<Eigen::Vector3d>& positions, double velocity_sigma, double t);
+  bool initialized() const { return initialized_; }
+  void reset() { initialized_ = false; }
+
+  /// Moves every particle to time t (constant velocity plus the exact discretisation of
+  /// white acceleration noise). Times before the filter's are ignored (see time()).
+  void predict(double t);
+  double time() const { return t_; }
+
+  MeasurementFit weightRange(const Eigen::Vector3d& module, double range,
+                             const RangeLikelihood& model);
+  MeasurementFit weightTdoa(const Eigen::Vector3d& anchor_a, const Eigen::Vector3d& anchor_b,
+                            double difference, const RangeLikelihood& model);
+  /// `rotation`: board -> tracking frame; azimuth/elevation in the board frame.
+  MeasurementFit weightBearing(const Eigen::Vector3d& board, const Eigen::Matrix3d& rotation,
+                       double azimuth, double elevation, const BearingLikelihood& model);
+
+  /// Systematic resampling when the effective sample size is below the threshold.
+  /// Returns true when it resampled.
+  bool resampleIfNeeded();
+  double effectiveSampleSize() const;
+
+  Eigen::Vector3d mean() const;
+  Eigen::Vector2d meanVelocity() const;
+  /// Position covariance (planar mode: zero z row and column), m^2.
+  Eigen::Matrix3d covariance() const;
+  /// Position-velocity covariance of the planar state (x, y, vx, vy).
+  Eigen::Matrix4d planarCovariance() const;
+
+  std::size_t size() const { return static_cast<std::size_t>(w_.size()); }
+  Eigen::Vector3d position(std::size_t i) const { return {x_[i], y_[i], z_[i]}; }
+  Eigen::Vector2d velocity(std::size_t i) const { return {vx_[i], vy_[i]}; }
+  double weight(std::size_t i) const { return w_[i]; }
+  /// N particles drawn (systematically) from this cloud: (position, velocity) pairs.
+  void draw(std::size_t count, std::vector<Eigen::Vector3d>* positions,
+            std::vector<Eigen::Vector2d>* velocities);
+  /// Zeroes the weight of every particle `keep` refuses and renormalises; returns the
+  /// share of the weight kept (0: nothing changed, no particle was kept).
+  double restrict(const std::function<bool(const Eigen::Vector3d&)>& keep);
+  /// Replaces the cloud by the given particles with equal weights, clock at t.
+  void assign(const std::vector<Eigen::Vector3d>& positions,
+              const std::vector<Eigen::Vector2d>& velocities, double t);
+
+  const Config& config() const { return config_; }
+
+ private:
+  /// Multiplies the weights by inlier + outlier likelihood and renormalises.
+  MeasurementFit applyLikelihood(const Eigen::ArrayXd& inlier, const Eigen::ArrayXd& outlier);
+  /// A standard normal draw (table lookup: the filter draws millions per second).
+  double normal();
+  std::uint64_t nextRandom();
+
+  Config config_;
+  bool initialized_ = false;
+  double t_ = 0.0;
+  Eigen::ArrayXd x_, y_, z_, vx_, vy_, w_;
+  std::vector<double> normals_;
+  std::uint64_t state_;
+  Eigen::ArrayXd scratch_;
+};
+
+}  // namespace estimation
+}  // namespace radio_follow

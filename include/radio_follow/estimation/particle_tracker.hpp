@@ -1,0 +1,140 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <cstdint>
+#include <deque>
+#include <optional>
+#include <vector>
+
+#include "radio_follow/common/pose2.hpp"
+#include "radio_follow/config/layout.hpp"
+#include "radio_follow/estimation/particle_filter.hpp"
+#include "radio_follow/estimation/target_status.hpp"
+
+namespace radio_follow {
+namespace estimation {
+
+/// One calibrated measurement at its own stamp, with the robot's pose in the tracking
+/// frame at that stamp (none: the robot's own frame is the tracking frame).
+struct TrackedMeasurement {
+  enum class Kind { kRange, kBearing, kTdoa };
+  Kind kind = Kind::kRange;
+  double t = 0.0;
+  std::optional<Pose2> pose;
+  std::size_t sensor = 0;    ///< layout index: module, board, or anchor a
+  std::size_t sensor_b = 0;  ///< TDoA: anchor b
+  double value = 0.0;        ///< range, azimuth or distance difference
+  double elevation = 0.0;    ///< bearings
+  double sigma = 0.0;        ///< TDoA sigma, m
+};
+
+/// The particle backend's tuning (filled from LocatorConfig).
+struct ParticleTrackerConfig {
+  ParticleFilter::Config filter;
+  RangeLikelihood range;
+  RangeLikelihood tdoa;  ///< sigma per measurement
+  BearingLikelihood bearing;
+  double max_age = 0.5;                ///< s; measurements older than this are dropped
+  double ambiguity_margin = 2.0;       ///< nats; see ParticleTracker
+  double max_position_sigma = 0.5;     ///< m, worst axis for OK
+  double max_relative_sigma = 0.1;     ///< ... or this fraction of the distance
+  double lost_sigma = 3.0;             ///< m, worst axis beyond which the track is LOST
+  double default_range = 3.0;          ///< m, distance reported along a bearing alone
+};
+
+/// What the tracker reports, in the tracking frame and in the robot frame at `stamp`.
+struct TrackerOutput {
+  TargetStatus status = TargetStatus::kLost;
+  double stamp = 0.0;  ///< time of the newest measurement processed, s
+  bool in_odom = false;
+  Pose2 pose;  ///< robot in the tracking frame at `stamp`
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  ///< tracking frame
+  Eigen::Vector2d velocity = Eigen::Vector2d::Zero();  ///< tracking frame
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  int hypotheses = 0;                ///< 1, or 2 when the mirror hypothesis holds mass
+  double hypothesis_weight = 0.0;    ///< probability of `position`'s hypothesis
+  Eigen::Vector3d alternative = Eigen::Vector3d::Zero();  ///< tracking frame
+  std::uint8_t sources = 0;          ///< kinds processed within max_age
+};
+
+struct TrackerStats {
+  std::size_t processed = 0;
+  std::size_t late = 0;           ///< older than the filter's clock: applied at its time
+  std::size_t stale_dropped = 0;  ///< older than max_age when their turn came
+  std::size_t future_dropped = 0;
+  std::size_t cold_starts = 0;
+  std::size_t frame_switches = 0;  ///< odometry appeared or vanished: track restarted
+  std::size_t mirror_swaps = 0;    ///< the mirror hypothesis overtook the main one
+  std::size_t divergences = 0;     ///< the track stopped explaining its inputs: restarted
+  std::size_t resamples = 0;
+};
+
+/// Multi-hypothesis target tracker (issue 14, after seed 001's particle filter).
+///
+/// Every measurement is applied at its own stamp, in stamp order, to a constant-velocity
+/// particle filter in the tracking frame (odometry when poses are given), with
+/// heavy-tailed likelihoods. Nearly collinear ranging modules (Spot's three) allow a
+/// mirror solution across their axis that ranges alone cannot rule out, and a single
+/// filter that settled on the wrong side has no particle left on the right one. So a
+/// second, smaller filter tracks the mirror image of the first, the two accumulate the
+/// evidence of every measurement (log marginal likelihoods; a log Bayes factor D), and
+///   - the mirror replaces the main hypothesis as soon as the data prefer it by more than
+///     `ambiguity_margin` nats (D > margin): no lock on a wrong mirror;
+///   - while neither is preferred by that margin, the status is AMBIGUOUS;
+///   - when the mirror falls onto the main one (target on the modules' axis) it is
+///     re-seeded as the main one's mirror image.
+/// Cold starts sample the whole set of positions the fresh data allow (a ring around a
+/// module, rays along bearings) and split it by side.
+class ParticleTracker {
+ public:
+  ParticleTracker(const Layout& layout, const ParticleTrackerConfig& config);
+
+  /// Queues a measurement (applied by the next update in stamp order).
+  void add(const TrackedMeasurement& measurement);
+  /// Applies what is queued up to `now` and reports.
+  TrackerOutput update(double now);
+  void reset();
+  /// New tuning; keeps the track unless the particle count or mode changes.
+  void setConfig(const ParticleTrackerConfig& config);
+
+  bool tracking() const { return main_.initialized(); }
+  const TrackerStats& stats() const { return stats_; }
+  const ParticleFilter& mainFilter() const { return main_; }
+  /// log Bayes factor mirror : main (see the class comment).
+  double mirrorEvidence() const { return evidence_; }
+
+ private:
+  void apply(const TrackedMeasurement& m);
+  MeasurementFit weigh(ParticleFilter& filter, const TrackedMeasurement& m, const Pose2& pose) const;
+  bool coldStart(double now);
+  void seedMirror();
+  void maintainMirror();
+  bool mirrorDistinct() const;
+  Eigen::Vector3d mirrored(const Eigen::Vector3d& p, const Pose2& pose) const;
+  Eigen::Vector2d mirroredVelocity(const Eigen::Vector2d& v, const Pose2& pose) const;
+  bool onMainSide(const Eigen::Vector3d& p, const Pose2& pose) const;
+
+  Layout layout_;
+  ParticleTrackerConfig config_;
+  ParticleFilter main_;
+  ParticleFilter mirror_;
+  bool mirror_active_ = false;
+  double evidence_ = 0.0;
+  /// The modules' main axis in the robot frame (centroid and unit direction), when they
+  /// are nearly collinear.
+  std::optional<std::pair<Eigen::Vector2d, Eigen::Vector2d>> axis_;
+  std::vector<TrackedMeasurement> queue_;
+  std::deque<TrackedMeasurement> recent_;  ///< processed within max_age (cold starts)
+  bool in_odom_ = false;
+  Pose2 pose_;  ///< of the newest processed measurement
+  double last_position_fix_ = -1.0;  ///< newest range or TDoA applied
+  double last_kind_[3] = {-1.0, -1.0, -1.0};
+  /// Running mean of the inlier probability of the applied measurements (see apply()).
+  double fit_ = 1.0;
+  TrackerStats stats_;
+};
+
+}  // namespace estimation
+}  // namespace radio_follow

@@ -1,0 +1,302 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/estimation/particle_filter.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <utility>
+
+namespace radio_follow {
+namespace estimation {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+/// Entries of the normal table: enough that the draws of one step never repeat.
+constexpr std::size_t kNormalTable = 1u << 16;
+/// Spread added around the given positions at initialisation, m.
+constexpr double kInitialSpread = 0.02;
+
+/// The parts of a heavy-tailed range likelihood that do not depend on the error.
+struct RangeTerms {
+  double gauss;     ///< (1 - eps) / (sqrt(2 pi) sigma)
+  double tail;      ///< 0.9 eps / L  (one-sided) or 0.45 eps / L (symmetric)
+  double floor;     ///< 0.1 eps / (2 W)
+  double inv_sigma;
+  double inv_length;
+};
+
+RangeTerms rangeTerms(const RangeLikelihood& m) {
+  const double eps = m.outlier_share;
+  return {(1.0 - eps) / (std::sqrt(2.0 * kPi) * m.sigma),
+          (m.one_sided ? 0.9 : 0.45) * eps / m.outlier_length, 0.1 * eps / (2.0 * m.floor_width),
+          1.0 / m.sigma, 1.0 / m.outlier_length};
+}
+
+/// The inlier (Gaussian) and outlier (tail and floor) parts of the likelihood.
+std::pair<Eigen::ArrayXd, Eigen::ArrayXd> rangeLikelihood(const Eigen::ArrayXd& error,
+                                                          const RangeLikelihood& m) {
+  const RangeTerms k = rangeTerms(m);
+  const Eigen::ArrayXd z = error * k.inv_sigma;
+  Eigen::ArrayXd gauss = k.gauss * (-0.5 * z.square()).exp();
+  Eigen::ArrayXd tail =
+      m.one_sided ? Eigen::ArrayXd((error > 0.0).select(k.tail * (-error * k.inv_length).exp(), 0.0))
+                  : Eigen::ArrayXd(k.tail * (-error.abs() * k.inv_length).exp());
+  return {std::move(gauss), tail + k.floor};
+}
+
+}  // namespace
+
+double RangeLikelihood::operator()(double error) const {
+  const RangeTerms k = rangeTerms(*this);
+  const double z = error * k.inv_sigma;
+  double tail = 0.0;
+  if (!one_sided) {
+    tail = k.tail * std::exp(-std::abs(error) * k.inv_length);
+  } else if (error > 0.0) {
+    tail = k.tail * std::exp(-error * k.inv_length);
+  }
+  return k.gauss * std::exp(-0.5 * z * z) + tail + k.floor;
+}
+
+ParticleFilter::ParticleFilter(const Config& config) : config_(config), state_(config.seed) {
+  std::mt19937_64 rng(config.seed);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  normals_.resize(kNormalTable);
+  for (double& n : normals_) {
+    n = normal(rng);
+  }
+  state_ = config.seed * 0x9E3779B97F4A7C15ull + 1;
+}
+
+std::uint64_t ParticleFilter::nextRandom() {
+  // xorshift64*: fast, and plenty for indexing a table and systematic resampling.
+  state_ ^= state_ >> 12;
+  state_ ^= state_ << 25;
+  state_ ^= state_ >> 27;
+  return state_ * 0x2545F4914F6CDD1Dull;
+}
+
+double ParticleFilter::normal() { return normals_[nextRandom() >> 48]; }
+
+void ParticleFilter::initialize(const std::vector<Eigen::Vector3d>& positions,
+                                double velocity_sigma, double t) {
+  const auto n = static_cast<Eigen::Index>(config_.particles);
+  x_.resize(n);
+  y_.resize(n);
+  z_.resize(n);
+  vx_.resize(n);
+  vy_.resize(n);
+  w_.setConstant(n, 1.0 / static_cast<double>(n));
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const Eigen::Vector3d& p = positions[static_cast<std::size_t>(i) % positions.size()];
+    x_[i] = p.x() + kInitialSpread * normal();
+    y_[i] = p.y() + kInitialSpread * normal();
+    z_[i] = config_.planar ? config_.height : p.z() + kInitialSpread * normal();
+    vx_[i] = velocity_sigma * normal();
+    vy_[i] = velocity_sigma * normal();
+  }
+  t_ = t;
+  initialized_ = true;
+}
+
+void ParticleFilter::assign(const std::vector<Eigen::Vector3d>& positions,
+                            const std::vector<Eigen::Vector2d>& velocities, double t) {
+  const auto n = static_cast<Eigen::Index>(positions.size());
+  x_.resize(n);
+  y_.resize(n);
+  z_.resize(n);
+  vx_.resize(n);
+  vy_.resize(n);
+  w_.setConstant(n, 1.0 / static_cast<double>(n));
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    x_[i] = positions[k].x();
+    y_[i] = positions[k].y();
+    z_[i] = config_.planar ? config_.height : positions[k].z();
+    vx_[i] = velocities[k].x();
+    vy_[i] = velocities[k].y();
+  }
+  t_ = t;
+  initialized_ = n > 0;
+}
+
+void ParticleFilter::predict(double t) {
+  const double dt = t - t_;
+  if (!initialized_ || !(dt > 0.0)) {
+    return;
+  }
+  // White acceleration q per axis over dt: velocity noise sqrt(q dt) n1, position noise
+  // sqrt(q dt) dt / 2 n1 + sqrt(q dt^3 / 12) n2 (covariance q [dt^3/3, dt^2/2; dt^2/2, dt]).
+  const double sv = std::sqrt(config_.process_noise * dt);
+  const double sp = std::sqrt(config_.process_noise * dt * dt * dt / 12.0);
+  const double sz = std::sqrt(config_.vertical_noise * dt);
+  for (Eigen::Index i = 0; i < w_.size(); ++i) {
+    const double ax = normal();
+    const double ay = normal();
+    x_[i] += vx_[i] * dt + sv * dt * 0.5 * ax + sp * normal();
+    y_[i] += vy_[i] * dt + sv * dt * 0.5 * ay + sp * normal();
+    vx_[i] += sv * ax;
+    vy_[i] += sv * ay;
+    if (!config_.planar) {
+      z_[i] += sz * normal();
+    }
+  }
+  t_ = t;
+}
+
+MeasurementFit ParticleFilter::applyLikelihood(const Eigen::ArrayXd& inlier,
+                                               const Eigen::ArrayXd& outlier) {
+  scratch_ = w_ * inlier;
+  const double inlier_mass = scratch_.sum();
+  scratch_ += w_ * outlier;
+  const double evidence = scratch_.sum();
+  if (!(evidence > 0.0) || !std::isfinite(evidence)) {
+    return {};  // weights unchanged: a measurement nothing can explain says nothing
+  }
+  w_ = scratch_ / evidence;
+  return {evidence, inlier_mass / evidence};
+}
+
+MeasurementFit ParticleFilter::weightRange(const Eigen::Vector3d& module, double range,
+                                   const RangeLikelihood& model) {
+  const Eigen::ArrayXd d =
+      ((x_ - module.x()).square() + (y_ - module.y()).square() + (z_ - module.z()).square())
+          .sqrt();
+  const auto [inlier, outlier] = rangeLikelihood(range - d, model);
+  return applyLikelihood(inlier, outlier);
+}
+
+MeasurementFit ParticleFilter::weightTdoa(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                  double difference, const RangeLikelihood& model) {
+  const Eigen::ArrayXd da =
+      ((x_ - a.x()).square() + (y_ - a.y()).square() + (z_ - a.z()).square()).sqrt();
+  const Eigen::ArrayXd db =
+      ((x_ - b.x()).square() + (y_ - b.y()).square() + (z_ - b.z()).square()).sqrt();
+  const auto [inlier, outlier] = rangeLikelihood(difference - (da - db), model);
+  return applyLikelihood(inlier, outlier);
+}
+
+MeasurementFit ParticleFilter::weightBearing(const Eigen::Vector3d& board, const Eigen::Matrix3d& rotation,
+                                     double azimuth, double elevation,
+                                     const BearingLikelihood& m) {
+  // Board-frame offsets of every particle: v = R^T (p - board).
+  const Eigen::ArrayXd dx = x_ - board.x();
+  const Eigen::ArrayXd dy = y_ - board.y();
+  const Eigen::ArrayXd dz = z_ - board.z();
+  const Eigen::Matrix3d rt = rotation.transpose();
+  const Eigen::ArrayXd lx = rt(0, 0) * dx + rt(0, 1) * dy + rt(0, 2) * dz;
+  const Eigen::ArrayXd ly = rt(1, 0) * dx + rt(1, 1) * dy + rt(1, 2) * dz;
+  const Eigen::ArrayXd lz = rt(2, 0) * dx + rt(2, 1) * dy + rt(2, 2) * dz;
+  const Eigen::ArrayXd front = lx.abs();  // the array's front/back mirror
+  const Eigen::ArrayXd rho = (front.square() + ly.square()).sqrt().max(1e-9);
+  const Eigen::ArrayXd cos_az = (front * std::cos(azimuth) + ly * std::sin(azimuth)) / rho;
+  // Sigma factor: 1 inside the field of view, more at the edge, more again behind.
+  const double cos_fov = std::cos(m.field_of_view);
+  const Eigen::ArrayXd ones = Eigen::ArrayXd::Ones(lx.size());
+  const Eigen::ArrayXd edge = (front / rho < cos_fov).select(m.edge_sigma_factor * ones, ones);
+  const Eigen::ArrayXd factor = (lx < 0.0).select(m.behind_sigma_factor * ones, edge);
+  const Eigen::ArrayXd kappa_az = 1.0 / (m.azimuth_sigma * factor).square();
+  Eigen::ArrayXd gauss = (kappa_az / (2.0 * kPi)).sqrt() * (kappa_az * (cos_az - 1.0)).exp();
+  double uniform = 1.0 / (2.0 * kPi);
+  if (m.use_elevation) {
+    const Eigen::ArrayXd norm = (rho.square() + lz.square()).sqrt().max(1e-9);
+    const Eigen::ArrayXd cos_el = (rho * std::cos(elevation) + lz * std::sin(elevation)) / norm;
+    const Eigen::ArrayXd kappa_el = 1.0 / (m.elevation_sigma * factor).square();
+    gauss *= (kappa_el / (2.0 * kPi)).sqrt() * (kappa_el * (cos_el - 1.0)).exp();
+    uniform /= kPi;
+  }
+  return applyLikelihood((1.0 - m.outlier_share) * gauss,
+                         Eigen::ArrayXd::Constant(gauss.size(), m.outlier_share * uniform));
+}
+
+double ParticleFilter::restrict(const std::function<bool(const Eigen::Vector3d&)>& keep) {
+  scratch_ = w_;
+  for (Eigen::Index i = 0; i < w_.size(); ++i) {
+    if (!keep(Eigen::Vector3d(x_[i], y_[i], z_[i]))) {
+      scratch_[i] = 0.0;
+    }
+  }
+  const double kept = scratch_.sum();
+  if (kept > 0.0) {
+    w_ = scratch_ / kept;
+  }
+  return kept;
+}
+
+double ParticleFilter::effectiveSampleSize() const {
+  const double s = w_.square().sum();
+  return s > 0.0 ? 1.0 / s : 0.0;
+}
+
+void ParticleFilter::draw(std::size_t count, std::vector<Eigen::Vector3d>* positions,
+                          std::vector<Eigen::Vector2d>* velocities) {
+  positions->clear();
+  velocities->clear();
+  if (count == 0 || w_.size() == 0) {
+    return;
+  }
+  // Systematic: one uniform offset, `count` evenly spaced pointers into the CDF.
+  const double step = 1.0 / static_cast<double>(count);
+  double pointer = step * static_cast<double>(nextRandom() >> 11) * 0x1.0p-53;
+  double cumulative = w_[0];
+  Eigen::Index i = 0;
+  for (std::size_t k = 0; k < count; ++k) {
+    while (pointer > cumulative && i + 1 < w_.size()) {
+      cumulative += w_[++i];
+    }
+    positions->emplace_back(x_[i], y_[i], z_[i]);
+    velocities->emplace_back(vx_[i], vy_[i]);
+    pointer += step;
+  }
+}
+
+bool ParticleFilter::resampleIfNeeded() {
+  if (!initialized_ ||
+      effectiveSampleSize() >= config_.resample_threshold * static_cast<double>(w_.size())) {
+    return false;
+  }
+  std::vector<Eigen::Vector3d> positions;
+  std::vector<Eigen::Vector2d> velocities;
+  draw(static_cast<std::size_t>(w_.size()), &positions, &velocities);
+  assign(positions, velocities, t_);
+  return true;
+}
+
+Eigen::Vector3d ParticleFilter::mean() const {
+  return {(w_ * x_).sum(), (w_ * y_).sum(), (w_ * z_).sum()};
+}
+
+Eigen::Vector2d ParticleFilter::meanVelocity() const {
+  return {(w_ * vx_).sum(), (w_ * vy_).sum()};
+}
+
+Eigen::Matrix3d ParticleFilter::covariance() const {
+  const Eigen::Vector3d m = mean();
+  const Eigen::ArrayXd ex = x_ - m.x();
+  const Eigen::ArrayXd ey = y_ - m.y();
+  const Eigen::ArrayXd ez = z_ - m.z();
+  Eigen::Matrix3d c;
+  c(0, 0) = (w_ * ex * ex).sum();
+  c(1, 1) = (w_ * ey * ey).sum();
+  c(2, 2) = config_.planar ? 0.0 : (w_ * ez * ez).sum();
+  c(0, 1) = c(1, 0) = (w_ * ex * ey).sum();
+  c(0, 2) = c(2, 0) = config_.planar ? 0.0 : (w_ * ex * ez).sum();
+  c(1, 2) = c(2, 1) = config_.planar ? 0.0 : (w_ * ey * ez).sum();
+  return c;
+}
+
+Eigen::Matrix4d ParticleFilter::planarCovariance() const {
+  const Eigen::Vector3d m = mean();
+  const Eigen::Vector2d v = meanVelocity();
+  const Eigen::ArrayXd e[4] = {x_ - m.x(), y_ - m.y(), vx_ - v.x(), vy_ - v.y()};
+  Eigen::Matrix4d c;
+  for (int r = 0; r < 4; ++r) {
+    for (int k = r; k < 4; ++k) {
+      c(r, k) = c(k, r) = (w_ * e[r] * e[k]).sum();
+    }
+  }
+  return c;
+}
+
+}  // namespace estimation
+}  // namespace radio_follow

@@ -1,0 +1,457 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/estimation/particle_tracker.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <tuple>
+#include <utility>
+
+#include "radio_follow/common/time_policy.hpp"
+
+namespace radio_follow {
+namespace estimation {
+namespace {
+
+/// |log Bayes factor| cap, nats: past evidence for one side never outweighs more than
+/// this much new evidence for the other (a wrong side is left within a few epochs).
+constexpr double kMaxEvidence = 10.0;
+/// Modules whose scatter's small/large eigenvalue ratio is below this are "nearly
+/// collinear": their ranges allow a mirror solution, which a second filter follows.
+constexpr double kCollinearRatio = 0.15;
+/// Mirror and main closer than this (or 3 sigma) are one hypothesis, m.
+constexpr double kMinMirrorSeparation = 0.5;
+/// Cold starts sample this many times the particle count, then keep the best N.
+constexpr std::size_t kColdStartFactor = 4;
+/// Velocity spread of a cold start, m/s per axis (a walking person).
+constexpr double kColdVelocitySigma = 0.7;
+/// Bearing-only cold starts spread particles over this distance interval, m.
+constexpr double kRayMin = 0.3;
+constexpr double kRayMax = 12.0;
+/// TDoA-only cold starts spread particles over a disc of this radius, m.
+constexpr double kTdoaDisc = 15.0;
+/// A mirror hypothesis with less probability than this is not reported.
+constexpr double kReportedShare = 0.01;
+/// Weight of each measurement in the running inlier probability (about the last 50).
+constexpr double kFitRate = 0.02;
+/// Below this running inlier probability the track has diverged and restarts (a
+/// consistent track sits near 1 - the outlier shares, about 0.95).
+constexpr double kDivergedFit = 0.6;
+
+Eigen::Vector3d toWorld(const Pose2& pose, const Eigen::Vector3d& p) {
+  const double c = std::cos(pose.yaw);
+  const double s = std::sin(pose.yaw);
+  return {pose.x + c * p.x() - s * p.y(), pose.y + s * p.x() + c * p.y(), p.z()};
+}
+
+Eigen::Vector3d toRobot(const Pose2& pose, const Eigen::Vector3d& p) {
+  const double c = std::cos(pose.yaw);
+  const double s = std::sin(pose.yaw);
+  const double dx = p.x() - pose.x;
+  const double dy = p.y() - pose.y;
+  return {c * dx + s * dy, -s * dx + c * dy, p.z()};
+}
+
+Eigen::Matrix3d yawRotation(double yaw) {
+  return Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+}
+
+double worstSigma(const Eigen::Matrix3d& covariance) {
+  return std::sqrt(std::max(
+      0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance).eigenvalues().maxCoeff()));
+}
+
+ParticleFilter::Config mirrorConfig(ParticleFilter::Config c) {
+  c.particles = std::max<std::size_t>(50, c.particles / 4);
+  c.seed = c.seed * 31 + 7;
+  return c;
+}
+
+}  // namespace
+
+ParticleTracker::ParticleTracker(const Layout& layout, const ParticleTrackerConfig& config)
+    : layout_(layout),
+      config_(config),
+      main_(config.filter),
+      mirror_(mirrorConfig(config.filter)) {
+  if (config.filter.planar && layout.twr_modules.size() >= 2) {
+    Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
+    for (const auto& m : layout.twr_modules) {
+      centroid += m.position.head<2>();
+    }
+    centroid /= static_cast<double>(layout.twr_modules.size());
+    Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
+    for (const auto& m : layout.twr_modules) {
+      const Eigen::Vector2d d = m.position.head<2>() - centroid;
+      scatter += d * d.transpose();
+    }
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(scatter);
+    if (eigen.eigenvalues()(0) < kCollinearRatio * eigen.eigenvalues()(1)) {
+      axis_ = std::make_pair(centroid, Eigen::Vector2d(eigen.eigenvectors().col(1)));
+    }
+  }
+}
+
+void ParticleTracker::reset() {
+  fit_ = 1.0;
+  main_.reset();
+  mirror_.reset();
+  mirror_active_ = false;
+  evidence_ = 0.0;
+  last_position_fix_ = -1.0;
+  std::fill(std::begin(last_kind_), std::end(last_kind_), -1.0);
+}
+
+void ParticleTracker::setConfig(const ParticleTrackerConfig& config) {
+  const bool restart = config.filter.particles != config_.filter.particles ||
+                       config.filter.planar != config_.filter.planar;
+  config_ = config;
+  if (restart) {
+    main_ = ParticleFilter(config.filter);
+    mirror_ = ParticleFilter(mirrorConfig(config.filter));
+    reset();
+  }
+}
+
+void ParticleTracker::add(const TrackedMeasurement& measurement) { queue_.push_back(measurement); }
+
+Eigen::Vector3d ParticleTracker::mirrored(const Eigen::Vector3d& p, const Pose2& pose) const {
+  const Eigen::Vector3d r = toRobot(pose, p);
+  const Eigen::Vector2d d = r.head<2>() - axis_->first;
+  const Eigen::Vector2d& a = axis_->second;
+  Eigen::Vector3d m = r;
+  m.head<2>() = axis_->first + 2.0 * d.dot(a) * a - d;
+  return toWorld(pose, m);
+}
+
+Eigen::Vector2d ParticleTracker::mirroredVelocity(const Eigen::Vector2d& v,
+                                                  const Pose2& pose) const {
+  const Eigen::Rotation2Dd rotation(pose.yaw);
+  const Eigen::Vector2d r = rotation.inverse() * v;
+  const Eigen::Vector2d& a = axis_->second;
+  return rotation * Eigen::Vector2d(2.0 * r.dot(a) * a - r);
+}
+
+bool ParticleTracker::onMainSide(const Eigen::Vector3d& p, const Pose2& pose) const {
+  const Eigen::Vector2d d = toRobot(pose, p).head<2>() - axis_->first;
+  const Eigen::Vector2d& a = axis_->second;
+  return a.x() * d.y() - a.y() * d.x() >= 0.0;
+}
+
+MeasurementFit ParticleTracker::weigh(ParticleFilter& filter, const TrackedMeasurement& m,
+                              const Pose2& pose) const {
+  switch (m.kind) {
+    case TrackedMeasurement::Kind::kRange:
+      return filter.weightRange(toWorld(pose, layout_.twr_modules[m.sensor].position), m.value,
+                                config_.range);
+    case TrackedMeasurement::Kind::kTdoa: {
+      RangeLikelihood model = config_.tdoa;
+      model.sigma = m.sigma;
+      return filter.weightTdoa(toWorld(pose, layout_.tdoa_anchors[m.sensor].position),
+                               toWorld(pose, layout_.tdoa_anchors[m.sensor_b].position), m.value,
+                               model);
+    }
+    case TrackedMeasurement::Kind::kBearing: {
+      const AoaBoard& board = layout_.aoa_boards[m.sensor];
+      BearingLikelihood model = config_.bearing;
+      model.field_of_view = board.field_of_view;
+      return filter.weightBearing(toWorld(pose, board.position),
+                                  yawRotation(pose.yaw) * board.orientation.toRotationMatrix(),
+                                  m.value, m.elevation, model);
+    }
+  }
+  return {};
+}
+
+void ParticleTracker::apply(const TrackedMeasurement& m) {
+  const Pose2 pose = m.pose.value_or(Pose2{});
+  if (m.t < main_.time()) {
+    ++stats_.late;  // applied at the filter's time: the filters do not run backwards
+  }
+  main_.predict(m.t);
+  const MeasurementFit main_fit = weigh(main_, m, pose);
+  // A track whose particles are all in the wrong place explains every input as an
+  // outlier, and the outlier floor then moves nothing: watch the inlier probability.
+  fit_ += kFitRate * (main_fit.inlier - fit_);
+  if (mirror_active_) {
+    mirror_.predict(m.t);
+    const MeasurementFit mirror_fit = weigh(mirror_, m, pose);
+    if (main_fit.likelihood > 0.0 && mirror_fit.likelihood > 0.0) {
+      evidence_ = std::clamp(
+          evidence_ + std::log(mirror_fit.likelihood) - std::log(main_fit.likelihood),
+          -kMaxEvidence, kMaxEvidence);
+    }
+    mirror_.resampleIfNeeded();
+  }
+  stats_.resamples += main_.resampleIfNeeded();
+  if (m.t >= main_.time()) {
+    pose_ = pose;
+  }
+  const auto kind = static_cast<std::size_t>(m.kind);
+  last_kind_[kind] = std::max(last_kind_[kind], m.t);
+  if (m.kind != TrackedMeasurement::Kind::kBearing) {
+    last_position_fix_ = std::max(last_position_fix_, m.t);
+  }
+  ++stats_.processed;
+}
+
+bool ParticleTracker::coldStart(double now) {
+  // The newest measurement of every sensor (the deque is in processing order).
+  std::map<std::tuple<int, std::size_t, std::size_t>, const TrackedMeasurement*> newest;
+  for (const auto& m : recent_) {
+    const auto key = std::make_tuple(static_cast<int>(m.kind), m.sensor, m.sensor_b);
+    const auto it = newest.find(key);
+    if (it == newest.end() || it->second->t <= m.t) {
+      newest[key] = &m;
+    }
+  }
+  const std::size_t sensors =
+      layout_.twr_modules.size() + layout_.aoa_boards.size() + (layout_.tdoa_anchors.empty() ? 0 : 1);
+  if (newest.size() < std::min<std::size_t>(2, sensors) || newest.empty()) {
+    return false;
+  }
+  const TrackedMeasurement* ring = nullptr;
+  const TrackedMeasurement* latest = nullptr;
+  bool any_tdoa = false;
+  for (const auto& [key, m] : newest) {
+    if (m->kind == TrackedMeasurement::Kind::kRange && (ring == nullptr || m->value < ring->value)) {
+      ring = m;  // the shortest range: the smallest ring to sample
+    }
+    any_tdoa = any_tdoa || m->kind == TrackedMeasurement::Kind::kTdoa;
+    if (latest == nullptr || m->t > latest->t) {
+      latest = m;
+    }
+  }
+  // Bearings alone place the target only along rays, some of them from a board's edge;
+  // a layout that ranges waits for a range (for max_age, then starts heading-only).
+  const bool ranging = !layout_.twr_modules.empty() || !layout_.tdoa_anchors.empty();
+  if (ring == nullptr && !any_tdoa && ranging &&
+      (recent_.empty() || now - recent_.front().t < config_.max_age)) {
+    return false;
+  }
+  const Pose2 pose = latest->pose.value_or(Pose2{});
+
+  ParticleFilter::Config sampler_config = config_.filter;
+  sampler_config.particles = kColdStartFactor * config_.filter.particles;
+  sampler_config.seed = config_.filter.seed + 1000 * (stats_.cold_starts + 1);
+  ParticleFilter sampler(sampler_config);
+  std::vector<Eigen::Vector3d> positions;
+  const std::size_t count = sampler_config.particles;
+  const double height = config_.filter.height;
+  const double golden = 2.39996322972865332;  // rad: evenly spread angles, no RNG needed
+  if (ring != nullptr) {
+    const Eigen::Vector3d module =
+        toWorld(ring->pose.value_or(Pose2{}), layout_.twr_modules[ring->sensor].position);
+    const double dz = config_.filter.planar ? height - module.z() : 0.0;
+    const double radius = std::sqrt(std::max(0.01, ring->value * ring->value - dz * dz));
+    for (std::size_t k = 0; k < count; ++k) {
+      const double angle = golden * static_cast<double>(k);
+      positions.emplace_back(module.x() + radius * std::cos(angle),
+                             module.y() + radius * std::sin(angle), height);
+    }
+  } else if (any_tdoa) {
+    for (std::size_t k = 0; k < count; ++k) {
+      const double r = kTdoaDisc * std::sqrt((static_cast<double>(k) + 0.5) / count);
+      const double angle = golden * static_cast<double>(k);
+      positions.push_back(toWorld(pose, {r * std::cos(angle), r * std::sin(angle), height}));
+    }
+  } else {
+    std::vector<const TrackedMeasurement*> bearings;
+    for (const auto& [key, m] : newest) {
+      bearings.push_back(m);
+    }
+    for (std::size_t k = 0; k < count; ++k) {
+      const TrackedMeasurement& b = *bearings[k % bearings.size()];
+      const AoaBoard& board = layout_.aoa_boards[b.sensor];
+      const Pose2 at = b.pose.value_or(Pose2{});
+      Eigen::Vector3d direction(std::cos(b.elevation) * std::cos(b.value),
+                                std::cos(b.elevation) * std::sin(b.value), std::sin(b.elevation));
+      if ((k / bearings.size()) % 2 == 1) {
+        direction.x() = -direction.x();  // the array's other side
+      }
+      const double fraction = static_cast<double>((k * 7919) % count) / static_cast<double>(count);
+      const double distance = kRayMin + (kRayMax - kRayMin) * fraction;
+      Eigen::Vector3d p = toWorld(at, board.position + board.orientation * (distance * direction));
+      if (config_.filter.planar) {
+        p.z() = height;
+      }
+      positions.push_back(p);
+    }
+  }
+  sampler.initialize(positions, kColdVelocitySigma, latest->t);
+  for (const auto& [key, m] : newest) {
+    const MeasurementFit f = weigh(sampler, *m, m->pose.value_or(Pose2{}));
+    if (std::getenv("RF_PF_DEBUG")) std::fprintf(stderr, "cold kind %d sensor %zu value %.3f el %.3f t %.3f inlier %.2f ess %.0f\n", (int)m->kind, m->sensor, m->value, m->elevation, m->t, f.inlier, sampler.effectiveSampleSize());
+  }
+  evidence_ = 0.0;
+  if (axis_ && ring != nullptr) {
+    // Keep the side with more weight; the other is what the mirror filter starts from.
+    const auto side = [this, &pose](const Eigen::Vector3d& p) { return onMainSide(p, pose); };
+    ParticleFilter other = sampler;
+    const double first = sampler.restrict(side);
+    const double second = 1.0 - first;
+    if (first < second) {
+      other.restrict([&side](const Eigen::Vector3d& p) { return !side(p); });
+      sampler = other;
+    }
+    evidence_ = std::clamp(std::log(std::max(std::min(first, second), 1e-12) /
+                                    std::max(std::max(first, second), 1e-12)),
+                           -kMaxEvidence, kMaxEvidence);
+  }
+  std::vector<Eigen::Vector3d> kept;
+  std::vector<Eigen::Vector2d> velocities;
+  sampler.draw(config_.filter.particles, &kept, &velocities);
+  main_.assign(kept, velocities, latest->t);
+  pose_ = pose;
+  for (const auto& [key, m] : newest) {
+    const auto kind = static_cast<std::size_t>(m->kind);
+    last_kind_[kind] = std::max(last_kind_[kind], m->t);
+    if (m->kind != TrackedMeasurement::Kind::kBearing) {
+      last_position_fix_ = std::max(last_position_fix_, m->t);
+    }
+  }
+  mirror_active_ = false;
+  if (axis_) {
+    seedMirror();
+  }
+  ++stats_.cold_starts;
+  (void)now;
+  return true;
+}
+
+void ParticleTracker::seedMirror() {
+  std::vector<Eigen::Vector3d> positions;
+  std::vector<Eigen::Vector2d> velocities;
+  main_.draw(mirror_.config().particles, &positions, &velocities);
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    positions[i] = mirrored(positions[i], pose_);
+    velocities[i] = mirroredVelocity(velocities[i], pose_);
+  }
+  mirror_.assign(positions, velocities, main_.time());
+  mirror_active_ = true;
+}
+
+bool ParticleTracker::mirrorDistinct() const {
+  const double separation = (mirror_.mean() - main_.mean()).head<2>().norm();
+  return separation > std::max(kMinMirrorSeparation, 3.0 * worstSigma(main_.covariance()));
+}
+
+void ParticleTracker::maintainMirror() {
+  if (!axis_ || !main_.initialized()) {
+    return;
+  }
+  if (mirror_active_ && mirrorDistinct() && evidence_ > config_.ambiguity_margin) {
+    // The data prefer the mirror: it becomes the main hypothesis.
+    std::vector<Eigen::Vector3d> positions;
+    std::vector<Eigen::Vector2d> velocities;
+    mirror_.draw(main_.config().particles, &positions, &velocities);
+    main_.assign(positions, velocities, main_.time());
+    evidence_ = -evidence_;
+    ++stats_.mirror_swaps;
+  }
+  // The mirror hypothesis is the main track's mirror image, re-drawn after every batch:
+  // left alone, its particles would follow the data onto the main one.
+  // Near the modules' axis the two coincide and the evidence stops changing: the side
+  // the data chose before is kept until data say otherwise.
+  seedMirror();
+}
+
+TrackerOutput ParticleTracker::update(double now) {
+  std::stable_sort(queue_.begin(), queue_.end(),
+                   [](const TrackedMeasurement& a, const TrackedMeasurement& b) { return a.t < b.t; });
+  for (const TrackedMeasurement& m : queue_) {
+    if (m.t > now + kFutureStampTolerance) {
+      ++stats_.future_dropped;
+      continue;
+    }
+    if (now - m.t > config_.max_age) {
+      ++stats_.stale_dropped;
+      continue;
+    }
+    const bool odom = m.pose.has_value();
+    if (odom != in_odom_) {
+      // Odometry appeared or vanished: positions in the old frame mean nothing now.
+      if (main_.initialized()) {
+        ++stats_.frame_switches;
+      }
+      reset();
+      recent_.clear();
+      in_odom_ = odom;
+    }
+    if (main_.initialized()) {
+      apply(m);
+    }
+    recent_.push_back(m);
+  }
+  queue_.clear();
+  while (!recent_.empty() && now - recent_.front().t > config_.max_age) {
+    recent_.pop_front();
+  }
+
+  TrackerOutput out;
+  out.in_odom = in_odom_;
+  if (main_.initialized() && fit_ < kDivergedFit) {
+    ++stats_.divergences;
+    reset();  // and start again from what the sensors say now
+  }
+  if (!main_.initialized() && !coldStart(now)) {
+    return out;
+  }
+  maintainMirror();
+  if (std::getenv("RF_PF_DEBUG") && now < 4.0) {
+    const Eigen::Vector3d mm = main_.mean();
+    std::fprintf(stderr, "t %.2f fit %.2f mean %.2f %.2f sig %.2f cold %zu div %zu\n", now, fit_, mm.x(), mm.y(), worstSigma(main_.covariance()), stats_.cold_starts, stats_.divergences);
+  }
+  out.stamp = main_.time();
+  out.pose = pose_;
+  const bool fresh = now - main_.time() <= config_.max_age;
+  const Eigen::Matrix3d covariance = main_.covariance();
+  const Eigen::Vector3d position = main_.mean();
+  const bool ranged = last_position_fix_ >= 0.0 && now - last_position_fix_ <= config_.max_age;
+  const double sigma = worstSigma(covariance);
+  if (!fresh || !position.allFinite() || !covariance.allFinite() ||
+      (ranged && sigma > config_.lost_sigma)) {
+    reset();
+    return out;
+  }
+  for (std::size_t k = 0; k < 3; ++k) {
+    if (last_kind_[k] >= 0.0 && now - last_kind_[k] <= config_.max_age) {
+      out.sources |= k == 0 ? kSourceTwr : k == 1 ? kSourceAoa : kSourceTdoa;
+    }
+  }
+  out.position = position;
+  out.velocity = main_.meanVelocity();
+  out.covariance = covariance;
+  out.hypotheses = 1;
+  out.hypothesis_weight = 1.0;
+  if (!ranged) {
+    // Direction only: where along it is the prior's guess.
+    const Eigen::Vector3d relative = toRobot(pose_, position);
+    const double heading = std::atan2(relative.y(), relative.x());
+    out.position = toWorld(pose_, {config_.default_range * std::cos(heading),
+                                   config_.default_range * std::sin(heading), position.z()});
+    out.status = TargetStatus::kHeadingOnly;
+    return out;
+  }
+  const double distance = toRobot(pose_, position).head<2>().norm();
+  const double allowed =
+      std::max(config_.max_position_sigma, config_.max_relative_sigma * distance);
+  out.status = sigma <= allowed ? TargetStatus::kOk : TargetStatus::kDegraded;
+  if (mirror_active_ && mirrorDistinct()) {
+    const double mirror_share = 1.0 / (1.0 + std::exp(-evidence_));
+    out.hypothesis_weight = 1.0 - mirror_share;
+    out.alternative = mirror_.mean();
+    out.hypotheses = mirror_share >= kReportedShare ? 2 : 1;
+    if (evidence_ > -config_.ambiguity_margin) {
+      out.status = TargetStatus::kAmbiguous;
+    }
+  }
+  return out;
+}
+
+}  // namespace estimation
+}  // namespace radio_follow
