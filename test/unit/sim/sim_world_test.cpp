@@ -24,6 +24,7 @@ Scenario standing(double x, double y) {
 
 TEST(World, EverySensorReportsAtItsRate) {
   WorldConfig config;
+  config.profile = SensorProfile::kIdeal;  // the realistic one drops a few % of the epochs
   config.rates.twr_hz = 10.0;
   config.rates.aoa_hz = 20.0;
   World world(spot(), standing(4.0, 0.0), config);
@@ -57,6 +58,7 @@ TEST(World, TargetIsSeenInTheRobotFrame) {
 
 TEST(World, RangesMatchTheGeometry) {
   WorldConfig config;
+  config.profile = SensorProfile::kIdeal;  // no hardware errors
   config.twr.use_table_bias = false;
   config.twr.sigma_scale = 0.0;
   const Layout layout = spot();

@@ -1,0 +1,82 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Runs the simulated calibration run (evaluation/calibration_run.hpp) for a layout on the
+// simulated robot of a hardware seed and prints the calibrated entries in the layout
+// format, with each fit's figures as comments: how the shipped layouts' calibrations for
+// the simulator's default hardware are made (doc/simulator.md, "Calibration run").
+//   layout_calibration [--layout spot] [--hardware-seed 1] [--seed 1] [--config-dir DIR]
+// The sensors are config/simulator.yaml's with the realistic profile.
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <string>
+
+#include "radio_follow/common/angles.hpp"
+#include "radio_follow/common/param_error.hpp"
+#include "radio_follow/common/yaml_params.hpp"
+#include "radio_follow/evaluation/calibration_run.hpp"
+
+namespace {
+
+int usage(const std::string& problem) {
+  std::fprintf(stderr,
+               "layout_calibration: %s\nusage: layout_calibration [--layout L] "
+               "[--hardware-seed N] [--seed N] [--config-dir DIR]\n",
+               problem.c_str());
+  return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  namespace rf = radio_follow;
+  std::string layout_name = "spot";
+  std::string config_dir = RF_CONFIG_DIR;
+  int hardware_seed = 1;
+  int seed = 1;
+  for (int i = 1; i < argc; i += 2) {
+    const std::string flag = argv[i];
+    if (i + 1 >= argc) {
+      return usage("missing value after " + flag);
+    }
+    const std::string value = argv[i + 1];
+    if (flag == "--layout") {
+      layout_name = value;
+    } else if (flag == "--hardware-seed") {
+      hardware_seed = std::atoi(value.c_str());
+    } else if (flag == "--seed") {
+      seed = std::atoi(value.c_str());
+    } else if (flag == "--config-dir") {
+      config_dir = value;
+    } else {
+      return usage("unknown option " + flag);
+    }
+  }
+  try {
+    rf::require(hardware_seed >= 0, "--hardware-seed", hardware_seed, "an integer >= 0");
+    rf::require(seed >= 0, "--seed", seed, "an integer >= 0");
+    const rf::Layout layout = rf::loadLayoutFile(config_dir + "/layouts/" + layout_name + ".yaml");
+    rf::sim::WorldConfig world;
+    world.load(rf::YamlParams::fromFile(config_dir + "/simulator.yaml"));
+    world.profile = rf::sim::SensorProfile::kRealistic;
+    world.hardware_seed = static_cast<std::uint64_t>(hardware_seed);
+    world.seed = static_cast<std::uint64_t>(seed);
+    const rf::evaluation::CalibrationResult result = rf::evaluation::runCalibration(layout, world);
+    std::printf("# layout_calibration --layout %s --hardware-seed %d --seed %d\n",
+                layout_name.c_str(), hardware_seed, seed);
+    for (const auto& m : result.modules) {
+      std::printf("# %s: %zu samples (%zu refused), RMS error %.3f m raw, %.3f m calibrated\n",
+                  m.id.c_str(), m.fit.used + m.fit.rejected, m.fit.rejected, m.fit.rms_before,
+                  m.fit.rms_after);
+    }
+    for (const auto& b : result.boards) {
+      std::printf("# %s: yaw offset %+.2f deg from %zu samples (%zu refused), sigma %.2f deg\n",
+                  b.id.c_str(), rf::rad2deg(b.fit.yaw_offset), b.fit.used + b.fit.rejected,
+                  b.fit.rejected, rf::rad2deg(b.fit.residual_sigma));
+    }
+    std::printf("%s", rf::evaluation::calibratedLayoutYaml(result.layout).c_str());
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "layout_calibration: %s\n", e.what());
+    return 2;
+  }
+}
