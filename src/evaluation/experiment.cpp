@@ -34,8 +34,11 @@ std::vector<Experiment> loadExperiments(const std::string& path) {
   const YamlParams file = YamlParams::fromFile(path);
   std::vector<Experiment> experiments;
   std::string file_profile = "ideal";
-  if (file.root()["sensor_profile"].IsScalar()) {
-    file_profile = file.root()["sensor_profile"].as<std::string>();
+  const YAML::Node file_profile_node = file.root()["sensor_profile"];
+  if (file_profile_node.IsDefined()) {
+    require(file_profile_node.IsScalar(), path + ": sensor_profile", YAML::Dump(file_profile_node),
+            "'realistic' or 'ideal'");
+    file_profile = file_profile_node.as<std::string>();
   }
   const sim::SensorProfile profile =
       sim::parseSensorProfile(file_profile, path + ": sensor_profile");

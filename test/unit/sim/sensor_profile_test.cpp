@@ -242,12 +242,16 @@ TEST(SensorProfile, WorldIsDeterministicForItsSeeds) {
 }
 
 TEST(SensorProfile, IdealWorldIsTheTablesAsBefore) {
-  // The ideal profile draws exactly as the simulator always did: these are the first
-  // ranges of seed 1 on the spot layout before the profiles existed.
+  // The ideal profile draws exactly as the simulator did before the profiles existed (its
+  // experiments table is main's to the last digit, doc/experiments.md): the first ranges
+  // of seed 1 on the spot layout, kept so that a change to the ideal path shows.
   WorldConfig config;
   config.profile = SensorProfile::kIdeal;
   const std::vector<double> r = ranges(config);
   ASSERT_GE(r.size(), 3u);
+  EXPECT_EQ(r[0], 3.0489909263206032);
+  EXPECT_EQ(r[1], 3.268135753758906);
+  EXPECT_EQ(r[2], 3.4693646641268554);
   for (double x : r) {
     EXPECT_LT(x, 3.6) << "Table 3.1 reads short, never the realistic profile's long bias";
   }
