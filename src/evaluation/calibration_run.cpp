@@ -57,6 +57,12 @@ const Stand* standAt(const std::vector<Stand>& stands, double t) {
   return nullptr;
 }
 
+/// Degrees as the layout files write them: no "-0.00" for a rounding residue.
+double degrees(double radians) {
+  const double d = rad2deg(radians);
+  return std::abs(d) < 0.005 ? 0.0 : d;
+}
+
 }  // namespace
 
 void CalibrationRunParams::validate() const {
@@ -163,7 +169,7 @@ std::string calibratedLayoutYaml(const Layout& layout) {
                   "  - {id: %s, kind: %s, position: [%.3f, %.3f, %.3f], rpy_deg: [%.2f, %.2f, "
                   "%.2f]}\n",
                   b.id.c_str(), toString(b.kind).c_str(), b.position.x(), b.position.y(),
-                  b.position.z(), rad2deg(roll), rad2deg(pitch), rad2deg(yaw));
+                  b.position.z(), degrees(roll), degrees(pitch), degrees(yaw));
     out += line;
   }
   return out;

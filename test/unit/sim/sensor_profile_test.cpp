@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 #include "radio_follow/common/angles.hpp"
@@ -63,10 +64,12 @@ TEST(SensorProfile, TwrNoiseHasTheMeasuredSigmaAndAutocorrelation) {
     var += (x - m) * (x - m);
   }
   const double sigma = std::sqrt(var / static_cast<double>(noise.size()));
+  const double at_1s = autocorrelation(noise, 10);
+  std::printf("TWR noise: sigma %.4f m, autocorrelation %.3f at 0.1 s, %.3f at 1 s\n", sigma,
+              autocorrelation(noise, 1), at_1s);
   EXPECT_GE(sigma, 0.06);
   EXPECT_LE(sigma, 0.07);
   EXPECT_NEAR(autocorrelation(noise, 1), 0.7, 0.05) << "at 0.1 s";
-  const double at_1s = autocorrelation(noise, 10);
   EXPECT_GE(at_1s, 0.4) << "at 1 s";
   EXPECT_LE(at_1s, 0.5) << "at 1 s";
 }
@@ -111,6 +114,8 @@ TEST(SensorProfile, OutliersAreRareMostlyLongAndLastSeveralEpochs) {
     previous = excess != 0.0;
   }
   const double share = static_cast<double>(outliers) / n;
+  std::printf("TWR outliers: %.3f %% of epochs, %.1f %% long, %.2f epochs per burst\n",
+              100.0 * share, 100.0 * longer / outliers, static_cast<double>(outliers) / bursts);
   EXPECT_GE(share, 0.001);
   EXPECT_LE(share, 0.002);
   EXPECT_GE(static_cast<double>(longer) / outliers, 0.9) << "reflections read long";
@@ -167,6 +172,7 @@ TEST(SensorProfile, RangeMeanAndDropoutsOverALongRun) {
     }
   }
   const double dropped = 1.0 - static_cast<double>(errors.size()) / epochs;
+  std::printf("TWR dropouts: %.2f %% of epochs\n", 100.0 * dropped);
   EXPECT_NEAR(dropped, 0.03, 0.005);
   const double expected = h.bias + 4.0 * h.scale + h.direction * std::cos(0.0 - h.phase);
   EXPECT_NEAR(mean(errors), expected, 0.01);
@@ -187,6 +193,7 @@ TEST(SensorProfile, AoaReflectionsAreAFewPercent) {
     }
   }
   const double share = static_cast<double>(wrong) / events;
+  std::printf("AoA: %.2f %% of events more than 20 deg off (reflections)\n", 100.0 * share);
   EXPECT_GT(share, 0.015);
   EXPECT_LT(share, 0.04);
 }
