@@ -40,6 +40,22 @@ void ClosedLoopConfig::validate() const {
   require(std::isfinite(tf_timeout) && tf_timeout >= 0.0 && tf_timeout < 1.0, "~tf_timeout",
           tf_timeout, "a timeout in [0, 1) seconds");
   require(rateOk(evaluator_rate), "evaluator rate", evaluator_rate, "a rate in (0, 1000] Hz");
+  if (locator_layout) {
+    // The locator hears the world's sensors by ID: a calibrated layout of the same robot.
+    locator_layout->validate();
+    const auto ids = [](const Layout& l) {
+      std::vector<std::string> out;
+      for (const TwrModule& m : l.twr_modules) {
+        out.push_back(m.id);
+      }
+      for (const AoaBoard& b : l.aoa_boards) {
+        out.push_back(b.id);
+      }
+      return out;
+    };
+    require(ids(*locator_layout) == ids(layout), "locator_layout", std::string("(a layout)"),
+            "the same TWR modules and AoA boards as the world's layout, in the same order");
+  }
   for (const SensorOutage& o : outages) {
     const bool known = std::any_of(layout.twr_modules.begin(), layout.twr_modules.end(),
                                    [&](const TwrModule& m) { return m.id == o.sensor; }) ||

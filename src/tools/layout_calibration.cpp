@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <map>
 #include <string>
 
 #include "radio_follow/common/angles.hpp"
@@ -29,28 +30,22 @@ int usage(const std::string& problem) {
 
 int main(int argc, char** argv) {
   namespace rf = radio_follow;
-  std::string layout_name = "spot";
-  std::string config_dir = RF_CONFIG_DIR;
-  int hardware_seed = 1;
-  int seed = 1;
+  // Every option takes a value; the map holds the defaults.
+  std::map<std::string, std::string> options{{"--layout", "spot"},
+                                             {"--hardware-seed", "1"},
+                                             {"--seed", "1"},
+                                             {"--config-dir", RF_CONFIG_DIR}};
   for (int i = 1; i < argc; i += 2) {
-    const std::string flag = argv[i];
-    if (i + 1 >= argc) {
-      return usage("missing value after " + flag);
+    const auto option = options.find(argv[i]);
+    if (option == options.end() || i + 1 >= argc) {
+      return usage(std::string("unknown option or no value: ") + argv[i]);
     }
-    const std::string value = argv[i + 1];
-    if (flag == "--layout") {
-      layout_name = value;
-    } else if (flag == "--hardware-seed") {
-      hardware_seed = std::atoi(value.c_str());
-    } else if (flag == "--seed") {
-      seed = std::atoi(value.c_str());
-    } else if (flag == "--config-dir") {
-      config_dir = value;
-    } else {
-      return usage("unknown option " + flag);
-    }
+    option->second = argv[i + 1];
   }
+  const std::string layout_name = options["--layout"];
+  const std::string config_dir = options["--config-dir"];
+  const int hardware_seed = std::atoi(options["--hardware-seed"].c_str());
+  const int seed = std::atoi(options["--seed"].c_str());
   try {
     rf::require(hardware_seed >= 0, "--hardware-seed", hardware_seed, "an integer >= 0");
     rf::require(seed >= 0, "--seed", seed, "an integer >= 0");
