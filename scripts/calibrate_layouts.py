@@ -1,11 +1,17 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: BSD-3-Clause
-"""Writes the simulated calibration run's results into the shipped layouts: every TWR
-module's `calibration` and every AoA board's `rpy_deg` in config/layouts/<name>.yaml
-become what `layout_calibration --layout <name> --hardware-seed N` prints (the realistic
-sensor profile's simulated robot N, doc/simulator.md, "Calibration run"). Nothing else in
-the files changes. Run it when the ROS demo switches to `sensor_profile: realistic`
+"""Writes the simulated calibration run's range calibrations into the shipped layouts:
+every TWR module's `calibration` in config/layouts/<name>.yaml becomes what
+`layout_calibration --layout <name> --hardware-seed N` prints (the realistic sensor
+profile's simulated robot N, doc/simulator.md, "Calibration run"). Nothing else in the
+files changes. Run it when the ROS demo switches to `sensor_profile: realistic`
 (config/simulator.yaml), with that file's `hardware_seed`.
+
+The boards' fitted yaw (`rpy_deg`) is printed by the tool but not written: the ROS
+simulator reads the same file as where the boards were meant to be and mounts them
+rotated from there, so a corrected yaw in the file would turn the simulated boards by
+the error twice. (A real robot's file takes both; the lockstep loop keeps the two layouts
+apart, ClosedLoopConfig::locator_layout.)
 
 Usage: calibrate_layouts.py [--hardware-seed N] [--dry-run] [layout ...]   (default: all)
 """
@@ -17,7 +23,7 @@ import sys
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parent.parent
-ENTRY = re.compile(r'^(\s*-\s*\{id:\s*"?)([^",}]+)("?.*?)\b(calibration|rpy_deg): \[[^\]]*\](.*)$')
+ENTRY = re.compile(r'^(\s*-\s*\{id:\s*"?)([^",}]+)("?.*?)\b(calibration): \[[^\]]*\](.*)$')
 
 
 def calibrated_entries(tool, layout, hardware_seed):
