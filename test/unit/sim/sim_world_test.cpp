@@ -5,6 +5,7 @@
 
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/common/yaml_params.hpp"
 #include "radio_follow/sim/world.hpp"
 
 namespace radio_follow {
@@ -99,6 +100,25 @@ TEST(World, RejectsBadConfigNamingTheParameter) {
   } catch (const ParamError& e) {
     EXPECT_EQ(e.name(), "aoa_rate");
   }
+}
+
+TEST(WorldConfigLoad, ReadsTheSensorProfileAndRefusesBadValuesNamingThem) {
+  WorldConfig config;
+  config.load(YamlParams(YAML::Load("sensor_profile: ideal\nhardware_seed: 7")));
+  EXPECT_EQ(config.profile, SensorProfile::kIdeal);
+  EXPECT_EQ(config.hardware_seed, 7u);
+  EXPECT_EQ(WorldConfig{}.profile, SensorProfile::kRealistic) << "the default";
+  const auto rejected = [](const std::string& yaml) {
+    try {
+      WorldConfig c;
+      c.load(YamlParams(YAML::Load(yaml)));
+    } catch (const ParamError& e) {
+      return e.name();
+    }
+    return std::string("(accepted)");
+  };
+  EXPECT_EQ(rejected("sensor_profile: rough"), "~sensor_profile");
+  EXPECT_EQ(rejected("hardware_seed: -1"), "~hardware_seed");
 }
 
 }  // namespace
