@@ -66,8 +66,8 @@ double GaussMarkov::sample(double t, Rng& rng) {
 }
 
 TwrHardware drawTwrHardware(std::uint64_t hardware_seed, const std::string& module_id,
-                            const RealisticFigures& f) {
-  Rng rng = hardwareRng(hardware_seed, "twr:" + module_id);
+                            const std::string& tag_id, const RealisticFigures& f) {
+  Rng rng = hardwareRng(hardware_seed, "twr:" + module_id + "/" + tag_id);
   TwrHardware h;
   h.bias = uniform(rng, f.twr_bias_min, f.twr_bias_max);
   h.scale = uniform(rng, f.twr_scale_min, f.twr_scale_max);

@@ -91,7 +91,8 @@ World::World(const Layout& layout, const Scenario& scenario, const WorldConfig& 
       Schedule{1.0 / config_.rates.tdoa_hz, uniform(rng_, 1.0 / config_.rates.tdoa_hz)};
   if (config_.profile == SensorProfile::kRealistic) {
     for (const TwrModule& m : layout_.twr_modules) {
-      twr_hardware_.push_back(drawTwrHardware(config_.hardware_seed, m.id));
+      twr_hardware_.push_back(
+          drawTwrHardware(config_.hardware_seed, m.id, layout_.target_anchor_id));
       twr_state_.emplace_back(RealisticFigures{}, config_.twr.sigma_scale);
     }
     for (const AoaBoard& b : layout_.aoa_boards) {

@@ -67,8 +67,9 @@ class GaussMarkov {
   double value_ = 0.0;
 };
 
-/// One module's constant errors, drawn from `hardware_seed` and the module's ID so a
-/// simulated robot keeps them whatever the noise seed.
+/// One module's constant errors with one tag (the antenna delays and the pair's
+/// clock-offset estimate are both ends'), drawn from `hardware_seed` and the module's and
+/// tag's IDs, so a simulated robot keeps them whatever the noise seed.
 struct TwrHardware {
   double bias = 0.0;       ///< m
   double scale = 0.0;      ///< per metre
@@ -76,7 +77,7 @@ struct TwrHardware {
   double phase = 0.0;      ///< rad, bearing of its maximum
 };
 TwrHardware drawTwrHardware(std::uint64_t hardware_seed, const std::string& module_id,
-                            const RealisticFigures& figures = {});
+                            const std::string& tag_id, const RealisticFigures& figures = {});
 
 /// The time-correlated noise and reflection bursts of one module (the World keeps one
 /// per module).

@@ -125,20 +125,22 @@ TEST(SensorProfile, OutliersAreRareMostlyLongAndLastSeveralEpochs) {
 TEST(SensorProfile, HardwareIsInItsRangesAndFollowsOnlyTheHardwareSeed) {
   for (int k = 0; k < 200; ++k) {
     const std::string id = "M" + std::to_string(k);
-    const TwrHardware h = drawTwrHardware(5, id);
+    const TwrHardware h = drawTwrHardware(5, id, "DA12");
     EXPECT_GE(h.bias, 0.08);
     EXPECT_LE(h.bias, 0.31);
     EXPECT_GE(h.scale, 0.006);
     EXPECT_LE(h.scale, 0.02);
-    EXPECT_EQ(drawTwrHardware(5, id).bias, h.bias) << "deterministic for a seed";
-    EXPECT_NE(drawTwrHardware(6, id).bias, h.bias) << "another robot, other biases";
+    EXPECT_EQ(drawTwrHardware(5, id, "DA12").bias, h.bias) << "deterministic for a seed";
+    EXPECT_NE(drawTwrHardware(6, id, "DA12").bias, h.bias) << "another robot, other biases";
     AoaBoard board;
     board.id = id;
     const double yaw = std::atan2(mountedAoaBoard(board, 5).orientation.toRotationMatrix()(1, 0),
                                   mountedAoaBoard(board, 5).orientation.toRotationMatrix()(0, 0));
     EXPECT_LE(std::abs(yaw), deg2rad(2.0) + 1e-9);
   }
-  EXPECT_NE(drawTwrHardware(5, "5722").bias, drawTwrHardware(5, "5A84").bias);
+  EXPECT_NE(drawTwrHardware(5, "5722", "DA12").bias, drawTwrHardware(5, "5A84", "DA12").bias);
+  EXPECT_NE(drawTwrHardware(5, "5722", "DA12").bias, drawTwrHardware(5, "5722", "DA13").bias)
+      << "per module-tag pair";
 }
 
 TEST(SensorProfile, RangeCarriesBiasScaleAndDirectionDependence) {
@@ -159,7 +161,7 @@ TEST(SensorProfile, RangeCarriesBiasScaleAndDirectionDependence) {
 }
 
 TEST(SensorProfile, RangeMeanAndDropoutsOverALongRun) {
-  const TwrHardware h = drawTwrHardware(1, "5722");
+  const TwrHardware h = drawTwrHardware(1, "5722", "DA12");
   TwrNoiseState state;
   TwrModule module;
   Rng rng(2);
