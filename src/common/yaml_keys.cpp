@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/common/yaml_keys.hpp"
 
+#include <fstream>
+#include <sstream>
 #include <vector>
 
 #include "radio_follow/common/param_error.hpp"
@@ -16,6 +18,30 @@ std::string flow(const YAML::Node& node) {
 }
 
 }  // namespace
+
+std::string readConfigFile(const std::string& path, const std::string& name,
+                           const std::string& expected) {
+  std::ifstream file(path);
+  if (!file) {
+    throw ParamError(name, paramValueString(path), expected);
+  }
+  std::stringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+YAML::Node loadConfigYaml(const std::string& text, const std::string& name,
+                          const std::string& origin) {
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw ParamError(name, paramValueString(origin), std::string("valid YAML (") + e.what() + ")");
+  }
+}
+
+std::string yamlValueString(const YAML::Node& node) {
+  return !node.IsDefined() || node.IsNull() ? "(missing)" : flow(node);
+}
 
 void requireYamlKeys(const YAML::Node& map, const std::set<std::string>& allowed,
                      const std::string& path) {

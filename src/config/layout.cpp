@@ -22,12 +22,7 @@ bool finite(const Eigen::Vector3d& v) {
 }
 
 std::string describe(const YAML::Node& node) {
-  if (!node.IsDefined() || node.IsNull()) {
-    return "(missing)";
-  }
-  YAML::Emitter out;
-  out << YAML::Flow << node;
-  return out.c_str();
+  return yamlValueString(node);
 }
 
 /// Reads a scalar of type T, throwing ParamError with the field's path when absent
@@ -236,13 +231,7 @@ const TdoaAnchor* Layout::findTdoaAnchor(const std::string& id) const {
 }
 
 Layout parseLayout(const std::string& yaml_text, const std::string& origin) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(yaml_text);
-  } catch (const YAML::Exception& e) {
-    throw ParamError("layout", paramValueString(origin),
-                     std::string("valid YAML (") + e.what() + ")");
-  }
+  YAML::Node root = loadConfigYaml(yaml_text, "layout", origin);
   if (!root.IsMap()) {
     throw ParamError("layout", paramValueString(origin),
                      "a YAML mapping with fixed_frame, target, "
@@ -328,13 +317,7 @@ Layout parseLayout(const std::string& yaml_text, const std::string& origin) {
 }
 
 Layout loadLayoutFile(const std::string& path) {
-  std::ifstream file(path);
-  if (!file) {
-    throw ParamError("layout", paramValueString(path), "a readable layout YAML file");
-  }
-  std::stringstream text;
-  text << file.rdbuf();
-  return parseLayout(text.str(), path);
+  return parseLayout(readConfigFile(path, "layout", "a readable layout YAML file"), path);
 }
 
 }  // namespace radio_follow

@@ -170,14 +170,17 @@ YawOffsetFit fitYawOffset(const std::vector<AzimuthSample>& samples, double outl
     use = std::move(next);
   }
   double sum = 0.0;
+  double before = 0.0;
   for (std::size_t i = 0; i < errors.size(); ++i) {
     if (use[i]) {
       sum += std::pow(wrapAngle(errors[i] - fit.yaw_offset), 2);
+      before += std::pow(errors[i], 2);
       ++fit.used;
     }
   }
   fit.rejected = errors.size() - fit.used;
   fit.residual_sigma = std::sqrt(sum / static_cast<double>(fit.used));
+  fit.rms_before = std::sqrt(before / static_cast<double>(fit.used));
   return fit;
 }
 

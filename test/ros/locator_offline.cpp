@@ -15,36 +15,23 @@
 #include <string>
 #include <vector>
 
+#include "../support/private_param.hpp"
+#include "../support/run_tool.hpp"
+#include "radio_follow/common/yaml_params.hpp"
 #include "radio_follow/ros/locator/locator_node.hpp"
 #include "radio_follow/ros/replay/locator_replay.hpp"
-#include "radio_follow/common/yaml_params.hpp"
 
 namespace rf = radio_follow;
 
 namespace {
 
 std::string param(const std::string& name) {
-  std::string value;
-  EXPECT_TRUE(ros::param::get("~" + name, value)) << name;
-  return value;
+  return rf::test::privateParam(name);
 }
 
-std::string readFile(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-/// Runs the tool (built next to this test binary); returns its exit code and puts its
-/// output (stdout + stderr) in `output`.
+/// Runs the tool (built next to this test binary).
 int runTool(const std::string& args, std::string& output) {
-  const std::string tool =
-      std::filesystem::read_symlink("/proc/self/exe").parent_path() / "locator_offline";
-  const std::string log = std::filesystem::temp_directory_path() / "locator_offline_test.log";
-  const int status = std::system((tool + " " + args + " > " + log + " 2>&1").c_str());
-  output = readFile(log);
-  return WEXITSTATUS(status);
+  return rf::test::runTool("locator_offline", args, output);
 }
 
 class LocatorOffline : public ::testing::Test {
@@ -87,10 +74,10 @@ TEST_F(LocatorOffline, ToolWritesEstimatesAndStatistics) {
             0)
       << output;
   EXPECT_NE(output.find("x real time"), std::string::npos) << output;
-  const std::string csv = readFile(out_ + "/estimates.csv");
+  const std::string csv = rf::test::readFile(out_ + "/estimates.csv");
   EXPECT_EQ(csv.rfind("t,status,x,y,z,sigma_x,sigma_y,truth_x,truth_y,error\n", 0), 0u);
   EXPECT_GT(std::count(csv.begin(), csv.end(), '\n'), 700);
-  const std::string json = readFile(out_ + "/summary.json");
+  const std::string json = rf::test::readFile(out_ + "/summary.json");
   EXPECT_NE(json.find("\"by_sector\""), std::string::npos);
   EXPECT_NE(json.find("\"by_distance\""), std::string::npos);
 }
@@ -108,7 +95,7 @@ TEST_F(LocatorOffline, SweepRanksAMisconfiguredRangeNoiseLast) {
                     output),
             0)
       << output;
-  const std::string csv = readFile(out_ + "/sweep.csv");
+  const std::string csv = rf::test::readFile(out_ + "/sweep.csv");
   std::istringstream lines(csv);
   std::string line;
   std::vector<std::string> rows;

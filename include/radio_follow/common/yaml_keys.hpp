@@ -15,4 +15,18 @@ namespace radio_follow {
 void requireYamlKeys(const YAML::Node& map, const std::set<std::string>& allowed,
                      const std::string& path);
 
+/// The text of a configuration file; throws ParamError(`name`, path, `expected`) when it
+/// cannot be read (e.g. "layout", "a readable layout YAML file").
+std::string readConfigFile(const std::string& path, const std::string& name,
+                           const std::string& expected);
+
+/// The YAML document of a configuration file's text; throws ParamError(`name`, origin,
+/// "valid YAML (...)") with the parser's message when it is not YAML.
+YAML::Node loadConfigYaml(const std::string& text, const std::string& name,
+                          const std::string& origin);
+
+/// A YAML value as a ParamError message shows it: in flow style (`[1, 2]`, `{a: 1}`), or
+/// "(missing)" for an absent or null node.
+std::string yamlValueString(const YAML::Node& node);
+
 }  // namespace radio_follow

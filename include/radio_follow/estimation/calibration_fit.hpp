@@ -50,6 +50,7 @@ struct YawOffsetFit {
   std::size_t used = 0;
   std::size_t rejected = 0;
   double residual_sigma = 0.0;  ///< rad, of the used samples after the correction
+  double rms_before = 0.0;      ///< rad, RMS of truth - measured over the used samples
 };
 
 /// Robust circular mean of truth - measured. Samples farther than `outlier_sigmas`

@@ -10,17 +10,14 @@
 #include <stdexcept>
 
 #include "radio_follow/ros/locator/locator_inputs.hpp"
+#include "radio_follow/ros/replay/bag_file.hpp"
 
 namespace radio_follow {
 
 BagData loadBag(const std::string& path, const std::string& truth_topic) {
   BagData data;
   rosbag::Bag bag;
-  try {
-    bag.open(path, rosbag::bagmode::Read);
-  } catch (const rosbag::BagException& e) {
-    throw std::runtime_error("cannot read bag '" + path + "': " + e.what());
-  }
+  openBagForReading(bag, path);
   // The replay clock is the messages' own stamps (the drivers stamp on receipt), the
   // time base the locator node compares them with; the recorder's clock may differ.
   // Only the connections of these types are read (TF, odometry, ... are skipped).

@@ -73,6 +73,8 @@ TEST(FitYawOffset, RecoversTheMountingErrorAcrossTheWrap) {
   EXPECT_NEAR(fit.yaw_offset, offset, 0.01);
   EXPECT_EQ(fit.rejected, 1u);
   EXPECT_NEAR(fit.residual_sigma, 0.05, 0.01);
+  // Before the correction the offset adds to the noise: sqrt(0.12^2 + 0.05^2) = 0.13.
+  EXPECT_NEAR(fit.rms_before, 0.13, 0.01);
   EXPECT_THROW(fitYawOffset(std::vector<AzimuthSample>(4)), std::invalid_argument);
 }
 
