@@ -2,9 +2,7 @@
 #include "radio_follow/evaluation/calibration_run.hpp"
 
 #include <Eigen/Geometry>
-#include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
@@ -55,12 +53,6 @@ const Stand* standAt(const std::vector<Stand>& stands, double t) {
     }
   }
   return nullptr;
-}
-
-/// Degrees as the layout files write them: no "-0.00" for a rounding residue.
-double degrees(double radians) {
-  const double d = rad2deg(radians);
-  return std::abs(d) < 0.005 ? 0.0 : d;
 }
 
 }  // namespace
@@ -138,41 +130,15 @@ Layout locatorLayoutFor(const Layout& layout, const sim::WorldConfig& world) {
                                                          : layout;
 }
 
-std::string calibratedLayoutYaml(const Layout& layout) {
-  std::string out;
-  char line[256];
-  if (!layout.twr_modules.empty()) {
-    out += "twr_modules:\n";
+LayoutCalibrationUpdate CalibrationResult::update() const {
+  LayoutCalibrationUpdate u;
+  for (const ModuleCalibration& m : modules) {
+    u.range_calibration[m.id] = m.fit.coefficients;
   }
-  for (const TwrModule& m : layout.twr_modules) {
-    std::string coefficients;
-    for (std::size_t k = 0; k < m.calibration.size(); ++k) {
-      char c[32];
-      std::snprintf(c, sizeof(c), "%s%.4f", k == 0 ? "" : ", ", m.calibration[k]);
-      coefficients += c;
-    }
-    std::snprintf(
-        line, sizeof(line), "  - {id: \"%s\", position: [%.3f, %.3f, %.3f], calibration: [%s]}\n",
-        m.id.c_str(), m.position.x(), m.position.y(), m.position.z(), coefficients.c_str());
-    out += line;
+  for (const BoardCalibration& b : boards) {
+    u.yaw_offset[b.id] = b.fit.yaw_offset;
   }
-  if (!layout.aoa_boards.empty()) {
-    out += "aoa_boards:\n";
-  }
-  for (const AoaBoard& b : layout.aoa_boards) {
-    // Z-Y-X angles, the layout format's rpy_deg.
-    const Eigen::Matrix3d r = b.orientation.toRotationMatrix();
-    const double yaw = std::atan2(r(1, 0), r(0, 0));
-    const double pitch = std::asin(std::clamp(-r(2, 0), -1.0, 1.0));
-    const double roll = std::atan2(r(2, 1), r(2, 2));
-    std::snprintf(line, sizeof(line),
-                  "  - {id: %s, kind: %s, position: [%.3f, %.3f, %.3f], rpy_deg: [%.2f, %.2f, "
-                  "%.2f]}\n",
-                  b.id.c_str(), toString(b.kind).c_str(), b.position.x(), b.position.y(),
-                  b.position.z(), degrees(roll), degrees(pitch), degrees(yaw));
-    out += line;
-  }
-  return out;
+  return u;
 }
 
 }  // namespace evaluation

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "radio_follow/config/layout.hpp"
+#include "radio_follow/config/layout_writer.hpp"
 #include "radio_follow/estimation/calibration_fit.hpp"
 #include "radio_follow/sim/world.hpp"
 
@@ -43,6 +44,9 @@ struct CalibrationResult {
   Layout layout;
   std::vector<ModuleCalibration> modules;
   std::vector<BoardCalibration> boards;
+
+  /// The fits as an update of the layout's file (config/layout_writer.hpp).
+  LayoutCalibrationUpdate update() const;
 };
 
 /// Calibrates `layout` as one would a real robot: the simulated sensors (`world`: profile,
@@ -59,10 +63,6 @@ CalibrationResult runCalibration(const Layout& layout, const sim::WorldConfig& w
 /// calibration run's with the realistic profile; `layout` itself with the ideal one, whose
 /// sensors err as the shipped layouts' calibration expects (thesis Table 3.1).
 Layout locatorLayoutFor(const Layout& layout, const sim::WorldConfig& world);
-
-/// A layout's calibrated entries as YAML lines in the config/layouts/*.yaml format
-/// (`twr_modules` with calibration, `aoa_boards` with rpy_deg), for pasting into a file.
-std::string calibratedLayoutYaml(const Layout& layout);
 
 }  // namespace evaluation
 }  // namespace radio_follow

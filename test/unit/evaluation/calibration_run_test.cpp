@@ -8,6 +8,8 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
@@ -106,22 +108,33 @@ TEST(CalibrationRun, IsDeterministicAndTheIdealProfileKeepsTheLayout) {
   for (std::size_t i = 0; i < a.twr_modules.size(); ++i) {
     EXPECT_EQ(a.twr_modules[i].calibration, b.twr_modules[i].calibration);
   }
-  EXPECT_EQ(calibratedLayoutYaml(a), calibratedLayoutYaml(b));
+  EXPECT_TRUE(a.aoa_boards[0].orientation.isApprox(b.aoa_boards[0].orientation, 0.0));
   sim::WorldConfig ideal;
   ideal.profile = sim::SensorProfile::kIdeal;
-  EXPECT_EQ(calibratedLayoutYaml(locatorLayoutFor(spot(), ideal)), calibratedLayoutYaml(spot()));
-  EXPECT_NE(calibratedLayoutYaml(locatorLayoutFor(spot(), realistic(4))),
-            calibratedLayoutYaml(spot()));
+  const Layout kept = locatorLayoutFor(spot(), ideal);
+  EXPECT_EQ(kept.twr_modules[0].calibration, spot().twr_modules[0].calibration);
+  EXPECT_TRUE(kept.aoa_boards[0].orientation.isApprox(spot().aoa_boards[0].orientation, 0.0));
+  EXPECT_NE(locatorLayoutFor(spot(), realistic(4)).twr_modules[0].calibration,
+            spot().twr_modules[0].calibration);
 }
 
-TEST(CalibrationRun, YamlReadsBackAsTheSameLayout) {
-  const Layout calibrated = runCalibration(spot(), realistic(1)).layout;
-  const Layout back = parseLayout(
-      "target: {uwb_anchor_id: DA12}\n" + calibratedLayoutYaml(calibrated), "calibrated");
-  ASSERT_EQ(back.twr_modules.size(), calibrated.twr_modules.size());
-  EXPECT_NEAR(back.twr_modules[0].calibration[0], calibrated.twr_modules[0].calibration[0], 1e-4);
-  EXPECT_NEAR(yawOf(back.aoa_boards[1].orientation), yawOf(calibrated.aoa_boards[1].orientation),
-              1e-4);
+TEST(CalibrationRun, ItsUpdateWritesTheCalibratedLayout) {
+  const CalibrationResult result = runCalibration(spot(), realistic(1));
+  std::ifstream in(std::string(RF_CONFIG_DIR) + "/layouts/spot.yaml");
+  std::stringstream text;
+  text << in.rdbuf();
+  const Layout back =
+      parseLayout(writeCalibratedLayout(text.str(), "spot.yaml", result.update(), {}), "written");
+  for (std::size_t i = 0; i < back.twr_modules.size(); ++i) {
+    for (std::size_t k = 0; k < back.twr_modules[i].calibration.size(); ++k) {
+      EXPECT_NEAR(back.twr_modules[i].calibration[k], result.layout.twr_modules[i].calibration[k],
+                  1e-5);  // written with 6 significant digits
+    }
+  }
+  for (std::size_t i = 0; i < back.aoa_boards.size(); ++i) {
+    EXPECT_NEAR(yawOf(back.aoa_boards[i].orientation),
+                yawOf(result.layout.aoa_boards[i].orientation), 1e-4);
+  }
 }
 
 TEST(CalibrationRun, RefusesBadParametersNamingThem) {
