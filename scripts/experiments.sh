@@ -2,9 +2,11 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # The closed-loop experiments of doc/experiments.md (test/experiments.yaml: the thesis's
 # Experiment 3 analogues and the fault runs).
-#   bash scripts/experiments.sh [--seeds N] [name ...]
+#   bash scripts/experiments.sh [--seeds N] [--sensor-profile ideal|realistic] [name ...]
 #       the lockstep runs (tool `experiments`): deterministic, seeds 1..N (default 8), a
-#       few seconds; prints the table and every broken threshold.
+#       few seconds; prints the table and every broken threshold. The sensor profile is
+#       test/experiments.yaml's unless given (realistic: each seed calibrates its own
+#       simulated robot first, doc/experiments.md).
 #   bash scripts/experiments.sh --ros [--seed N] [name ...]
 #       the ROS smoke runs (test/ros/experiments/*.test: the real nodes, demo.launch) at
 #       noise seed N (default 1), then the table of their reports. Each also checks that it

@@ -8,6 +8,7 @@
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/common/yaml_params.hpp"
+#include "radio_follow/evaluation/calibration_run.hpp"
 
 namespace radio_follow {
 namespace evaluation {
@@ -39,6 +40,22 @@ void ClosedLoopConfig::validate() const {
   require(std::isfinite(tf_timeout) && tf_timeout >= 0.0 && tf_timeout < 1.0, "~tf_timeout",
           tf_timeout, "a timeout in [0, 1) seconds");
   require(rateOk(evaluator_rate), "evaluator rate", evaluator_rate, "a rate in (0, 1000] Hz");
+  if (locator_layout) {
+    // The locator hears the world's sensors by ID: a calibrated layout of the same robot.
+    locator_layout->validate();
+    const auto ids = [](const Layout& l) {
+      std::vector<std::string> out;
+      for (const TwrModule& m : l.twr_modules) {
+        out.push_back(m.id);
+      }
+      for (const AoaBoard& b : l.aoa_boards) {
+        out.push_back(b.id);
+      }
+      return out;
+    };
+    require(ids(*locator_layout) == ids(layout), "locator_layout", std::string("(a layout)"),
+            "the same TWR modules and AoA boards as the world's layout, in the same order");
+  }
   for (const SensorOutage& o : outages) {
     const bool known = std::any_of(layout.twr_modules.begin(), layout.twr_modules.end(),
                                    [&](const TwrModule& m) { return m.id == o.sensor; }) ||
@@ -53,7 +70,8 @@ void ClosedLoopConfig::validate() const {
 ClosedLoopConfig loadClosedLoopConfig(const std::string& dir, const std::string& layout,
                                       const std::string& scenario, FollowController controller,
                                       int seed, const std::string& controller_params,
-                                      const std::string& locator_overrides) {
+                                      const std::string& locator_overrides,
+                                      std::optional<sim::SensorProfile> profile) {
   require(seed >= 0, "seed", seed, "an integer >= 0");
   ClosedLoopConfig c;
   c.controller = controller;
@@ -65,6 +83,11 @@ ClosedLoopConfig loadClosedLoopConfig(const std::string& dir, const std::string&
   const YamlParams simulator = YamlParams::fromFile(dir + "/simulator.yaml");
   c.world.load(simulator);
   c.world.seed = static_cast<std::uint64_t>(seed);
+  // One robot per seed: nothing gets tuned to one simulated robot's hardware.
+  c.world.hardware_seed = static_cast<std::uint64_t>(seed);
+  if (profile) {
+    c.world.profile = *profile;
+  }
   simulator.param("step_rate", c.step_rate, c.step_rate);
   simulator.param("cmd_timeout", c.cmd_timeout, c.cmd_timeout);
   // What only the ROS node uses (clock, frames, serial devices, the laser scan).
@@ -138,10 +161,14 @@ bool ClosedLoop::Timer::due(double t) {
 ClosedLoop::ClosedLoop(const ClosedLoopConfig& config)
     : config_([&] {
         config.validate();
-        return config;
+        ClosedLoopConfig c = config;
+        if (!c.locator_layout) {
+          c.locator_layout = locatorLayoutFor(c.layout, c.world);
+        }
+        return c;
       }()),
       world_(config_.layout, config_.scenario, config_.world),
-      locator_(config_.layout, config_.locator),
+      locator_(*config_.locator_layout, config_.locator),
       pipeline_(config_.pipeline),
       velocity_law_(config_.law),
       path_law_(config_.path, config_.law),

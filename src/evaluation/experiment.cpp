@@ -33,9 +33,21 @@ std::optional<double> optionalNumber(const YamlParams& p, const std::string& nam
 std::vector<Experiment> loadExperiments(const std::string& path) {
   const YamlParams file = YamlParams::fromFile(path);
   std::vector<Experiment> experiments;
+  std::string file_profile = "ideal";
+  const YAML::Node file_profile_node = file.root()["sensor_profile"];
+  if (file_profile_node.IsDefined()) {
+    require(file_profile_node.IsScalar(), path + ": sensor_profile", YAML::Dump(file_profile_node),
+            "'realistic' or 'ideal'");
+    file_profile = file_profile_node.as<std::string>();
+  }
+  const sim::SensorProfile profile =
+      sim::parseSensorProfile(file_profile, path + ": sensor_profile");
   for (const auto& entry : file.root()) {
     Experiment e;
     e.name = entry.first.as<std::string>();
+    if (e.name == "sensor_profile") {
+      continue;
+    }
     const std::string where = path + ": " + e.name;
     const YamlParams p(entry.second);
     p.param("layout", e.layout, e.layout);
@@ -48,6 +60,9 @@ std::vector<Experiment> loadExperiments(const std::string& path) {
                                                  : FollowController::kVelocity;
     require(!e.layout.empty() && !e.scenario.empty(), where, e.name,
             "a layout and a scenario name");
+    std::string own_profile = sim::toString(profile);
+    p.param("sensor_profile", own_profile, own_profile);
+    e.sensor_profile = sim::parseSensorProfile(own_profile, where + ".sensor_profile");
     p.allow("outages");
     const YAML::Node outages = entry.second["outages"];
     for (std::size_t i = 0; outages && i < outages.size(); ++i) {
@@ -128,8 +143,9 @@ std::vector<std::string> checkRun(const ExperimentCheck& check, const FollowRepo
 
 ExperimentResult runExperiment(const Experiment& experiment, const std::string& config_dir,
                                int seed) {
-  ClosedLoopConfig config = loadClosedLoopConfig(config_dir, experiment.layout, experiment.scenario,
-                                                 experiment.controller, seed);
+  ClosedLoopConfig config =
+      loadClosedLoopConfig(config_dir, experiment.layout, experiment.scenario,
+                           experiment.controller, seed, "", "", experiment.sensor_profile);
   config.outages = experiment.outages;
   ClosedLoop loop(config);
   ExperimentResult result;

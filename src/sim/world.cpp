@@ -20,6 +20,13 @@ double uniform(Rng& rng, double hi) {
 }  // namespace
 
 void WorldConfig::load(const ParamSource& p) {
+  std::string profile_name = toString(profile);
+  p.param("sensor_profile", profile_name, profile_name);
+  profile = parseSensorProfile(profile_name, "~sensor_profile");
+  int hardware = static_cast<int>(hardware_seed);
+  p.param("hardware_seed", hardware, hardware);
+  require(hardware >= 0, "~hardware_seed", hardware, "an integer >= 0");
+  hardware_seed = static_cast<std::uint64_t>(hardware);
   p.param("robot/max_linear", robot.max_linear, robot.max_linear);
   p.param("robot/max_angular", robot.max_angular, robot.max_angular);
   p.param("robot/max_linear_accel", robot.max_linear_accel, robot.max_linear_accel);
@@ -82,6 +89,17 @@ World::World(const Layout& layout, const Scenario& scenario, const WorldConfig& 
   }
   tdoa_schedule_ =
       Schedule{1.0 / config_.rates.tdoa_hz, uniform(rng_, 1.0 / config_.rates.tdoa_hz)};
+  if (config_.profile == SensorProfile::kRealistic) {
+    for (const TwrModule& m : layout_.twr_modules) {
+      twr_hardware_.push_back(
+          drawTwrHardware(config_.hardware_seed, m.id, layout_.target_anchor_id));
+      twr_state_.emplace_back(RealisticFigures{}, config_.twr.sigma_scale);
+    }
+    for (const AoaBoard& b : layout_.aoa_boards) {
+      mounted_boards_.push_back(mountedAoaBoard(b, config_.hardware_seed));
+    }
+    tdoa_hardware_.emplace(layout_.tdoa_anchors, config_.hardware_seed);
+  }
 }
 
 Eigen::Vector3d World::targetInWorld() const {
@@ -109,25 +127,36 @@ StepEvents World::step(double cmd_linear, double cmd_angular, double dt) {
   // Sensors sample the world as it is at the end of the step; their report times are
   // their own schedule's, so several modules never report in lockstep.
   const Eigen::Vector3d target = targetInRobot();
+  const bool realistic = config_.profile == SensorProfile::kRealistic;
   for (std::size_t i = 0; i < twr_schedule_.size(); ++i) {
+    const TwrModule& module = layout_.twr_modules[i];
     for (Schedule& s = twr_schedule_[i]; s.next <= t_; s.next += s.period) {
-      if (const auto range = simulateTwrRange(layout_.twr_modules[i], config_.twr, target, rng_)) {
+      const auto range = realistic ? simulateRealisticTwr(module, twr_hardware_[i], config_.twr,
+                                                          twr_state_[i], target, s.next, rng_)
+                                   : simulateTwrRange(module, config_.twr, target, rng_);
+      if (range) {
         events.twr.push_back(TwrEvent{s.next, i, *range});
       }
     }
   }
   for (std::size_t i = 0; i < aoa_schedule_.size(); ++i) {
     for (Schedule& s = aoa_schedule_[i]; s.next <= t_; s.next += s.period) {
-      if (const auto sample = simulateAoa(layout_.aoa_boards[i], config_.aoa, target, rng_)) {
+      const auto sample = realistic
+                              ? simulateRealisticAoa(mounted_boards_[i], config_.aoa, target, rng_)
+                              : simulateAoa(layout_.aoa_boards[i], config_.aoa, target, rng_);
+      if (sample) {
         events.aoa.push_back(AoaEvent{s.next, i, *sample});
       }
     }
   }
   if (layout_.tdoa_anchors.size() >= 2) {
+    const auto& anchors = layout_.tdoa_anchors;
     for (Schedule& s = tdoa_schedule_; s.next <= t_; s.next += s.period) {
-      events.tdoa.push_back(
-          TdoaEvent{s.next, simulateTdoa(layout_.tdoa_anchors, config_.tdoa_reference,
-                                         config_.tdoa_sigma, target, rng_)});
+      events.tdoa.push_back(TdoaEvent{
+          s.next, realistic ? tdoa_hardware_->simulate(anchors, config_.tdoa_reference,
+                                                       config_.tdoa_sigma, target, s.next, rng_)
+                            : simulateTdoa(anchors, config_.tdoa_reference, config_.tdoa_sigma,
+                                           target, rng_)});
     }
   }
   return events;

@@ -6,11 +6,15 @@
 //   closed_loop [--layout spot] [--scenario outdoor_loop] [--controller velocity_controller]
 //               [--seed 1] [--config-dir DIR] [--controller-params FILE]
 //               [--locator-overrides FILE] [--outage SENSOR:AT:DURATION]... [--csv FILE]
+//               [--sensor-profile ideal|realistic] [--hardware-seed N]
+// --sensor-profile replaces config/simulator.yaml's; --hardware-seed (default: the seed)
+// picks the simulated robot, which the realistic profile calibrates before the run.
 #include "radio_follow/evaluation/closed_loop.hpp"
 
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <optional>
 #include <string>
 
 #include "radio_follow/common/param_error.hpp"
@@ -22,7 +26,8 @@ int usage(const std::string& problem) {
                "closed_loop: %s\nusage: closed_loop [--layout L] [--scenario S] [--controller "
                "velocity_controller|path_follower] [--seed N] [--config-dir DIR] "
                "[--controller-params FILE] [--locator-overrides FILE] "
-               "[--outage SENSOR:AT:DURATION]... [--csv FILE]\n",
+               "[--outage SENSOR:AT:DURATION]... [--csv FILE] "
+               "[--sensor-profile ideal|realistic] [--hardware-seed N]\n",
                problem.c_str());
   return 2;
 }
@@ -38,7 +43,9 @@ int main(int argc, char** argv) {
   std::string controller_params;
   std::string locator_overrides;
   std::string csv;
+  std::string profile;
   int seed = 1;
+  std::optional<int> hardware_seed;
   std::vector<radio_follow::evaluation::SensorOutage> outages;
   for (int i = 1; i < argc; i += 2) {
     const std::string flag = argv[i];
@@ -60,6 +67,10 @@ int main(int argc, char** argv) {
       controller_params = value;
     } else if (flag == "--locator-overrides") {
       locator_overrides = value;
+    } else if (flag == "--sensor-profile") {
+      profile = value;
+    } else if (flag == "--hardware-seed") {
+      hardware_seed = std::atoi(value.c_str());
     } else if (flag == "--csv") {
       csv = value;
     } else if (flag == "--outage") {
@@ -78,12 +89,21 @@ int main(int argc, char** argv) {
     return usage("--controller must be velocity_controller or path_follower");
   }
   try {
-    radio_follow::evaluation::ClosedLoopConfig config = radio_follow::evaluation::loadClosedLoopConfig(
-        config_dir, layout, scenario,
-        controller == "path_follower" ? FollowController::kPathFollower
-                                      : FollowController::kVelocity,
-        seed, controller_params, locator_overrides);
+    radio_follow::evaluation::ClosedLoopConfig config =
+        radio_follow::evaluation::loadClosedLoopConfig(
+            config_dir, layout, scenario,
+            controller == "path_follower" ? FollowController::kPathFollower
+                                          : FollowController::kVelocity,
+            seed, controller_params, locator_overrides,
+            profile.empty() ? std::nullopt
+                            : std::optional(radio_follow::sim::parseSensorProfile(
+                                  profile, "--sensor-profile")));
     config.outages = outages;
+    if (hardware_seed) {
+      radio_follow::require(*hardware_seed >= 0, "--hardware-seed", *hardware_seed,
+                            "an integer >= 0");
+      config.world.hardware_seed = static_cast<std::uint64_t>(*hardware_seed);
+    }
     radio_follow::evaluation::ClosedLoop loop(config);
     const radio_follow::evaluation::FollowReport report = loop.run();
     std::printf("%s\n", report.toJson().c_str());

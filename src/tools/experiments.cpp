@@ -4,7 +4,10 @@
 // the Markdown table of doc/experiments.md (ranges over the seeds), then one line per
 // broken threshold. Exit status 1 when any run broke one. Deterministic: the same
 // arguments print the same table.
-//   experiments [--seeds N] [--file test/experiments.yaml] [--config-dir DIR] [name ...]
+//   experiments [--seeds N] [--file test/experiments.yaml] [--config-dir DIR]
+//               [--sensor-profile ideal|realistic] [name ...]
+// --sensor-profile replaces every experiment's (default: the file's); with realistic each
+// seed is its own simulated robot, calibrated by the calibration run before it follows.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -50,13 +53,18 @@ int main(int argc, char** argv) {
   int seeds = 8;
   std::string file = RF_EXPERIMENTS_FILE;
   std::string config_dir = RF_CONFIG_DIR;
+  std::string profile;
   std::vector<std::string> names;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    if ((arg == "--seeds" || arg == "--file" || arg == "--config-dir") && i + 1 < argc) {
+    if ((arg == "--seeds" || arg == "--file" || arg == "--config-dir" ||
+         arg == "--sensor-profile") &&
+        i + 1 < argc) {
       const std::string value = argv[++i];
       if (arg == "--seeds") {
         seeds = std::atoi(value.c_str());
+      } else if (arg == "--sensor-profile") {
+        profile = value;
       } else if (arg == "--file") {
         file = value;
       } else {
@@ -64,7 +72,8 @@ int main(int argc, char** argv) {
       }
     } else if (arg.rfind("--", 0) == 0) {
       std::fprintf(stderr,
-                   "usage: experiments [--seeds N] [--file FILE] [--config-dir DIR] [name ...]\n");
+                   "usage: experiments [--seeds N] [--file FILE] [--config-dir DIR] "
+                   "[--sensor-profile ideal|realistic] [name ...]\n");
       return 2;
     } else {
       names.push_back(arg);
@@ -85,9 +94,13 @@ int main(int argc, char** argv) {
       std::printf("---|");
     }
     std::printf("\n");
-    for (const auto& experiment : radio_follow::evaluation::loadExperiments(file)) {
+    for (auto experiment : radio_follow::evaluation::loadExperiments(file)) {
       if (!names.empty() && std::find(names.begin(), names.end(), experiment.name) == names.end()) {
         continue;
+      }
+      if (!profile.empty()) {
+        experiment.sensor_profile =
+            radio_follow::sim::parseSensorProfile(profile, "--sensor-profile");
       }
       std::vector<std::vector<double>> values(std::size(kColumns));
       for (int seed = 1; seed <= seeds; ++seed) {
@@ -105,7 +118,8 @@ int main(int argc, char** argv) {
       }
       std::printf("\n");
     }
-    std::printf("\nseeds 1-%d; %zu threshold(s) broken\n", seeds, broken.size());
+    std::printf("\nseeds 1-%d; sensor profile %s; %zu threshold(s) broken\n", seeds,
+                profile.empty() ? "as in the file" : profile.c_str(), broken.size());
     for (const std::string& b : broken) {
       std::printf("BROKEN %s\n", b.c_str());
     }

@@ -33,7 +33,12 @@ enum class FollowController { kVelocity, kPathFollower };
 /// Everything a closed-loop run needs, as the nodes of follower.launch and
 /// simulator.launch get it (loadClosedLoopConfig reads the same shipped files).
 struct ClosedLoopConfig {
+  /// Where the sensors are meant to be: the simulated world's layout.
   Layout layout;
+  /// The layout the locator is given. Empty: ClosedLoop fills it with
+  /// locatorLayoutFor(layout, world) (evaluation/calibration_run.hpp): with the realistic
+  /// profile it first runs the calibration run on this run's simulated hardware.
+  std::optional<Layout> locator_layout;
   sim::Scenario scenario;
   sim::WorldConfig world;
   double step_rate = 100.0;  ///< simulator physics steps per second
@@ -64,11 +69,14 @@ struct ClosedLoopConfig {
 /// (then `locator_overrides` if not empty), config/controller_common.yaml,
 /// config/velocity_controller.yaml, config/path_follower.yaml for the path follower (then
 /// `controller_params` if not empty). Unknown keys in the controller files are refused
-/// as the nodes refuse them. Throws ParamError.
+/// as the nodes refuse them. `profile` replaces simulator.yaml's sensor_profile when
+/// given. The simulated hardware is the seed's (world.hardware_seed = seed), so runs over
+/// seeds are runs on as many robots. Throws ParamError.
 ClosedLoopConfig loadClosedLoopConfig(const std::string& config_dir, const std::string& layout,
                                       const std::string& scenario, FollowController controller,
                                       int seed, const std::string& controller_params = "",
-                                      const std::string& locator_overrides = "");
+                                      const std::string& locator_overrides = "",
+                                      std::optional<sim::SensorProfile> profile = std::nullopt);
 
 /// The whole follow loop in one process on simulated time: world and sensors (sim::World),
 /// the locator, the controller's law and the command pipeline (safety stop, limits), and
@@ -90,6 +98,8 @@ class ClosedLoop {
 
   const FollowMetrics& metrics() const { return metrics_; }
   const sim::World& world() const { return world_; }
+  /// The layout the locator runs with (calibrated with the realistic profile).
+  const Layout& locatorLayout() const { return *config_.locator_layout; }
   const estimation::LocatorStats& locatorStats() const { return locator_.stats(); }
   /// One controller tick's command, on the simulator's clock (scenario time + 1 s, as
   /// the ROS simulator stamps).

@@ -31,11 +31,14 @@ struct Experiment {
   std::string scenario;
   FollowController controller = FollowController::kVelocity;
   std::vector<SensorOutage> outages;
+  /// The simulator's sensor profile: the entry's `sensor_profile`, else the file's.
+  sim::SensorProfile sensor_profile = sim::SensorProfile::kIdeal;
   ExperimentCheck check;
 };
 
 /// Reads the experiment definitions (format in test/experiments.yaml); throws ParamError
-/// naming the bad entry. Unknown keys are refused.
+/// naming the bad entry. Unknown keys are refused. A top-level `sensor_profile: ideal |
+/// realistic` (default ideal) is every experiment's profile unless it names its own.
 std::vector<Experiment> loadExperiments(const std::string& path);
 
 /// A forward command at a time, as a controller sent it.
@@ -55,7 +58,9 @@ struct ExperimentResult {
 };
 
 /// Runs `experiment` in the lockstep closed loop with the configuration under
-/// `config_dir` and noise seed `seed`, and checks it.
+/// `config_dir` and noise seed `seed` (the simulated hardware's too), and checks it.
+/// With the realistic profile the locator gets the layout the calibration run fitted on
+/// that hardware (ClosedLoopConfig::locator_layout).
 ExperimentResult runExperiment(const Experiment& experiment, const std::string& config_dir,
                                int seed);
 

@@ -8,6 +8,7 @@
 #include "radio_follow/common/param_source.hpp"
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/sim/robot.hpp"
+#include "radio_follow/sim/sensor_profile.hpp"
 #include "radio_follow/sim/target_path.hpp"
 #include "radio_follow/sim/virtual_sensors.hpp"
 
@@ -28,10 +29,15 @@ struct WorldConfig {
   AoaNoise aoa;
   double tdoa_sigma = 0.3;  ///< m (1 ns)
   std::size_t tdoa_reference = 0;
-  std::uint64_t seed = 1;
+  std::uint64_t seed = 1;  ///< the noise: every random draw but the hardware's
+  SensorProfile profile = SensorProfile::kRealistic;
+  /// The simulated robot's hardware (realistic profile): every module's bias and scale,
+  /// every board's mounting error, every anchor's offset. Independent of `seed`.
+  std::uint64_t hardware_seed = 1;
 
-  /// Reads the simulator's world parameters (config/simulator.yaml: robot/*, *_rate,
-  /// twr_*, aoa_*, tdoa_*; not the seed nor twr_occlusions, which the caller sets).
+  /// Reads the simulator's world parameters (config/simulator.yaml: sensor_profile,
+  /// hardware_seed, robot/*, *_rate, twr_*, aoa_*, tdoa_*; not the seed nor
+  /// twr_occlusions, which the caller sets).
   void load(const ParamSource& source);
   void validate() const;
 };
@@ -60,6 +66,9 @@ struct StepEvents {
 
 /// The simulated world: a robot driven by cmd_vel, a scripted target, and every
 /// sensor of a layout reporting at its own rate and phase. Deterministic for a seed.
+/// With the realistic profile the layout is where the sensors were meant to be: the
+/// hardware errs from it (WorldConfig::hardware_seed), and a locator given the same
+/// layout uncalibrated sees those errors (evaluation/calibration_run.hpp fits them).
 class World {
  public:
   World(const Layout& layout, const Scenario& scenario, const WorldConfig& config);
@@ -94,6 +103,11 @@ class World {
   std::vector<Schedule> twr_schedule_;
   std::vector<Schedule> aoa_schedule_;
   Schedule tdoa_schedule_{0.0, 0.0};
+  // The realistic profile's hardware and per-sensor noise state (unused when ideal).
+  std::vector<TwrHardware> twr_hardware_;
+  std::vector<TwrNoiseState> twr_state_;
+  std::vector<AoaBoard> mounted_boards_;
+  std::optional<TdoaHardware> tdoa_hardware_;
 };
 
 }  // namespace sim

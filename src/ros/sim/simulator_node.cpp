@@ -90,10 +90,12 @@ SimulatorNode::SimulatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
   timer_ = nh.createWallTimer(ros::WallDuration(wall_period), &SimulatorNode::onTick, this);
   ROS_INFO(
       "simulator: scenario '%s' (%.1f s), %zu UWB modules, %zu AoA boards, %zu TDoA anchors, "
-      "%s time x%.1f, output %s",
+      "%s time x%.1f, output %s, %s sensors (hardware seed %llu)",
       scenario.name.c_str(), scenario.duration, layout_.twr_modules.size(),
       layout_.aoa_boards.size(), layout_.tdoa_anchors.size(), sim_time_ ? "sim" : "wall",
-      sim_time_ ? params_.time_factor : 1.0, params_.output.c_str());
+      sim_time_ ? params_.time_factor : 1.0, params_.output.c_str(),
+      sim::toString(params_.world.profile).c_str(),
+      static_cast<unsigned long long>(params_.world.hardware_seed));
 }
 
 ros::Time SimulatorNode::stampOf(double sim_seconds) const {

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,34 @@ TEST(ClosedLoop, EveryExperimentMeetsItsThresholdsOnEverySeed) {
   }
 }
 
+TEST(ClosedLoop, RealisticRunsFollowWithTheirOwnRobotsCalibration) {
+  ClosedLoopConfig c =
+      loadClosedLoopConfig(RF_CONFIG_DIR, "spot", "outdoor_loop", FollowController::kVelocity, 2,
+                           "", "", sim::SensorProfile::kRealistic);
+  EXPECT_EQ(c.world.hardware_seed, 2u) << "one simulated robot per seed";
+  ClosedLoop calibrated(c);
+  EXPECT_NE(calibrated.locatorLayout().twr_modules[0].calibration,
+            c.layout.twr_modules[0].calibration);
+  const double with = calibrated.run().estimate_error_median;
+  ClosedLoop again(c);
+  EXPECT_EQ(again.run().estimate_error_median, with) << "the calibration run is deterministic";
+  c.locator_layout = c.layout;  // the shipped calibration: the ideal sensors'
+  ClosedLoop uncalibrated(c);
+  const double without = uncalibrated.run().estimate_error_median;
+  std::printf(
+      "realistic spot, seed 2: median estimate error %.3f m calibrated, %.3f m with the "
+      "ideal profile's calibration\n",
+      with, without);
+  EXPECT_LT(with, without);
+
+  ClosedLoopConfig ideal =
+      loadClosedLoopConfig(RF_CONFIG_DIR, "spot", "outdoor_loop", FollowController::kVelocity, 2,
+                           "", "", sim::SensorProfile::kIdeal);
+  ClosedLoop ideal_loop(ideal);
+  EXPECT_EQ(ideal_loop.locatorLayout().twr_modules[0].calibration,
+            ideal.layout.twr_modules[0].calibration);
+}
+
 TEST(ClosedLoop, ThresholdsCanFail) {
   // Without the speed feed-forward the robot trails the walking person: the checks see it.
   Experiment e = loadExperiments(RF_EXPERIMENTS_FILE).front();
@@ -79,6 +108,32 @@ TEST(ClosedLoop, AllModulesSilentStopsTheRobot) {
     }
   }
   EXPECT_TRUE(stopped);
+}
+
+TEST(ExperimentsFile, SensorProfileDefaultsToTheFilesAndEntriesMayOverride) {
+  const std::string path = ::testing::TempDir() + "/experiments_profile.yaml";
+  const auto write = [&](const std::string& text) {
+    std::FILE* f = std::fopen(path.c_str(), "w");
+    std::fputs(text.c_str(), f);
+    std::fclose(f);
+  };
+  write(
+      "sensor_profile: realistic\n"
+      "a: {layout: spot, scenario: outdoor_loop}\n"
+      "b: {layout: spot, scenario: outdoor_loop, sensor_profile: ideal}\n");
+  const std::vector<Experiment> e = loadExperiments(path);
+  ASSERT_EQ(e.size(), 2u);
+  EXPECT_EQ(e[0].sensor_profile, sim::SensorProfile::kRealistic);
+  EXPECT_EQ(e[1].sensor_profile, sim::SensorProfile::kIdeal);
+  write("a: {layout: spot, scenario: outdoor_loop}\n");
+  EXPECT_EQ(loadExperiments(path).front().sensor_profile, sim::SensorProfile::kIdeal);
+  write("a: {layout: spot, scenario: outdoor_loop, sensor_profile: rough}\n");
+  try {
+    loadExperiments(path);
+    FAIL() << "accepted sensor_profile: rough";
+  } catch (const ParamError& error) {
+    EXPECT_EQ(error.name(), path + ": a.sensor_profile");
+  }
 }
 
 TEST(ClosedLoopConfigTest, RefusesUnknownSensorsAndBadFiles) {

@@ -5,6 +5,7 @@
 
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/common/yaml_params.hpp"
 #include "radio_follow/sim/world.hpp"
 
 namespace radio_follow {
@@ -24,6 +25,7 @@ Scenario standing(double x, double y) {
 
 TEST(World, EverySensorReportsAtItsRate) {
   WorldConfig config;
+  config.profile = SensorProfile::kIdeal;  // the realistic one drops a few % of the epochs
   config.rates.twr_hz = 10.0;
   config.rates.aoa_hz = 20.0;
   World world(spot(), standing(4.0, 0.0), config);
@@ -57,6 +59,7 @@ TEST(World, TargetIsSeenInTheRobotFrame) {
 
 TEST(World, RangesMatchTheGeometry) {
   WorldConfig config;
+  config.profile = SensorProfile::kIdeal;  // no hardware errors
   config.twr.use_table_bias = false;
   config.twr.sigma_scale = 0.0;
   const Layout layout = spot();
@@ -97,6 +100,25 @@ TEST(World, RejectsBadConfigNamingTheParameter) {
   } catch (const ParamError& e) {
     EXPECT_EQ(e.name(), "aoa_rate");
   }
+}
+
+TEST(WorldConfigLoad, ReadsTheSensorProfileAndRefusesBadValuesNamingThem) {
+  WorldConfig config;
+  config.load(YamlParams(YAML::Load("sensor_profile: ideal\nhardware_seed: 7")));
+  EXPECT_EQ(config.profile, SensorProfile::kIdeal);
+  EXPECT_EQ(config.hardware_seed, 7u);
+  EXPECT_EQ(WorldConfig{}.profile, SensorProfile::kRealistic) << "the default";
+  const auto rejected = [](const std::string& yaml) {
+    try {
+      WorldConfig c;
+      c.load(YamlParams(YAML::Load(yaml)));
+    } catch (const ParamError& e) {
+      return e.name();
+    }
+    return std::string("(accepted)");
+  };
+  EXPECT_EQ(rejected("sensor_profile: rough"), "~sensor_profile");
+  EXPECT_EQ(rejected("hardware_seed: -1"), "~hardware_seed");
 }
 
 }  // namespace

@@ -1,0 +1,274 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The realistic sensor profile's statistics (doc/simulator.md, "Sensor profiles"): the
+// figures it promises are the figures it produces.
+#include "radio_follow/sim/sensor_profile.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "radio_follow/common/angles.hpp"
+#include "radio_follow/common/param_error.hpp"
+#include "radio_follow/sim/world.hpp"
+
+namespace radio_follow {
+namespace sim {
+namespace {
+
+double mean(const std::vector<double>& v) {
+  double s = 0.0;
+  for (double x : v) {
+    s += x;
+  }
+  return s / static_cast<double>(v.size());
+}
+
+/// Sample autocorrelation at `lag` samples.
+double autocorrelation(const std::vector<double>& v, std::size_t lag) {
+  const double m = mean(v);
+  double num = 0.0;
+  double den = 0.0;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    den += (v[i] - m) * (v[i] - m);
+    if (i + lag < v.size()) {
+      num += (v[i] - m) * (v[i + lag] - m);
+    }
+  }
+  return num / den;
+}
+
+TEST(SensorProfile, ParsesItsNamesAndRefusesOthers) {
+  EXPECT_EQ(parseSensorProfile("ideal", "p"), SensorProfile::kIdeal);
+  EXPECT_EQ(parseSensorProfile("realistic", "p"), SensorProfile::kRealistic);
+  EXPECT_EQ(toString(SensorProfile::kRealistic), "realistic");
+  try {
+    parseSensorProfile("real", "~sensor_profile");
+    FAIL() << "accepted 'real'";
+  } catch (const ParamError& e) {
+    EXPECT_EQ(e.name(), "~sensor_profile");
+  }
+}
+
+TEST(SensorProfile, TwrNoiseHasTheMeasuredSigmaAndAutocorrelation) {
+  TwrNoiseState state;
+  Rng rng(7);
+  std::vector<double> noise;
+  for (int i = 0; i < 200000; ++i) {  // 10 Hz for 20000 s
+    noise.push_back(state.noise(0.1 * i, rng));
+  }
+  const double m = mean(noise);
+  double var = 0.0;
+  for (double x : noise) {
+    var += (x - m) * (x - m);
+  }
+  const double sigma = std::sqrt(var / static_cast<double>(noise.size()));
+  const double at_1s = autocorrelation(noise, 10);
+  std::printf("TWR noise: sigma %.4f m, autocorrelation %.3f at 0.1 s, %.3f at 1 s\n", sigma,
+              autocorrelation(noise, 1), at_1s);
+  EXPECT_GE(sigma, 0.06);
+  EXPECT_LE(sigma, 0.07);
+  EXPECT_NEAR(autocorrelation(noise, 1), 0.7, 0.05) << "at 0.1 s";
+  EXPECT_GE(at_1s, 0.4) << "at 1 s";
+  EXPECT_LE(at_1s, 0.5) << "at 1 s";
+}
+
+TEST(SensorProfile, GaussMarkovIsExactForIrregularIntervals) {
+  // Reaching t = 1 s in uneven steps or in one must give the same correlation, exp(-1/tau).
+  Rng rng(3);
+  double direct = 0.0;
+  double stepped = 0.0;
+  const int n = 40000;
+  for (int i = 0; i < n; ++i) {
+    GaussMarkov a(1.0, 2.0);
+    GaussMarkov b(1.0, 2.0);
+    const double a0 = a.sample(0.0, rng);
+    direct += a0 * a.sample(1.0, rng);
+    const double b0 = b.sample(0.0, rng);
+    b.sample(0.13, rng);
+    b.sample(0.61, rng);
+    stepped += b0 * b.sample(1.0, rng);
+  }
+  EXPECT_NEAR(direct / n, std::exp(-0.5), 0.02);
+  EXPECT_NEAR(stepped / n, std::exp(-0.5), 0.02);
+}
+
+TEST(SensorProfile, OutliersAreRareMostlyLongAndLastSeveralEpochs) {
+  TwrNoiseState state;
+  Rng rng(11);
+  const int n = 2000000;
+  int outliers = 0;
+  int longer = 0;
+  int bursts = 0;
+  bool previous = false;
+  for (int i = 0; i < n; ++i) {
+    const double excess = state.outlier(rng);
+    if (excess != 0.0) {
+      ++outliers;
+      longer += excess > 0.0;
+      EXPECT_GE(std::abs(excess), 0.3);
+      EXPECT_LE(excess, 3.0);
+      bursts += !previous;
+    }
+    previous = excess != 0.0;
+  }
+  const double share = static_cast<double>(outliers) / n;
+  std::printf("TWR outliers: %.3f %% of epochs, %.1f %% long, %.2f epochs per burst\n",
+              100.0 * share, 100.0 * longer / outliers, static_cast<double>(outliers) / bursts);
+  EXPECT_GE(share, 0.001);
+  EXPECT_LE(share, 0.002);
+  EXPECT_GE(static_cast<double>(longer) / outliers, 0.9) << "reflections read long";
+  EXPECT_GT(static_cast<double>(outliers) / bursts, 1.5) << "a burst lasts several epochs";
+}
+
+TEST(SensorProfile, HardwareIsInItsRangesAndFollowsOnlyTheHardwareSeed) {
+  for (int k = 0; k < 200; ++k) {
+    const std::string id = "M" + std::to_string(k);
+    const TwrHardware h = drawTwrHardware(5, id, "DA12");
+    EXPECT_GE(h.bias, 0.08);
+    EXPECT_LE(h.bias, 0.31);
+    EXPECT_GE(h.scale, 0.006);
+    EXPECT_LE(h.scale, 0.02);
+    EXPECT_EQ(drawTwrHardware(5, id, "DA12").bias, h.bias) << "deterministic for a seed";
+    EXPECT_NE(drawTwrHardware(6, id, "DA12").bias, h.bias) << "another robot, other biases";
+    AoaBoard board;
+    board.id = id;
+    const double yaw = std::atan2(mountedAoaBoard(board, 5).orientation.toRotationMatrix()(1, 0),
+                                  mountedAoaBoard(board, 5).orientation.toRotationMatrix()(0, 0));
+    EXPECT_LE(std::abs(yaw), deg2rad(2.0) + 1e-9);
+  }
+  EXPECT_NE(drawTwrHardware(5, "5722", "DA12").bias, drawTwrHardware(5, "5A84", "DA12").bias);
+  EXPECT_NE(drawTwrHardware(5, "5722", "DA12").bias, drawTwrHardware(5, "5722", "DA13").bias)
+      << "per module-tag pair";
+}
+
+TEST(SensorProfile, RangeCarriesBiasScaleAndDirectionDependence) {
+  RealisticFigures quiet;
+  quiet.twr_outlier_start = 0.0;
+  quiet.twr_dropout = 0.0;
+  TwrNoiseState state(quiet, 0.0);
+  const TwrHardware h{0.2, 0.01, 0.06, 0.5};
+  TwrModule module;
+  Rng rng(1);
+  const auto at = [&](double bearing) {
+    const Eigen::Vector3d target(5.0 * std::cos(bearing), 5.0 * std::sin(bearing), 0.0);
+    return *simulateRealisticTwr(module, h, TwrNoise{}, state, target, 0.0, rng) - 5.0;
+  };
+  EXPECT_NEAR(at(0.5), 0.2 + 0.05 + 0.06, 1e-12) << "the maximum at the phase";
+  EXPECT_NEAR(at(0.5 + kPi), 0.2 + 0.05 - 0.06, 1e-12);
+  EXPECT_NEAR(at(0.5 + kPi / 2.0), 0.25, 1e-12);
+}
+
+TEST(SensorProfile, RangeMeanAndDropoutsOverALongRun) {
+  const TwrHardware h = drawTwrHardware(1, "5722", "DA12");
+  TwrNoiseState state;
+  TwrModule module;
+  Rng rng(2);
+  const Eigen::Vector3d target(4.0, 0.0, 0.0);
+  std::vector<double> errors;
+  const int epochs = 100000;
+  for (int i = 0; i < epochs; ++i) {
+    if (const auto r = simulateRealisticTwr(module, h, TwrNoise{}, state, target, 0.1 * i, rng)) {
+      errors.push_back(*r - 4.0);
+    }
+  }
+  const double dropped = 1.0 - static_cast<double>(errors.size()) / epochs;
+  std::printf("TWR dropouts: %.2f %% of epochs\n", 100.0 * dropped);
+  EXPECT_NEAR(dropped, 0.03, 0.005);
+  const double expected = h.bias + 4.0 * h.scale + h.direction * std::cos(0.0 - h.phase);
+  EXPECT_NEAR(mean(errors), expected, 0.01);
+}
+
+TEST(SensorProfile, AoaReflectionsAreAFewPercent) {
+  AoaBoard board;
+  board.id = "front";
+  const AoaBoard mounted = mountedAoaBoard(board, 1);
+  Rng rng(4);
+  int wrong = 0;
+  int events = 0;
+  for (int i = 0; i < 20000; ++i) {
+    if (const auto s =
+            simulateRealisticAoa(mounted, AoaNoise{}, Eigen::Vector3d(2.0, 0.0, 0.0), rng)) {
+      ++events;
+      wrong += std::abs(s->azimuth) > deg2rad(20.0);
+    }
+  }
+  const double share = static_cast<double>(wrong) / events;
+  std::printf("AoA: %.2f %% of events more than 20 deg off (reflections)\n", 100.0 * share);
+  EXPECT_GT(share, 0.015);
+  EXPECT_LT(share, 0.04);
+}
+
+TEST(SensorProfile, TdoaAnchorsCarryConstantOffsets) {
+  const std::vector<TdoaAnchor> anchors{{"A", {0, 0, 0}}, {"B", {5, 0, 0}}, {"C", {0, 5, 0}}};
+  TdoaHardware hardware(anchors, 1);
+  Rng rng(5);
+  const Eigen::Vector3d target(2.0, 2.0, 0.0);
+  const std::vector<double> truth = simulateTdoa(anchors, 0, 0.0, target, rng);
+  double sum = 0.0;
+  const int n = 20000;
+  for (int i = 0; i < n; ++i) {
+    sum += hardware.simulate(anchors, 0, 0.0, target, 0.1 * i, rng)[0] - truth[0];
+  }
+  const double offset = sum / n;
+  EXPECT_GT(std::abs(offset), 1e-3) << "a constant offset per anchor";
+  EXPECT_LT(std::abs(offset), 0.2 + 0.02);
+}
+
+Layout spot() {
+  return loadLayoutFile(std::string(RF_CONFIG_DIR) + "/layouts/spot.yaml");
+}
+
+Scenario standing() {
+  Scenario s;
+  s.target = TargetPath(Pose2{3.0, 1.0, 0.0});
+  s.duration = 30.0;
+  return s;
+}
+
+std::vector<double> ranges(const WorldConfig& config) {
+  World world(spot(), standing(), config);
+  std::vector<double> out;
+  while (!world.finished()) {
+    for (const TwrEvent& e : world.step(0.0, 0.0, 0.01).twr) {
+      out.push_back(e.range);
+    }
+  }
+  return out;
+}
+
+TEST(SensorProfile, WorldIsDeterministicForItsSeeds) {
+  WorldConfig config;
+  config.profile = SensorProfile::kRealistic;
+  EXPECT_EQ(ranges(config), ranges(config));
+  WorldConfig other_noise = config;
+  other_noise.seed = 2;
+  EXPECT_NE(ranges(config), ranges(other_noise));
+  WorldConfig other_hardware = config;
+  other_hardware.hardware_seed = 2;
+  EXPECT_NE(mean(ranges(config)), mean(ranges(other_hardware)));
+}
+
+TEST(SensorProfile, IdealWorldIsTheTablesAsBefore) {
+  // The ideal profile draws exactly as the simulator did before the profiles existed (its
+  // experiments table is main's to the last digit, doc/experiments.md): the first ranges
+  // of seed 1 on the spot layout, kept so that a change to the ideal path shows.
+  WorldConfig config;
+  config.profile = SensorProfile::kIdeal;
+  const std::vector<double> r = ranges(config);
+  ASSERT_GE(r.size(), 3u);
+  EXPECT_EQ(r[0], 3.0489909263206032);
+  EXPECT_EQ(r[1], 3.268135753758906);
+  EXPECT_EQ(r[2], 3.4693646641268554);
+  for (double x : r) {
+    EXPECT_LT(x, 3.6) << "Table 3.1 reads short, never the realistic profile's long bias";
+  }
+  WorldConfig hardware = config;
+  hardware.hardware_seed = 9;
+  EXPECT_EQ(ranges(hardware), r) << "the ideal sensors have no hardware";
+}
+
+}  // namespace
+}  // namespace sim
+}  // namespace radio_follow
