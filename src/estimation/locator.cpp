@@ -100,7 +100,8 @@ ParticleTrackerConfig trackerConfig(const LocatorConfig& c) {
 
 /// `p` (tracking frame) in the robot frame of `pose`.
 Eigen::Vector3d inRobotFrame(const Pose2& pose, const Eigen::Vector3d& p) {
-  const Eigen::Matrix3d r = Eigen::AngleAxisd(pose.yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  const Eigen::Matrix3d r =
+      Eigen::AngleAxisd(pose.yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   return r.transpose() * (p - Eigen::Vector3d(pose.x, pose.y, 0.0));
 }
 

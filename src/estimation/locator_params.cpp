@@ -107,8 +107,7 @@ const ParamTable<LocatorConfig>& LocatorConfig::table() {
           .add("particles", &C::particles, "", "Particles of the main hypothesis (particle).",
                Range::closed(50, 100000))
           .add("range_outlier_share", &C::range_outlier_share, "",
-               "Share of ranges that are outliers, mostly long (particle).",
-               Range::open(0.0, 0.5))
+               "Share of ranges that are outliers, mostly long (particle).", Range::open(0.0, 0.5))
           .add("range_outlier_length", &C::range_outlier_length, "m",
                "Mean excess of a long range outlier (particle).", Range::above(0.0))
           .add("bearing_outlier_share", &C::bearing_outlier_share, "",

@@ -18,9 +18,9 @@ constexpr double kInitialSpread = 0.02;
 
 /// The parts of a heavy-tailed range likelihood that do not depend on the error.
 struct RangeTerms {
-  double gauss;     ///< (1 - eps) / (sqrt(2 pi) sigma)
-  double tail;      ///< 0.9 eps / L  (one-sided) or 0.45 eps / L (symmetric)
-  double floor;     ///< 0.1 eps / (2 W)
+  double gauss;  ///< (1 - eps) / (sqrt(2 pi) sigma)
+  double tail;   ///< 0.9 eps / L  (one-sided) or 0.45 eps / L (symmetric)
+  double floor;  ///< 0.1 eps / (2 W)
   double inv_sigma;
   double inv_length;
 };
@@ -39,8 +39,9 @@ std::pair<Eigen::ArrayXd, Eigen::ArrayXd> rangeLikelihood(const Eigen::ArrayXd& 
   const Eigen::ArrayXd z = error * k.inv_sigma;
   Eigen::ArrayXd gauss = k.gauss * (-0.5 * z.square()).exp();
   Eigen::ArrayXd tail =
-      m.one_sided ? Eigen::ArrayXd((error > 0.0).select(k.tail * (-error * k.inv_length).exp(), 0.0))
-                  : Eigen::ArrayXd(k.tail * (-error.abs() * k.inv_length).exp());
+      m.one_sided
+          ? Eigen::ArrayXd((error > 0.0).select(k.tail * (-error * k.inv_length).exp(), 0.0))
+          : Eigen::ArrayXd(k.tail * (-error.abs() * k.inv_length).exp());
   return {std::move(gauss), tail + k.floor};
 }
 
@@ -76,7 +77,9 @@ std::uint64_t ParticleFilter::nextRandom() {
   return state_ * 0x2545F4914F6CDD1Dull;
 }
 
-double ParticleFilter::normal() { return normals_[nextRandom() >> 48]; }
+double ParticleFilter::normal() {
+  return normals_[nextRandom() >> 48];
+}
 
 void ParticleFilter::initialize(const std::vector<Eigen::Vector3d>& positions,
                                 double velocity_sigma, double t) {
@@ -158,16 +161,15 @@ MeasurementFit ParticleFilter::applyLikelihood(const Eigen::ArrayXd& inlier,
 }
 
 MeasurementFit ParticleFilter::weightRange(const Eigen::Vector3d& module, double range,
-                                   const RangeLikelihood& model) {
+                                           const RangeLikelihood& model) {
   const Eigen::ArrayXd d =
-      ((x_ - module.x()).square() + (y_ - module.y()).square() + (z_ - module.z()).square())
-          .sqrt();
+      ((x_ - module.x()).square() + (y_ - module.y()).square() + (z_ - module.z()).square()).sqrt();
   const auto [inlier, outlier] = rangeLikelihood(range - d, model);
   return applyLikelihood(inlier, outlier);
 }
 
 MeasurementFit ParticleFilter::weightTdoa(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                                  double difference, const RangeLikelihood& model) {
+                                          double difference, const RangeLikelihood& model) {
   const Eigen::ArrayXd da =
       ((x_ - a.x()).square() + (y_ - a.y()).square() + (z_ - a.z()).square()).sqrt();
   const Eigen::ArrayXd db =
@@ -176,9 +178,9 @@ MeasurementFit ParticleFilter::weightTdoa(const Eigen::Vector3d& a, const Eigen:
   return applyLikelihood(inlier, outlier);
 }
 
-MeasurementFit ParticleFilter::weightBearing(const Eigen::Vector3d& board, const Eigen::Matrix3d& rotation,
-                                     double azimuth, double elevation,
-                                     const BearingLikelihood& m) {
+MeasurementFit ParticleFilter::weightBearing(const Eigen::Vector3d& board,
+                                             const Eigen::Matrix3d& rotation, double azimuth,
+                                             double elevation, const BearingLikelihood& m) {
   // Board-frame offsets of every particle: v = R^T (p - board).
   const Eigen::ArrayXd dx = x_ - board.x();
   const Eigen::ArrayXd dy = y_ - board.y();
@@ -190,11 +192,17 @@ MeasurementFit ParticleFilter::weightBearing(const Eigen::Vector3d& board, const
   const Eigen::ArrayXd front = lx.abs();  // the array's front/back mirror
   const Eigen::ArrayXd rho = (front.square() + ly.square()).sqrt().max(1e-9);
   const Eigen::ArrayXd cos_az = (front * std::cos(azimuth) + ly * std::sin(azimuth)) / rho;
-  // Sigma factor: 1 inside the field of view, more at the edge, more again behind.
-  const double cos_fov = std::cos(m.field_of_view);
-  const Eigen::ArrayXd ones = Eigen::ArrayXd::Ones(lx.size());
-  const Eigen::ArrayXd edge = (front / rho < cos_fov).select(m.edge_sigma_factor * ones, ones);
-  const Eigen::ArrayXd factor = (lx < 0.0).select(m.behind_sigma_factor * ones, edge);
+  // Sigma factor: a board whose field of view does not contain the cloud's mean (the
+  // estimate) is worth less, for every particle alike. A factor that depended on each
+  // particle's own angle would pull the cloud inside the field of view, and one from the
+  // measured angle would trust the edge's biased angles that read as inside. Particles
+  // behind the board get the mirrored direction, at a lower weight.
+  const Eigen::Vector3d centre = rt * (mean() - board);
+  const double centre_cos = centre.x() / std::max(1e-9, centre.head<2>().norm());
+  const double estimate_factor = centre_cos < std::cos(m.field_of_view) ? m.edge_sigma_factor : 1.0;
+  const Eigen::ArrayXd factor = (lx < 0.0).select(
+      Eigen::ArrayXd::Constant(lx.size(), std::max(estimate_factor, m.behind_sigma_factor)),
+      Eigen::ArrayXd::Constant(lx.size(), estimate_factor));
   const Eigen::ArrayXd kappa_az = 1.0 / (m.azimuth_sigma * factor).square();
   Eigen::ArrayXd gauss = (kappa_az / (2.0 * kPi)).sqrt() * (kappa_az * (cos_az - 1.0)).exp();
   double uniform = 1.0 / (2.0 * kPi);

@@ -5,8 +5,6 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <map>
 #include <tuple>
 #include <utility>
@@ -74,10 +72,7 @@ ParticleFilter::Config mirrorConfig(ParticleFilter::Config c) {
 }  // namespace
 
 ParticleTracker::ParticleTracker(const Layout& layout, const ParticleTrackerConfig& config)
-    : layout_(layout),
-      config_(config),
-      main_(config.filter),
-      mirror_(mirrorConfig(config.filter)) {
+    : layout_(layout), config_(config), main_(config.filter), mirror_(mirrorConfig(config.filter)) {
   if (config.filter.planar && layout.twr_modules.size() >= 2) {
     Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
     for (const auto& m : layout.twr_modules) {
@@ -117,7 +112,9 @@ void ParticleTracker::setConfig(const ParticleTrackerConfig& config) {
   }
 }
 
-void ParticleTracker::add(const TrackedMeasurement& measurement) { queue_.push_back(measurement); }
+void ParticleTracker::add(const TrackedMeasurement& measurement) {
+  queue_.push_back(measurement);
+}
 
 Eigen::Vector3d ParticleTracker::mirrored(const Eigen::Vector3d& p, const Pose2& pose) const {
   const Eigen::Vector3d r = toRobot(pose, p);
@@ -143,7 +140,7 @@ bool ParticleTracker::onMainSide(const Eigen::Vector3d& p, const Pose2& pose) co
 }
 
 MeasurementFit ParticleTracker::weigh(ParticleFilter& filter, const TrackedMeasurement& m,
-                              const Pose2& pose) const {
+                                      const Pose2& pose) const {
   switch (m.kind) {
     case TrackedMeasurement::Kind::kRange:
       return filter.weightRange(toWorld(pose, layout_.twr_modules[m.sensor].position), m.value,
@@ -181,9 +178,9 @@ void ParticleTracker::apply(const TrackedMeasurement& m) {
     mirror_.predict(m.t);
     const MeasurementFit mirror_fit = weigh(mirror_, m, pose);
     if (main_fit.likelihood > 0.0 && mirror_fit.likelihood > 0.0) {
-      evidence_ = std::clamp(
-          evidence_ + std::log(mirror_fit.likelihood) - std::log(main_fit.likelihood),
-          -kMaxEvidence, kMaxEvidence);
+      evidence_ =
+          std::clamp(evidence_ + std::log(mirror_fit.likelihood) - std::log(main_fit.likelihood),
+                     -kMaxEvidence, kMaxEvidence);
     }
     mirror_.resampleIfNeeded();
   }
@@ -209,8 +206,8 @@ bool ParticleTracker::coldStart(double now) {
       newest[key] = &m;
     }
   }
-  const std::size_t sensors =
-      layout_.twr_modules.size() + layout_.aoa_boards.size() + (layout_.tdoa_anchors.empty() ? 0 : 1);
+  const std::size_t sensors = layout_.twr_modules.size() + layout_.aoa_boards.size() +
+                              (layout_.tdoa_anchors.empty() ? 0 : 1);
   if (newest.size() < std::min<std::size_t>(2, sensors) || newest.empty()) {
     return false;
   }
@@ -218,7 +215,8 @@ bool ParticleTracker::coldStart(double now) {
   const TrackedMeasurement* latest = nullptr;
   bool any_tdoa = false;
   for (const auto& [key, m] : newest) {
-    if (m->kind == TrackedMeasurement::Kind::kRange && (ring == nullptr || m->value < ring->value)) {
+    if (m->kind == TrackedMeasurement::Kind::kRange &&
+        (ring == nullptr || m->value < ring->value)) {
       ring = m;  // the shortest range: the smallest ring to sample
     }
     any_tdoa = any_tdoa || m->kind == TrackedMeasurement::Kind::kTdoa;
@@ -284,8 +282,7 @@ bool ParticleTracker::coldStart(double now) {
   }
   sampler.initialize(positions, kColdVelocitySigma, latest->t);
   for (const auto& [key, m] : newest) {
-    const MeasurementFit f = weigh(sampler, *m, m->pose.value_or(Pose2{}));
-    if (std::getenv("RF_PF_DEBUG")) std::fprintf(stderr, "cold kind %d sensor %zu value %.3f el %.3f t %.3f inlier %.2f ess %.0f\n", (int)m->kind, m->sensor, m->value, m->elevation, m->t, f.inlier, sampler.effectiveSampleSize());
+    weigh(sampler, *m, m->pose.value_or(Pose2{}));
   }
   evidence_ = 0.0;
   if (axis_ && ring != nullptr) {
@@ -361,8 +358,9 @@ void ParticleTracker::maintainMirror() {
 }
 
 TrackerOutput ParticleTracker::update(double now) {
-  std::stable_sort(queue_.begin(), queue_.end(),
-                   [](const TrackedMeasurement& a, const TrackedMeasurement& b) { return a.t < b.t; });
+  std::stable_sort(
+      queue_.begin(), queue_.end(),
+      [](const TrackedMeasurement& a, const TrackedMeasurement& b) { return a.t < b.t; });
   for (const TrackedMeasurement& m : queue_) {
     if (m.t > now + kFutureStampTolerance) {
       ++stats_.future_dropped;
@@ -402,10 +400,6 @@ TrackerOutput ParticleTracker::update(double now) {
     return out;
   }
   maintainMirror();
-  if (std::getenv("RF_PF_DEBUG") && now < 4.0) {
-    const Eigen::Vector3d mm = main_.mean();
-    std::fprintf(stderr, "t %.2f fit %.2f mean %.2f %.2f sig %.2f cold %zu div %zu\n", now, fit_, mm.x(), mm.y(), worstSigma(main_.covariance()), stats_.cold_starts, stats_.divergences);
-  }
   out.stamp = main_.time();
   out.pose = pose_;
   const bool fresh = now - main_.time() <= config_.max_age;
@@ -413,8 +407,14 @@ TrackerOutput ParticleTracker::update(double now) {
   const Eigen::Vector3d position = main_.mean();
   const bool ranged = last_position_fix_ >= 0.0 && now - last_position_fix_ <= config_.max_age;
   const double sigma = worstSigma(covariance);
+  const double distance = toRobot(pose_, position).head<2>().norm();
+  // A cloud wider than lost_sigma (or, far away, than twice the relative limit: a
+  // bearing's sideways spread) is no position: a cold start's ring around one module,
+  // whose mean is near the robot, or a track that fell apart.
+  const double lost_limit =
+      std::max(config_.lost_sigma, 2.0 * config_.max_relative_sigma * distance);
   if (!fresh || !position.allFinite() || !covariance.allFinite() ||
-      (ranged && sigma > config_.lost_sigma)) {
+      (ranged && sigma > lost_limit)) {
     reset();
     return out;
   }
@@ -437,7 +437,6 @@ TrackerOutput ParticleTracker::update(double now) {
     out.status = TargetStatus::kHeadingOnly;
     return out;
   }
-  const double distance = toRobot(pose_, position).head<2>().norm();
   const double allowed =
       std::max(config_.max_position_sigma, config_.max_relative_sigma * distance);
   out.status = sigma <= allowed ? TargetStatus::kOk : TargetStatus::kDegraded;

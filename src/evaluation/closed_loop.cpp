@@ -113,8 +113,11 @@ ClosedLoopConfig loadClosedLoopConfig(const std::string& dir, const std::string&
   const YamlParams locator = YamlParams::fromFiles(locator_files);
   c.locator.load(locator);
   locator.param("rate", c.locator_rate, c.locator_rate);
+  std::string locator_odom_frame = "odom";
+  locator.param("odom_frame", locator_odom_frame, locator_odom_frame);
+  c.locator_odometry = !locator_odom_frame.empty();
   for (const char* key : {"uwb_topics", "aoa_topics", "tdoa_topics", "target_frame", "publish_tf",
-                          "input_timeout", "path_length", "layout_file"}) {
+                          "input_timeout", "path_length", "layout_file", "tf_tolerance"}) {
     locator.allow(key);
   }
   locator.requireAllKnown();
@@ -233,7 +236,7 @@ void ClosedLoop::feedSensors(const sim::StepEvents& events, double now) {
     if (silent(module.id, stamp)) {
       continue;
     }
-    locator_.addRange(module.id, e.range, stamp, poseAt(stamp));
+    locator_.addRange(module.id, e.range, stamp, odometryAt(stamp));
     // The controller watches the same ranges (uwb/<id>/ranges) for its safety stop.
     pipeline_.onRange(stamp, now, "uwb/" + module.id + "/ranges/" + module.id, module.id,
                       layout.target_anchor_id, e.range);
@@ -245,7 +248,7 @@ void ClosedLoop::feedSensors(const sim::StepEvents& events, double now) {
       continue;
     }
     locator_.addBearing(board.id, e.sample.azimuth, e.sample.elevation, e.sample.rssi, stamp,
-                        poseAt(stamp));
+                        odometryAt(stamp));
   }
   for (const sim::TdoaEvent& e : events.tdoa) {
     const std::size_t ref = config_.world.tdoa_reference;
@@ -254,10 +257,14 @@ void ClosedLoop::feedSensors(const sim::StepEvents& events, double now) {
     for (std::size_t i = 0; i < layout.tdoa_anchors.size(); ++i) {
       if (i != ref) {
         locator_.addTdoa(layout.tdoa_anchors[i].id, layout.tdoa_anchors[ref].id, e.differences[k++],
-                         variance, kClockStart + e.t, poseAt(kClockStart + e.t));
+                         variance, kClockStart + e.t, odometryAt(kClockStart + e.t));
       }
     }
   }
+}
+
+std::optional<Pose2> ClosedLoop::odometryAt(double t) const {
+  return config_.locator_odometry ? poseAt(t) : std::nullopt;
 }
 
 std::optional<Pose2> ClosedLoop::poseAt(double t) const {

@@ -26,6 +26,8 @@ inline Layout uncalibratedLayout(const std::string& name) {
 inline estimation::LocatorConfig solverBackend() {
   estimation::LocatorConfig config;
   config.estimator = estimation::Estimator::kSolver;
+  config.range_sigma = 0.03;  // the tuning these tests were written for
+  config.process_noise = 1.0;
   return config;
 }
 

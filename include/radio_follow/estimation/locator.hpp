@@ -39,7 +39,7 @@ struct LocatorConfig {
   Estimator estimator = Estimator::kParticle;
   bool planar = true;                      ///< 2D mode: target on the plane z = height
   double height = 1.0;                     ///< m
-  double range_sigma = 0.03;               ///< m
+  double range_sigma = 0.07;               ///< m (real DWM1001 ranges, doc/nodes/locator.md)
   double tdoa_sigma = 0.1;                 ///< m, when a difference has no variance
   double azimuth_sigma = deg2rad(5.0);     ///< rad
   double elevation_sigma = deg2rad(10.0);  ///< rad
@@ -50,7 +50,7 @@ struct LocatorConfig {
   double max_age = 0.5;  ///< s; older measurements are dropped
   AoaSelectorConfig aoa;
   MotionModel motion_model = MotionModel::kConstantVelocity;
-  double process_noise = 1.0;  ///< see KalmanConfig
+  double process_noise = 0.5;  ///< see KalmanConfig; the particle filter's acceleration PSD
   /// true: R = the solver's covariance; false: R = measurement_noise * I (thesis: 50).
   bool filter_uses_solver_covariance = true;
   double measurement_noise = 50.0;  ///< m^2
@@ -79,8 +79,9 @@ struct LocatorConfig {
   double range_outlier_length = 1.0;
   /// Share of bearings that are reflections (any direction).
   double bearing_outlier_share = 0.05;
-  /// Worst-axis sigma beyond which a ranged track is LOST and restarts, m.
-  double lost_sigma = 1.5;
+  /// Worst-axis sigma beyond which a ranged track is LOST and restarts (or twice
+  /// max_relative_sigma times the distance, if larger), m.
+  double lost_sigma = 1.0;
 
   /// Reads the fields from their parameters (the locator node's names, e.g. `range_sigma`,
   /// `azimuth_sigma_deg`, `measurement_covariance`); absent keys keep their value.

@@ -32,12 +32,12 @@ struct RangeLikelihood {
 /// front from one behind its plane: for a particle behind the board the mirrored
 /// direction is predicted, with `behind_sigma_factor` times the sigma.
 struct BearingLikelihood {
-  double azimuth_sigma = 0.087;    ///< rad
-  double elevation_sigma = 0.17;   ///< rad
+  double azimuth_sigma = 0.087;   ///< rad
+  double elevation_sigma = 0.17;  ///< rad
   bool use_elevation = true;
   double outlier_share = 0.05;     ///< reflections, from any direction
   double field_of_view = 1.22;     ///< rad; beyond it (and behind) the sigma grows
-  double edge_sigma_factor = 6.0;  ///< sigma factor outside the field of view
+  double edge_sigma_factor = 6.0;  ///< sigma factor of a bearing measured outside it
   double behind_sigma_factor = 6.0;
 };
 
@@ -59,9 +59,9 @@ class ParticleFilter {
   struct Config {
     std::size_t particles = 500;
     bool planar = true;
-    double height = 1.0;         ///< z of every particle in planar mode, m
-    double process_noise = 1.0;  ///< white-acceleration PSD per axis, m^2/s^3
-    double vertical_noise = 0.1; ///< 3D mode: z random-walk PSD, m^2/s
+    double height = 1.0;          ///< z of every particle in planar mode, m
+    double process_noise = 1.0;   ///< white-acceleration PSD per axis, m^2/s^3
+    double vertical_noise = 0.1;  ///< 3D mode: z random-walk PSD, m^2/s
     /// Resample (systematic) when the effective sample size falls below this share of N.
     double resample_threshold = 0.5;
     std::uint64_t seed = 1;
@@ -86,7 +86,7 @@ class ParticleFilter {
                             double difference, const RangeLikelihood& model);
   /// `rotation`: board -> tracking frame; azimuth/elevation in the board frame.
   MeasurementFit weightBearing(const Eigen::Vector3d& board, const Eigen::Matrix3d& rotation,
-                       double azimuth, double elevation, const BearingLikelihood& model);
+                               double azimuth, double elevation, const BearingLikelihood& model);
 
   /// Systematic resampling when the effective sample size is below the threshold.
   /// Returns true when it resampled.

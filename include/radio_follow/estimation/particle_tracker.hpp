@@ -36,12 +36,12 @@ struct ParticleTrackerConfig {
   RangeLikelihood range;
   RangeLikelihood tdoa;  ///< sigma per measurement
   BearingLikelihood bearing;
-  double max_age = 0.5;                ///< s; measurements older than this are dropped
-  double ambiguity_margin = 2.0;       ///< nats; see ParticleTracker
-  double max_position_sigma = 0.5;     ///< m, worst axis for OK
-  double max_relative_sigma = 0.1;     ///< ... or this fraction of the distance
-  double lost_sigma = 3.0;             ///< m, worst axis beyond which the track is LOST
-  double default_range = 3.0;          ///< m, distance reported along a bearing alone
+  double max_age = 0.5;             ///< s; measurements older than this are dropped
+  double ambiguity_margin = 2.0;    ///< nats; see ParticleTracker
+  double max_position_sigma = 0.5;  ///< m, worst axis for OK
+  double max_relative_sigma = 0.1;  ///< ... or this fraction of the distance
+  double lost_sigma = 1.0;          ///< m, worst axis beyond which the track is LOST
+  double default_range = 3.0;       ///< m, distance reported along a bearing alone
 };
 
 /// What the tracker reports, in the tracking frame and in the robot frame at `stamp`.
@@ -49,14 +49,14 @@ struct TrackerOutput {
   TargetStatus status = TargetStatus::kLost;
   double stamp = 0.0;  ///< time of the newest measurement processed, s
   bool in_odom = false;
-  Pose2 pose;  ///< robot in the tracking frame at `stamp`
+  Pose2 pose;                                          ///< robot in the tracking frame at `stamp`
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  ///< tracking frame
   Eigen::Vector2d velocity = Eigen::Vector2d::Zero();  ///< tracking frame
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-  int hypotheses = 0;                ///< 1, or 2 when the mirror hypothesis holds mass
-  double hypothesis_weight = 0.0;    ///< probability of `position`'s hypothesis
+  int hypotheses = 0;              ///< 1, or 2 when the mirror hypothesis holds mass
+  double hypothesis_weight = 0.0;  ///< probability of `position`'s hypothesis
   Eigen::Vector3d alternative = Eigen::Vector3d::Zero();  ///< tracking frame
-  std::uint8_t sources = 0;          ///< kinds processed within max_age
+  std::uint8_t sources = 0;                               ///< kinds processed within max_age
 };
 
 struct TrackerStats {
@@ -107,7 +107,8 @@ class ParticleTracker {
 
  private:
   void apply(const TrackedMeasurement& m);
-  MeasurementFit weigh(ParticleFilter& filter, const TrackedMeasurement& m, const Pose2& pose) const;
+  MeasurementFit weigh(ParticleFilter& filter, const TrackedMeasurement& m,
+                       const Pose2& pose) const;
   bool coldStart(double now);
   void seedMirror();
   void maintainMirror();
@@ -128,7 +129,7 @@ class ParticleTracker {
   std::vector<TrackedMeasurement> queue_;
   std::deque<TrackedMeasurement> recent_;  ///< processed within max_age (cold starts)
   bool in_odom_ = false;
-  Pose2 pose_;  ///< of the newest processed measurement
+  Pose2 pose_;                       ///< of the newest processed measurement
   double last_position_fix_ = -1.0;  ///< newest range or TDoA applied
   double last_kind_[3] = {-1.0, -1.0, -1.0};
   /// Running mean of the inlier probability of the applied measurements (see apply()).

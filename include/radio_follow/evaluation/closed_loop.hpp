@@ -45,6 +45,9 @@ struct ClosedLoopConfig {
   double cmd_timeout = 0.5;  ///< s without a command before the base stops
   estimation::LocatorConfig locator;
   double locator_rate = 20.0;  ///< Hz
+  /// The locator node's odom_frame is set: measurements carry the robot's odometry pose
+  /// (the loop's TF), the particle estimator tracks in the odometry frame.
+  bool locator_odometry = true;
   FollowController controller = FollowController::kVelocity;
   control::CommandPipelineParams pipeline;
   double controller_rate = 20.0;  ///< Hz
@@ -127,6 +130,8 @@ class ClosedLoop {
   void runController(double now);
   void sample(double now);
   /// The robot's odometry pose at time t (linear interpolation, as TF does).
+  /// poseAt() for the locator's measurements, when it tracks in the odometry frame.
+  std::optional<Pose2> odometryAt(double t) const;
   std::optional<Pose2> poseAt(double t) const;
 
   ClosedLoopConfig config_;

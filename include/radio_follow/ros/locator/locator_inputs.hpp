@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <ros/time.h>
+
 #include <cstddef>
 #include <functional>
 #include <map>
 #include <optional>
 #include <string>
-
-#include <ros/time.h>
 
 #include "radio_follow/AoaBearing.h"
 #include "radio_follow/TdoaMeasurements.h"
