@@ -350,11 +350,15 @@ void ParticleTracker::maintainMirror() {
     evidence_ = -evidence_;
     ++stats_.mirror_swaps;
   }
-  // The mirror hypothesis is the main track's mirror image, re-drawn after every batch:
-  // left alone, its particles would follow the data onto the main one.
-  // Near the modules' axis the two coincide and the evidence stops changing: the side
-  // the data chose before is kept until data say otherwise.
-  seedMirror();
+  // The mirror hypothesis follows its own data, so that it settles in the mirror's own
+  // minimum (a few centimetres off the geometric mirror image when the modules are not
+  // exactly collinear) and its evidence is fair. When the data reject it, its particles
+  // drift onto the main one's: then it is drawn again as the main one's mirror image,
+  // keeping the evidence (near the modules' axis the two coincide and the evidence stops
+  // changing: the side the data chose before is kept until data say otherwise).
+  if (!mirror_active_ || !mirrorDistinct()) {
+    seedMirror();
+  }
 }
 
 TrackerOutput ParticleTracker::update(double now) {
