@@ -99,11 +99,20 @@ void thesisSolve(benchmark::State& state, const std::string& layout, int max_bea
 // mirror test with ambiguity_margin = the argument (0: off, the baseline; 2: the default:
 // one more warm solve per range-only epoch, and per epoch until the track is confirmed).
 // spot_twr: the same walk with ranges only (no boards in that layout).
-void locatorUpdate(benchmark::State& state, const std::string& name) {
+// locatorUpdate/<layout>_particle: the same inputs through the particle estimator (the
+// default; argument: particles of the main hypothesis), every measurement applied at its
+// stamp: 7 per update here, more than the 3-4 of a Spot at its sensors' 10 Hz.
+void locatorUpdate(benchmark::State& state, const std::string& name,
+                   rf::estimation::Estimator estimator) {
   const rf::Layout layout =
       rf::loadLayoutFile(std::string(RF_CONFIG_DIR) + "/layouts/" + name + ".yaml");
   rf::estimation::LocatorConfig config;
-  config.ambiguity_margin = static_cast<double>(state.range(0));
+  config.estimator = estimator;
+  if (estimator == rf::estimation::Estimator::kSolver) {
+    config.ambiguity_margin = static_cast<double>(state.range(0));
+  } else {
+    config.particles = static_cast<int>(state.range(0));
+  }
   rf::estimation::Locator locator(layout, config);
   std::mt19937_64 rng(3);
   std::normal_distribution<double> noise(0.0, 1.0);
@@ -114,11 +123,13 @@ void locatorUpdate(benchmark::State& state, const std::string& name) {
     const Eigen::Vector3d truth(4.0 * std::cos(0.1 * t), 4.0 * std::sin(0.1 * t), 1.0);
     for (const auto& m : layout.twr_modules) {
       locator.addRange(m.id, (truth - m.position).norm() + 0.03 * noise(rng), t);
+      t += 0.002;  // each sensor at its own stamp
     }
     for (const auto& b : layout.aoa_boards) {
       const Eigen::Vector2d ae =
           rf::estimation::predictBearing(truth, b.position, b.orientation.toRotationMatrix());
       locator.addBearing(b.id, ae(0) + 0.08 * noise(rng), ae(1) + 0.08 * noise(rng), -60.0, t);
+      t += 0.002;
     }
     const auto start = std::chrono::steady_clock::now();
     rf::estimation::LocatorEstimate e = locator.update(t);
@@ -145,13 +156,24 @@ BENCHMARK_CAPTURE(thesisSolve, spot_1_bearing, std::string("spot"), 1)
     ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(thesisSolve, spot_all_in_fov, std::string("spot"), 4)
     ->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(locatorUpdate, spot, std::string("spot"))
+BENCHMARK_CAPTURE(locatorUpdate, spot, std::string("spot"), rf::estimation::Estimator::kSolver)
     ->Arg(0)
     ->Arg(2)
     ->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(locatorUpdate, spot_twr, std::string("spot_twr"))
+BENCHMARK_CAPTURE(locatorUpdate, spot_twr, std::string("spot_twr"),
+                  rf::estimation::Estimator::kSolver)
     ->Arg(0)
     ->Arg(2)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(locatorUpdate, spot_particle, std::string("spot"),
+                  rf::estimation::Estimator::kParticle)
+    ->Arg(250)
+    ->Arg(500)
+    ->Arg(1000)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(locatorUpdate, spot_twr_particle, std::string("spot_twr"),
+                  rf::estimation::Estimator::kParticle)
+    ->Arg(500)
     ->Unit(benchmark::kMicrosecond);
 
 BENCHMARK_MAIN();

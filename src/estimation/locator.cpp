@@ -513,7 +513,10 @@ LocatorEstimate Locator::updateParticle(double now, LocatorEstimate out) {
   stats_.last_solve_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   ++stats_.solves;
-  out.bearings_used = out.bearings_fresh;  // the particle filter weighs every bearing
+  // The filter weighs every bearing; those of boards whose field of view does not contain
+  // the estimate count at a sixth of their weight (particle_filter.hpp): "not used" for the
+  // markers and diagnostics, as the solver's selection would say.
+  out.bearings_used.clear();
   out.sources = track.sources;
   out.in_odom = track.in_odom;
   if (track.status == TargetStatus::kLost) {
@@ -535,6 +538,14 @@ LocatorEstimate Locator::updateParticle(double now, LocatorEstimate out) {
   out.hypotheses = track.hypotheses;
   out.hypothesis_weight = track.hypothesis_weight;
   out.status = track.status;
+  for (const std::size_t i : out.bearings_fresh) {
+    const AoaBoard& board = layout_.aoa_boards[i];
+    const Eigen::Vector3d local = board.orientation.conjugate() * (out.position - board.position);
+    if (local.x() > std::cos(board.field_of_view) * local.head<2>().norm()) {
+      out.bearings_used.push_back(i);
+    }
+  }
+  stats_.bearings_rejected_fov += out.bearings_fresh.size() - out.bearings_used.size();
   if (config_.planar) {
     out.position.z() = config_.height;
     out.alternative.z() = config_.height;
