@@ -154,7 +154,7 @@ if wanted offline; then
   whole=$("${tables[@]}" median "${runs[@]}")
   length=$(sed -n 's/^bag [^:]*: \([0-9.]*\) s,.*/\1/p' "$tmp/offline_1.log")
   cat >"$tmp/grid.yaml" <<'YAML'
-range_sigma: [0.02, 0.03, 0.05, 0.1]
+range_sigma: [0.03, 0.05, 0.07, 0.1]
 azimuth_sigma_deg: [2.0, 5.0, 10.0]
 bearing_loss: [huber, cauchy]
 YAML
@@ -170,9 +170,9 @@ YAML
   echo "..."
   tail -n 2 "$tmp/sweep.csv"
   echo
-  echo "The shipped defaults' row (config/locator.yaml: range_sigma 0.03, azimuth_sigma_deg 5, bearing_loss huber):"
+  echo "The shipped defaults' row (config/locator.yaml: range_sigma 0.07, azimuth_sigma_deg 5, bearing_loss huber):"
   echo
-  grep '"range_sigma=0.03 azimuth_sigma_deg=5.0 bearing_loss=huber"' "$tmp/sweep.csv"
+  grep '"range_sigma=0.07 azimuth_sigma_deg=5.0 bearing_loss=huber"' "$tmp/sweep.csv"
   echo
   echo "The bag (\`rosbag info $bag\`):"
   echo

@@ -13,6 +13,9 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 /// Entries of the normal table: enough that the draws of one step never repeat.
 constexpr std::size_t kNormalTable = 1u << 16;
+/// Measurements closer in time than this share a prediction (one step is 4 normal draws
+/// per particle, the most expensive part; a walking person moves 5 mm in it), s.
+constexpr double kMinPredictStep = 0.005;
 /// Spread added around the given positions at initialisation, m.
 constexpr double kInitialSpread = 0.02;
 
@@ -69,18 +72,6 @@ ParticleFilter::ParticleFilter(const Config& config) : config_(config), state_(c
   state_ = config.seed * 0x9E3779B97F4A7C15ull + 1;
 }
 
-std::uint64_t ParticleFilter::nextRandom() {
-  // xorshift64*: fast, and plenty for indexing a table and systematic resampling.
-  state_ ^= state_ >> 12;
-  state_ ^= state_ << 25;
-  state_ ^= state_ >> 27;
-  return state_ * 0x2545F4914F6CDD1Dull;
-}
-
-double ParticleFilter::normal() {
-  return normals_[nextRandom() >> 48];
-}
-
 void ParticleFilter::initialize(const std::vector<Eigen::Vector3d>& positions,
                                 double velocity_sigma, double t) {
   const auto n = static_cast<Eigen::Index>(config_.particles);
@@ -125,21 +116,21 @@ void ParticleFilter::assign(const std::vector<Eigen::Vector3d>& positions,
 
 void ParticleFilter::predict(double t) {
   const double dt = t - t_;
-  if (!initialized_ || !(dt > 0.0)) {
-    return;
+  if (!initialized_ || !(dt >= kMinPredictStep)) {
+    return;  // measurements closer than this share one prediction
   }
   // White acceleration q per axis over dt: velocity noise sqrt(q dt) n1, position noise
   // sqrt(q dt) dt / 2 n1 + sqrt(q dt^3 / 12) n2 (covariance q [dt^3/3, dt^2/2; dt^2/2, dt]).
   const double sv = std::sqrt(config_.process_noise * dt);
   const double sp = std::sqrt(config_.process_noise * dt * dt * dt / 12.0);
   const double sz = std::sqrt(config_.vertical_noise * dt);
+  double n[4];
   for (Eigen::Index i = 0; i < w_.size(); ++i) {
-    const double ax = normal();
-    const double ay = normal();
-    x_[i] += vx_[i] * dt + sv * dt * 0.5 * ax + sp * normal();
-    y_[i] += vy_[i] * dt + sv * dt * 0.5 * ay + sp * normal();
-    vx_[i] += sv * ax;
-    vy_[i] += sv * ay;
+    normals4(n);
+    x_[i] += vx_[i] * dt + sv * dt * 0.5 * n[0] + sp * n[2];
+    y_[i] += vy_[i] * dt + sv * dt * 0.5 * n[1] + sp * n[3];
+    vx_[i] += sv * n[0];
+    vy_[i] += sv * n[1];
     if (!config_.planar) {
       z_[i] += sz * normal();
     }

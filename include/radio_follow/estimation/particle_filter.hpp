@@ -119,9 +119,23 @@ class ParticleFilter {
  private:
   /// Multiplies the weights by inlier + outlier likelihood and renormalises.
   MeasurementFit applyLikelihood(const Eigen::ArrayXd& inlier, const Eigen::ArrayXd& outlier);
+  /// xorshift64*: fast, and plenty for indexing a table and systematic resampling.
+  std::uint64_t nextRandom() {
+    state_ ^= state_ >> 12;
+    state_ ^= state_ << 25;
+    state_ ^= state_ >> 27;
+    return state_ * 0x2545F4914F6CDD1Dull;
+  }
   /// A standard normal draw (table lookup: the filter draws millions per second).
-  double normal();
-  std::uint64_t nextRandom();
+  double normal() { return normals_[nextRandom() >> 48]; }
+  /// Four at once, from the four 16-bit parts of one random word.
+  void normals4(double* out) {
+    const std::uint64_t r = nextRandom();
+    out[0] = normals_[r & 0xFFFF];
+    out[1] = normals_[(r >> 16) & 0xFFFF];
+    out[2] = normals_[(r >> 32) & 0xFFFF];
+    out[3] = normals_[r >> 48];
+  }
 
   Config config_;
   bool initialized_ = false;
