@@ -51,7 +51,7 @@ class LocatorNode {
     /// each measurement's stamp); "" = the robot's own frame.
     std::string odom_frame = "odom";
     /// A stamp up to this much newer than the newest odometry TF uses that TF, s.
-    double tf_tolerance = 0.1;
+    double tf_tolerance = 0.25;
     estimation::LocatorConfig locator;  ///< the core's tuning
 
     /// Reads the private parameters from `source`: the node's namespace (ParamReader) or

@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "radio_follow/config/layout.hpp"
+#include "radio_follow/estimation/locator.hpp"
+#include "radio_follow/sim/world.hpp"
+
+namespace radio_follow {
+namespace evaluation {
+
+/// Issue 14's cold-start benchmark: a robot standing still, a person standing somewhere,
+/// the locator started from nothing on the simulator's sensors. How long does an estimate
+/// that the controllers would drive to (OK or DEGRADED) sit on the mirror image?
+struct ColdStartParams {
+  std::size_t trials = 10000;
+  double duration = 3.0;      ///< s of sensor data per trial
+  double min_distance = 1.5;  ///< m, the person's distance from the robot, uniform
+  double max_distance = 8.0;
+  /// Hardware seeds cycled over the trials (realistic profile: each its own calibrated
+  /// robot).
+  int robots = 8;
+  std::uint64_t seed = 1;
+};
+
+struct ColdStartResult {
+  std::size_t trials = 0;
+  /// Trials whose estimate was on the mirror side (closer to the mirror image than to the
+  /// person, the two more than 1 m apart) while OK or DEGRADED for more than 1 s in a row.
+  std::size_t mirror_locks_over_1s = 0;
+  /// ... for any time at all.
+  std::size_t mirror_any = 0;
+  double longest_mirror_s = 0.0;
+  /// Trials that reached OK or DEGRADED within the duration; median time to it, s.
+  std::size_t usable = 0;
+  double median_time_to_usable = 0.0;
+  /// Median and 95th percentile of the error of usable estimates after 1 s, m.
+  double error_median = 0.0;
+  double error_p95 = 0.0;
+  /// Mean normalised estimation error squared of those (2D: consistent = 2).
+  double nees_mean = 0.0;
+  std::size_t nees_samples = 0;
+  std::size_t ambiguous_updates = 0;
+  std::size_t updates = 0;
+};
+
+/// Runs the trials on `layout` (the sensors as designed) with the sensor profile and
+/// noise of `world`; the locator gets locatorLayoutFor()'s calibrated layout per robot.
+ColdStartResult runColdStarts(const Layout& layout, sim::WorldConfig world,
+                              const estimation::LocatorConfig& locator,
+                              const ColdStartParams& params);
+
+}  // namespace evaluation
+}  // namespace radio_follow

@@ -1,0 +1,162 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/evaluation/cold_starts.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "radio_follow/common/angles.hpp"
+#include "radio_follow/evaluation/calibration_run.hpp"
+#include "radio_follow/sim/sensor_profile.hpp"
+#include "radio_follow/sim/virtual_sensors.hpp"
+
+namespace radio_follow {
+namespace evaluation {
+namespace {
+
+/// Sensor report period and the locator's update period, s.
+constexpr double kSensorPeriod = 0.1;
+constexpr double kUpdatePeriod = 0.05;
+/// A mirror image closer than this to the person is no wrong side, m.
+constexpr double kMinMirrorSeparation = 1.0;
+
+/// `p` reflected across the main axis of the layout's TWR modules (xy-plane).
+Eigen::Vector3d mirrorOf(const Layout& layout, const Eigen::Vector3d& p) {
+  Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
+  for (const auto& m : layout.twr_modules) {
+    centroid += m.position.head<2>();
+  }
+  centroid /= static_cast<double>(std::max<std::size_t>(1, layout.twr_modules.size()));
+  Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
+  for (const auto& m : layout.twr_modules) {
+    const Eigen::Vector2d d = m.position.head<2>() - centroid;
+    scatter += d * d.transpose();
+  }
+  const Eigen::Vector2d axis =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(scatter).eigenvectors().col(1);
+  const Eigen::Vector2d d = p.head<2>() - centroid;
+  Eigen::Vector3d out = p;
+  out.head<2>() = centroid + 2.0 * d.dot(axis) * axis - d;
+  return out;
+}
+
+double quantile(std::vector<double> v, double q) {
+  if (v.empty()) {
+    return std::nan("");
+  }
+  std::sort(v.begin(), v.end());
+  return v[static_cast<std::size_t>(q * static_cast<double>(v.size() - 1))];
+}
+
+}  // namespace
+
+ColdStartResult runColdStarts(const Layout& layout, sim::WorldConfig world,
+                              const estimation::LocatorConfig& locator,
+                              const ColdStartParams& params) {
+  ColdStartResult result;
+  std::vector<Layout> calibrated;
+  for (int r = 0; r < params.robots; ++r) {
+    world.hardware_seed = static_cast<std::uint64_t>(r + 1);
+    calibrated.push_back(locatorLayoutFor(layout, world));
+  }
+  const bool realistic = world.profile == sim::SensorProfile::kRealistic;
+  sim::Rng rng(params.seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<double> times_to_usable;
+  std::vector<double> errors;
+  double nees_sum = 0.0;
+  for (std::size_t trial = 0; trial < params.trials; ++trial) {
+    const auto robot = static_cast<std::uint64_t>(trial % static_cast<std::size_t>(params.robots));
+    const double r = params.min_distance + (params.max_distance - params.min_distance) * unit(rng);
+    const double a = (2.0 * unit(rng) - 1.0) * kPi;
+    const Eigen::Vector3d target(r * std::cos(a), r * std::sin(a), locator.height);
+    const Eigen::Vector3d mirror = mirrorOf(layout, target);
+    const bool has_mirror = (mirror - target).head<2>().norm() > kMinMirrorSeparation;
+
+    estimation::Locator estimator(calibrated[robot], locator);
+    std::vector<sim::TwrNoiseState> states(layout.twr_modules.size());
+    std::vector<sim::TwrHardware> hardware;
+    for (const auto& m : layout.twr_modules) {
+      hardware.push_back(sim::drawTwrHardware(robot + 1, m.id, layout.target_anchor_id));
+    }
+    std::vector<AoaBoard> mounted;
+    for (const auto& b : layout.aoa_boards) {
+      mounted.push_back(sim::mountedAoaBoard(b, robot + 1));
+    }
+    // Free-running sensors: each its own phase.
+    const std::size_t sensors = layout.twr_modules.size() + layout.aoa_boards.size();
+    std::vector<double> next(sensors);
+    for (double& t : next) {
+      t = kSensorPeriod * unit(rng);
+    }
+    double mirror_run = 0.0;
+    double longest = 0.0;
+    bool usable_seen = false;
+    for (double now = kUpdatePeriod; now <= params.duration + 1e-9; now += kUpdatePeriod) {
+      for (std::size_t s = 0; s < sensors; ++s) {
+        while (next[s] <= now) {
+          const double t = next[s];
+          next[s] += kSensorPeriod;
+          if (s < layout.twr_modules.size()) {
+            const TwrModule& m = layout.twr_modules[s];
+            const std::optional<double> range =
+                realistic ? sim::simulateRealisticTwr(m, hardware[s], world.twr, states[s], target,
+                                                      t, rng)
+                          : sim::simulateTwrRange(m, world.twr, target, rng);
+            if (range) {
+              estimator.addRange(m.id, *range, t);
+            }
+          } else {
+            const std::size_t b = s - layout.twr_modules.size();
+            const std::optional<sim::AoaSample> sample =
+                realistic ? sim::simulateRealisticAoa(mounted[b], world.aoa, target, rng)
+                          : sim::simulateAoa(layout.aoa_boards[b], world.aoa, target, rng);
+            if (sample) {
+              estimator.addBearing(layout.aoa_boards[b].id, sample->azimuth, sample->elevation,
+                                   sample->rssi, t);
+            }
+          }
+        }
+      }
+      const estimation::LocatorEstimate e = estimator.update(now);
+      ++result.updates;
+      result.ambiguous_updates += e.status == estimation::TargetStatus::kAmbiguous;
+      if (!hasPosition(e.status)) {
+        mirror_run = 0.0;
+        continue;
+      }
+      if (!usable_seen) {
+        usable_seen = true;
+        times_to_usable.push_back(now);
+      }
+      const double to_target = (e.position - target).head<2>().norm();
+      const bool on_mirror = has_mirror && (e.position - mirror).head<2>().norm() < to_target;
+      mirror_run = on_mirror ? mirror_run + kUpdatePeriod : 0.0;
+      longest = std::max(longest, mirror_run);
+      if (now >= 1.0) {
+        errors.push_back(to_target);
+        const Eigen::Vector2d err = (e.position - target).head<2>();
+        const Eigen::Matrix2d c = e.covariance.topLeftCorner<2, 2>();
+        if (c.determinant() > 0.0) {
+          nees_sum += err.dot(c.ldlt().solve(err));
+          ++result.nees_samples;
+        }
+      }
+    }
+    ++result.trials;
+    result.mirror_any += longest > 0.0;
+    result.mirror_locks_over_1s += longest > 1.0;
+    result.longest_mirror_s = std::max(result.longest_mirror_s, longest);
+  }
+  result.usable = times_to_usable.size();
+  result.median_time_to_usable = quantile(times_to_usable, 0.5);
+  result.error_median = quantile(errors, 0.5);
+  result.error_p95 = quantile(errors, 0.95);
+  result.nees_mean =
+      result.nees_samples > 0 ? nees_sum / static_cast<double>(result.nees_samples) : std::nan("");
+  return result;
+}
+
+}  // namespace evaluation
+}  // namespace radio_follow
