@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/evaluation/cold_starts.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "radio_follow/evaluation/closed_loop.hpp"
+
+namespace radio_follow {
+namespace evaluation {
+namespace {
+
+ColdStartResult run(sim::SensorProfile profile, std::size_t trials) {
+  const ClosedLoopConfig c = loadClosedLoopConfig(RF_CONFIG_DIR, "spot", "outdoor_loop",
+                                                  FollowController::kVelocity, 1, "", "", profile);
+  ColdStartParams params;
+  params.trials = trials;
+  params.robots = 2;
+  return runColdStarts(c.layout, c.world, c.locator, params);
+}
+
+TEST(ColdStarts, TheShippedLocatorFindsThePersonAndNeverSitsOnTheMirror) {
+  const ColdStartResult r = run(sim::SensorProfile::kRealistic, 40);
+  EXPECT_EQ(r.trials, 40u);
+  EXPECT_EQ(r.usable, 40u);
+  EXPECT_EQ(r.mirror_locks_over_1s, 0u);
+  EXPECT_LT(r.median_time_to_usable, 1.0);
+  EXPECT_LT(r.error_median, 0.4);
+  EXPECT_GT(r.nees_samples, 1000u);
+  EXPECT_TRUE(std::isfinite(r.nees_mean));
+}
+
+TEST(ColdStarts, TheSolverEstimatorIsMeasuredTheSameWay) {
+  ClosedLoopConfig c =
+      loadClosedLoopConfig(RF_CONFIG_DIR, "spot", "outdoor_loop", FollowController::kVelocity, 1,
+                           "", "", sim::SensorProfile::kIdeal);
+  c.locator.estimator = estimation::Estimator::kSolver;
+  ColdStartParams params;
+  params.trials = 20;
+  params.robots = 1;
+  const ColdStartResult r = runColdStarts(c.layout, c.world, c.locator, params);
+  EXPECT_EQ(r.trials, 20u);
+  EXPECT_GT(r.usable, 15u);
+  EXPECT_GT(r.updates, 20u * 59u);
+}
+
+}  // namespace
+}  // namespace evaluation
+}  // namespace radio_follow
