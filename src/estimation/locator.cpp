@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/estimation/mirror_axis.hpp"
 
 namespace radio_follow {
 namespace estimation {
@@ -22,29 +23,15 @@ constexpr double kMinMirrorSeparation = 0.5;
 /// Epochs in a row that must prefer the tracked side before it counts as confirmed.
 constexpr int kSideConfirmEpochs = 5;
 
-/// `p` reflected across the main axis (in the xy-plane) of the ranging modules: the other
-/// solution the ranges of nearly collinear modules allow. nullopt with fewer than two.
+/// `p` reflected across the main axis of the ranging modules: the other solution the
+/// ranges of nearly collinear modules allow. nullopt with fewer than two.
 std::optional<Eigen::Vector3d> mirrorImage(const ObservationSet& obs, const Eigen::Vector3d& p) {
-  if (obs.ranges.size() < 2) {
-    return std::nullopt;
-  }
-  Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
+  std::vector<Eigen::Vector3d> modules;
   for (const auto& z : obs.ranges) {
-    centroid += z.module.head<2>();
+    modules.push_back(z.module);
   }
-  centroid /= static_cast<double>(obs.ranges.size());
-  Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
-  for (const auto& z : obs.ranges) {
-    const Eigen::Vector2d d = z.module.head<2>() - centroid;
-    scatter += d * d.transpose();
-  }
-  const Eigen::Vector2d axis =
-      Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(scatter).eigenvectors().col(
-          1);  // eigenvalues ascend: the largest spread
-  const Eigen::Vector2d d = p.head<2>() - centroid;
-  Eigen::Vector3d mirrored = p;
-  mirrored.head<2>() = centroid + 2.0 * d.dot(axis) * axis - d;
-  return mirrored;
+  const std::optional<MirrorAxis> axis = mirrorAxis(modules);
+  return axis ? std::optional<Eigen::Vector3d>(axis->reflect(p)) : std::nullopt;
 }
 
 void validateLoss(const LossConfig& loss, const std::string& name) {
@@ -96,13 +83,6 @@ ParticleTrackerConfig trackerConfig(const LocatorConfig& c) {
   t.lost_sigma = c.lost_sigma;
   t.default_range = c.default_range;
   return t;
-}
-
-/// `p` (tracking frame) in the robot frame of `pose`.
-Eigen::Vector3d inRobotFrame(const Pose2& pose, const Eigen::Vector3d& p) {
-  const Eigen::Matrix3d r =
-      Eigen::AngleAxisd(pose.yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-  return r.transpose() * (p - Eigen::Vector3d(pose.x, pose.y, 0.0));
 }
 
 const LocatorConfig& validated(const LocatorConfig& config) {
@@ -531,10 +511,10 @@ LocatorEstimate Locator::updateParticle(double now, LocatorEstimate out) {
   out.tracking_covariance = track.covariance;
   const Eigen::Matrix3d rotation =
       Eigen::AngleAxisd(track.pose.yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-  out.position = inRobotFrame(track.pose, track.position);
+  out.position = track.pose.fromFixed(track.position);
   out.velocity = rotation.transpose() * out.tracking_velocity;
   out.covariance = rotation.transpose() * track.covariance * rotation;
-  out.alternative = inRobotFrame(track.pose, track.alternative);
+  out.alternative = track.pose.fromFixed(track.alternative);
   out.hypotheses = track.hypotheses;
   out.hypothesis_weight = track.hypothesis_weight;
   out.status = track.status;

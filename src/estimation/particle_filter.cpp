@@ -74,23 +74,17 @@ ParticleFilter::ParticleFilter(const Config& config) : config_(config), state_(c
 
 void ParticleFilter::initialize(const std::vector<Eigen::Vector3d>& positions,
                                 double velocity_sigma, double t) {
-  const auto n = static_cast<Eigen::Index>(config_.particles);
-  x_.resize(n);
-  y_.resize(n);
-  z_.resize(n);
-  vx_.resize(n);
-  vy_.resize(n);
-  w_.setConstant(n, 1.0 / static_cast<double>(n));
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const Eigen::Vector3d& p = positions[static_cast<std::size_t>(i) % positions.size()];
-    x_[i] = p.x() + kInitialSpread * normal();
-    y_[i] = p.y() + kInitialSpread * normal();
-    z_[i] = config_.planar ? config_.height : p.z() + kInitialSpread * normal();
-    vx_[i] = velocity_sigma * normal();
-    vy_[i] = velocity_sigma * normal();
+  std::vector<Eigen::Vector3d> spread(config_.particles);
+  std::vector<Eigen::Vector2d> velocities(config_.particles);
+  for (std::size_t i = 0; i < config_.particles; ++i) {
+    const Eigen::Vector3d& p = positions[i % positions.size()];
+    spread[i].x() = p.x() + kInitialSpread * normal();
+    spread[i].y() = p.y() + kInitialSpread * normal();
+    spread[i].z() = config_.planar ? config_.height : p.z() + kInitialSpread * normal();
+    velocities[i].x() = velocity_sigma * normal();
+    velocities[i].y() = velocity_sigma * normal();
   }
-  t_ = t;
-  initialized_ = true;
+  assign(spread, velocities, t);
 }
 
 void ParticleFilter::assign(const std::vector<Eigen::Vector3d>& positions,

@@ -40,20 +40,6 @@ constexpr double kFitRate = 0.02;
 /// consistent track sits near 1 - the outlier shares, about 0.95).
 constexpr double kDivergedFit = 0.6;
 
-Eigen::Vector3d toWorld(const Pose2& pose, const Eigen::Vector3d& p) {
-  const double c = std::cos(pose.yaw);
-  const double s = std::sin(pose.yaw);
-  return {pose.x + c * p.x() - s * p.y(), pose.y + s * p.x() + c * p.y(), p.z()};
-}
-
-Eigen::Vector3d toRobot(const Pose2& pose, const Eigen::Vector3d& p) {
-  const double c = std::cos(pose.yaw);
-  const double s = std::sin(pose.yaw);
-  const double dx = p.x() - pose.x;
-  const double dy = p.y() - pose.y;
-  return {c * dx + s * dy, -s * dx + c * dy, p.z()};
-}
-
 Eigen::Matrix3d yawRotation(double yaw) {
   return Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
 }
@@ -73,21 +59,13 @@ ParticleFilter::Config mirrorConfig(ParticleFilter::Config c) {
 
 ParticleTracker::ParticleTracker(const Layout& layout, const ParticleTrackerConfig& config)
     : layout_(layout), config_(config), main_(config.filter), mirror_(mirrorConfig(config.filter)) {
-  if (config.filter.planar && layout.twr_modules.size() >= 2) {
-    Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
-    for (const auto& m : layout.twr_modules) {
-      centroid += m.position.head<2>();
-    }
-    centroid /= static_cast<double>(layout.twr_modules.size());
-    Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
-    for (const auto& m : layout.twr_modules) {
-      const Eigen::Vector2d d = m.position.head<2>() - centroid;
-      scatter += d * d.transpose();
-    }
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(scatter);
-    if (eigen.eigenvalues()(0) < kCollinearRatio * eigen.eigenvalues()(1)) {
-      axis_ = std::make_pair(centroid, Eigen::Vector2d(eigen.eigenvectors().col(1)));
-    }
+  std::vector<Eigen::Vector3d> modules;
+  for (const auto& m : layout.twr_modules) {
+    modules.push_back(m.position);
+  }
+  const std::optional<MirrorAxis> axis = mirrorAxis(modules);
+  if (config.filter.planar && axis && axis->flatness < kCollinearRatio) {
+    axis_ = axis;
   }
 }
 
@@ -117,46 +95,37 @@ void ParticleTracker::add(const TrackedMeasurement& measurement) {
 }
 
 Eigen::Vector3d ParticleTracker::mirrored(const Eigen::Vector3d& p, const Pose2& pose) const {
-  const Eigen::Vector3d r = toRobot(pose, p);
-  const Eigen::Vector2d d = r.head<2>() - axis_->first;
-  const Eigen::Vector2d& a = axis_->second;
-  Eigen::Vector3d m = r;
-  m.head<2>() = axis_->first + 2.0 * d.dot(a) * a - d;
-  return toWorld(pose, m);
+  return pose.toFixed(axis_->reflect(pose.fromFixed(p)));
 }
 
 Eigen::Vector2d ParticleTracker::mirroredVelocity(const Eigen::Vector2d& v,
                                                   const Pose2& pose) const {
   const Eigen::Rotation2Dd rotation(pose.yaw);
-  const Eigen::Vector2d r = rotation.inverse() * v;
-  const Eigen::Vector2d& a = axis_->second;
-  return rotation * Eigen::Vector2d(2.0 * r.dot(a) * a - r);
+  return rotation * axis_->reflectVector(rotation.inverse() * v);
 }
 
 bool ParticleTracker::onMainSide(const Eigen::Vector3d& p, const Pose2& pose) const {
-  const Eigen::Vector2d d = toRobot(pose, p).head<2>() - axis_->first;
-  const Eigen::Vector2d& a = axis_->second;
-  return a.x() * d.y() - a.y() * d.x() >= 0.0;
+  return axis_->leftOf(pose.fromFixed(p));
 }
 
 MeasurementFit ParticleTracker::weigh(ParticleFilter& filter, const TrackedMeasurement& m,
                                       const Pose2& pose) const {
   switch (m.kind) {
     case TrackedMeasurement::Kind::kRange:
-      return filter.weightRange(toWorld(pose, layout_.twr_modules[m.sensor].position), m.value,
+      return filter.weightRange(pose.toFixed(layout_.twr_modules[m.sensor].position), m.value,
                                 config_.range);
     case TrackedMeasurement::Kind::kTdoa: {
       RangeLikelihood model = config_.tdoa;
       model.sigma = m.sigma;
-      return filter.weightTdoa(toWorld(pose, layout_.tdoa_anchors[m.sensor].position),
-                               toWorld(pose, layout_.tdoa_anchors[m.sensor_b].position), m.value,
+      return filter.weightTdoa(pose.toFixed(layout_.tdoa_anchors[m.sensor].position),
+                               pose.toFixed(layout_.tdoa_anchors[m.sensor_b].position), m.value,
                                model);
     }
     case TrackedMeasurement::Kind::kBearing: {
       const AoaBoard& board = layout_.aoa_boards[m.sensor];
       BearingLikelihood model = config_.bearing;
       model.field_of_view = board.field_of_view;
-      return filter.weightBearing(toWorld(pose, board.position),
+      return filter.weightBearing(pose.toFixed(board.position),
                                   yawRotation(pose.yaw) * board.orientation.toRotationMatrix(),
                                   m.value, m.elevation, model);
     }
@@ -243,7 +212,7 @@ bool ParticleTracker::coldStart(double now) {
   const double golden = 2.39996322972865332;  // rad: evenly spread angles, no RNG needed
   if (ring != nullptr) {
     const Eigen::Vector3d module =
-        toWorld(ring->pose.value_or(Pose2{}), layout_.twr_modules[ring->sensor].position);
+        ring->pose.value_or(Pose2{}).toFixed(layout_.twr_modules[ring->sensor].position);
     const double dz = config_.filter.planar ? height - module.z() : 0.0;
     const double radius = std::sqrt(std::max(0.01, ring->value * ring->value - dz * dz));
     for (std::size_t k = 0; k < count; ++k) {
@@ -255,7 +224,7 @@ bool ParticleTracker::coldStart(double now) {
     for (std::size_t k = 0; k < count; ++k) {
       const double r = kTdoaDisc * std::sqrt((static_cast<double>(k) + 0.5) / count);
       const double angle = golden * static_cast<double>(k);
-      positions.push_back(toWorld(pose, {r * std::cos(angle), r * std::sin(angle), height}));
+      positions.push_back(pose.toFixed({r * std::cos(angle), r * std::sin(angle), height}));
     }
   } else {
     std::vector<const TrackedMeasurement*> bearings;
@@ -273,7 +242,7 @@ bool ParticleTracker::coldStart(double now) {
       }
       const double fraction = static_cast<double>((k * 7919) % count) / static_cast<double>(count);
       const double distance = kRayMin + (kRayMax - kRayMin) * fraction;
-      Eigen::Vector3d p = toWorld(at, board.position + board.orientation * (distance * direction));
+      Eigen::Vector3d p = at.toFixed(board.position + board.orientation * (distance * direction));
       if (config_.filter.planar) {
         p.z() = height;
       }
@@ -411,7 +380,7 @@ TrackerOutput ParticleTracker::update(double now) {
   const Eigen::Vector3d position = main_.mean();
   const bool ranged = last_position_fix_ >= 0.0 && now - last_position_fix_ <= config_.max_age;
   const double sigma = worstSigma(covariance);
-  const double distance = toRobot(pose_, position).head<2>().norm();
+  const double distance = pose_.fromFixed(position).head<2>().norm();
   // A cloud wider than lost_sigma (or, far away, than twice the relative limit: a
   // bearing's sideways spread) is no position: a cold start's ring around one module,
   // whose mean is near the robot, or a track that fell apart.
@@ -434,10 +403,10 @@ TrackerOutput ParticleTracker::update(double now) {
   out.hypothesis_weight = 1.0;
   if (!ranged) {
     // Direction only: where along it is the prior's guess.
-    const Eigen::Vector3d relative = toRobot(pose_, position);
+    const Eigen::Vector3d relative = pose_.fromFixed(position);
     const double heading = std::atan2(relative.y(), relative.x());
-    out.position = toWorld(pose_, {config_.default_range * std::cos(heading),
-                                   config_.default_range * std::sin(heading), position.z()});
+    out.position = pose_.toFixed({config_.default_range * std::cos(heading),
+                                  config_.default_range * std::sin(heading), position.z()});
     out.status = TargetStatus::kHeadingOnly;
     return out;
   }

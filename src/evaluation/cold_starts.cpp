@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/evaluation/cold_starts.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <random>
 
 #include "radio_follow/common/angles.hpp"
+#include "radio_follow/estimation/mirror_axis.hpp"
 #include "radio_follow/evaluation/calibration_run.hpp"
 #include "radio_follow/sim/sensor_profile.hpp"
 #include "radio_follow/sim/virtual_sensors.hpp"
@@ -21,24 +21,14 @@ constexpr double kUpdatePeriod = 0.05;
 /// A mirror image closer than this to the person is no wrong side, m.
 constexpr double kMinMirrorSeparation = 1.0;
 
-/// `p` reflected across the main axis of the layout's TWR modules (xy-plane).
+/// `p` reflected across the main axis of the layout's TWR modules.
 Eigen::Vector3d mirrorOf(const Layout& layout, const Eigen::Vector3d& p) {
-  Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
+  std::vector<Eigen::Vector3d> modules;
   for (const auto& m : layout.twr_modules) {
-    centroid += m.position.head<2>();
+    modules.push_back(m.position);
   }
-  centroid /= static_cast<double>(std::max<std::size_t>(1, layout.twr_modules.size()));
-  Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
-  for (const auto& m : layout.twr_modules) {
-    const Eigen::Vector2d d = m.position.head<2>() - centroid;
-    scatter += d * d.transpose();
-  }
-  const Eigen::Vector2d axis =
-      Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(scatter).eigenvectors().col(1);
-  const Eigen::Vector2d d = p.head<2>() - centroid;
-  Eigen::Vector3d out = p;
-  out.head<2>() = centroid + 2.0 * d.dot(axis) * axis - d;
-  return out;
+  const std::optional<estimation::MirrorAxis> axis = estimation::mirrorAxis(modules);
+  return axis ? axis->reflect(p) : p;
 }
 
 double quantile(std::vector<double> v, double q) {

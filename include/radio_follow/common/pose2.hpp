@@ -2,6 +2,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cmath>
 
 namespace radio_follow {
 
@@ -13,6 +14,22 @@ struct Pose2 {
   double yaw = 0.0;
 
   Eigen::Vector2d position() const { return {x, y}; }
+
+  /// A point given in the frame of this pose (e.g. the robot's) in the pose's fixed frame
+  /// (e.g. odom); z unchanged.
+  Eigen::Vector3d toFixed(const Eigen::Vector3d& p) const {
+    const double c = std::cos(yaw);
+    const double s = std::sin(yaw);
+    return {x + c * p.x() - s * p.y(), y + s * p.x() + c * p.y(), p.z()};
+  }
+  /// The inverse: a point of the fixed frame seen from this pose.
+  Eigen::Vector3d fromFixed(const Eigen::Vector3d& p) const {
+    const double c = std::cos(yaw);
+    const double s = std::sin(yaw);
+    const double dx = p.x() - x;
+    const double dy = p.y() - y;
+    return {c * dx + s * dy, -s * dx + c * dy, p.z()};
+  }
 };
 
 }  // namespace radio_follow

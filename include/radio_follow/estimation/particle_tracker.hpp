@@ -10,6 +10,7 @@
 
 #include "radio_follow/common/pose2.hpp"
 #include "radio_follow/config/layout.hpp"
+#include "radio_follow/estimation/mirror_axis.hpp"
 #include "radio_follow/estimation/particle_filter.hpp"
 #include "radio_follow/estimation/target_status.hpp"
 
@@ -123,9 +124,8 @@ class ParticleTracker {
   ParticleFilter mirror_;
   bool mirror_active_ = false;
   double evidence_ = 0.0;
-  /// The modules' main axis in the robot frame (centroid and unit direction), when they
-  /// are nearly collinear.
-  std::optional<std::pair<Eigen::Vector2d, Eigen::Vector2d>> axis_;
+  /// The modules' main axis in the robot frame, when they are nearly collinear.
+  std::optional<MirrorAxis> axis_;
   std::vector<TrackedMeasurement> queue_;
   std::deque<TrackedMeasurement> recent_;  ///< processed within max_age (cold starts)
   bool in_odom_ = false;

@@ -280,11 +280,7 @@ void LocatorNode::publish(const estimation::LocatorEstimate& estimate, const ros
     in_odom.position = estimate.tracking_position;
     in_odom.velocity = estimate.tracking_velocity;
     in_odom.covariance = estimate.tracking_covariance;
-    const double c = std::cos(estimate.robot_pose.yaw);
-    const double s = std::sin(estimate.robot_pose.yaw);
-    const Eigen::Vector3d& a = estimate.alternative;
-    in_odom.alternative = Eigen::Vector3d(estimate.robot_pose.x + c * a.x() - s * a.y(),
-                                          estimate.robot_pose.y + s * a.x() + c * a.y(), a.z());
+    in_odom.alternative = estimate.robot_pose.toFixed(estimate.alternative);
     TargetEstimate msg = toMessage(in_odom, params_.odom_frame, stamp);
     // range and bearing stay relative to the robot, as the message defines them.
     msg.range = estimate.position.head<2>().norm();

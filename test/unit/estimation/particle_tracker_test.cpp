@@ -16,14 +16,6 @@ namespace radio_follow {
 namespace estimation {
 namespace {
 
-/// The robot at `pose` sees `p` (tracking frame) here.
-Eigen::Vector3d inRobot(const Pose2& pose, const Eigen::Vector3d& p) {
-  const double c = std::cos(pose.yaw);
-  const double s = std::sin(pose.yaw);
-  const Eigen::Vector3d d = p - Eigen::Vector3d(pose.x, pose.y, 0.0);
-  return {c * d.x() + s * d.y(), -s * d.x() + c * d.y(), p.z()};
-}
-
 /// Noisy ranges and bearings of a layout to a target, each sensor at its own phase.
 class Feeder {
  public:
@@ -36,8 +28,8 @@ class Feeder {
   void epoch(const Eigen::Vector3d& target, double t, const std::optional<Pose2>& pose,
              bool bearings = true, const std::optional<Eigen::Vector3d>& bearing_target = {}) {
     const Pose2 p = pose.value_or(Pose2{});
-    const Eigen::Vector3d local = inRobot(p, target);
-    const Eigen::Vector3d seen = inRobot(p, bearing_target.value_or(target));
+    const Eigen::Vector3d local = p.fromFixed(target);
+    const Eigen::Vector3d seen = p.fromFixed(bearing_target.value_or(target));
     std::normal_distribution<double> range_noise(0.0, range_sigma_);
     std::normal_distribution<double> angle_noise(0.0, angle_sigma_);
     double at = t;
@@ -170,7 +162,7 @@ TEST(ParticleTracker, OdometryFrameTrackingPlacesEveryMeasurementAtItsPose) {
   EXPECT_LT((e.tracking_position - target).head<2>().norm(), 0.15);
   EXPECT_LT(e.tracking_velocity.head<2>().norm(), 0.3);  // standing still
   // The robot-frame output is the same point seen from the pose at the stamp.
-  const Eigen::Vector3d seen = inRobot(e.robot_pose, e.tracking_position);
+  const Eigen::Vector3d seen = e.robot_pose.fromFixed(e.tracking_position);
   EXPECT_LT((e.position - seen).head<2>().norm(), 1e-9);
   EXPECT_NEAR(e.robot_pose.yaw, 0.02 * 59, 1e-9);
   // A measurement without a pose switches frames: the track restarts.
