@@ -113,7 +113,16 @@ const ParamTable<LocatorConfig>& LocatorConfig::table() {
           .add("bearing_outlier_share", &C::bearing_outlier_share, "",
                "Share of bearings that are reflections (particle).", Range::open(0.0, 0.5))
           .add("lost_sigma", &C::lost_sigma, "m",
-               "Worst-axis sigma beyond which the track is lost (particle).", Range::above(0.0));
+               "Worst-axis sigma beyond which the track is lost (particle).", Range::above(0.0))
+          .add("range_bias_sigma", &C::range_bias_sigma, "m",
+               "Slowly varying part of the range error: covariance floor (particle).",
+               Range::atLeast(0.0))
+          .add("tdoa_bias_sigma", &C::tdoa_bias_sigma, "m",
+               "Slowly varying part of the TDoA error: covariance floor (particle).",
+               Range::atLeast(0.0))
+          .addScaled("azimuth_bias_sigma_deg", &C::azimuth_bias_sigma, kPi / 180.0, "deg",
+                     "Slowly varying part of the azimuth error: covariance floor (particle).",
+                     Range::atLeast(0.0));
   return t;
 }
 

@@ -6,10 +6,12 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <tuple>
 #include <utility>
 
 #include "radio_follow/common/time_policy.hpp"
+#include "radio_follow/estimation/correlated_error.hpp"
 
 namespace radio_follow {
 namespace estimation {
@@ -289,6 +291,48 @@ bool ParticleTracker::coldStart(double now) {
   return true;
 }
 
+Eigen::Matrix3d ParticleTracker::correlatedFloor(const Eigen::Vector3d& position) const {
+  std::vector<InformingSensor> sensors;
+  std::set<std::tuple<int, std::size_t, std::size_t>> seen;
+  for (const TrackedMeasurement& m : recent_) {
+    if (!seen.insert(std::make_tuple(static_cast<int>(m.kind), m.sensor, m.sensor_b)).second) {
+      continue;
+    }
+    InformingSensor s;
+    switch (m.kind) {
+      case TrackedMeasurement::Kind::kRange:
+        s.gradient = rangeGradient(pose_.toFixed(layout_.twr_modules[m.sensor].position),
+                                   position, config_.filter.planar);
+        s.white_sigma = config_.range.sigma;
+        s.bias_sigma = config_.range_bias_sigma;
+        break;
+      case TrackedMeasurement::Kind::kTdoa:
+        s.gradient =
+            rangeGradient(pose_.toFixed(layout_.tdoa_anchors[m.sensor].position), position,
+                          config_.filter.planar) -
+            rangeGradient(pose_.toFixed(layout_.tdoa_anchors[m.sensor_b].position), position,
+                          config_.filter.planar);
+        s.white_sigma = m.sigma;
+        s.bias_sigma = config_.tdoa_bias_sigma;
+        break;
+      case TrackedMeasurement::Kind::kBearing: {
+        const AoaBoard& board = layout_.aoa_boards[m.sensor];
+        const Eigen::Vector3d local = board.orientation.conjugate() *
+                                      (pose_.fromFixed(position) - board.position);
+        if (!(local.x() > std::cos(board.field_of_view) * local.head<2>().norm())) {
+          continue;  // the filter all but ignores a board that does not see the target
+        }
+        s.gradient = azimuthGradient(pose_.toFixed(board.position), position);
+        s.white_sigma = config_.bearing.azimuth_sigma;
+        s.bias_sigma = config_.azimuth_bias_sigma;
+        break;
+      }
+    }
+    sensors.push_back(s);
+  }
+  return correlatedErrorCovariance(sensors);
+}
+
 void ParticleTracker::seedMirror() {
   std::vector<Eigen::Vector3d> positions;
   std::vector<Eigen::Vector2d> velocities;
@@ -412,16 +456,38 @@ TrackerOutput ParticleTracker::update(double now) {
   }
   const double allowed =
       std::max(config_.max_position_sigma, config_.max_relative_sigma * distance);
-  out.status = sigma <= allowed ? TargetStatus::kOk : TargetStatus::kDegraded;
+  Eigen::Vector3d mixture_position = position;
+  Eigen::Vector2d mixture_velocity = out.velocity;
+  Eigen::Matrix3d mixture_covariance = covariance;
   if (mirror_active_ && mirrorDistinct()) {
     const double mirror_share = 1.0 / (1.0 + std::exp(-evidence_));
     out.hypothesis_weight = 1.0 - mirror_share;
     out.alternative = mirror_.mean();
-    out.hypotheses = mirror_share >= kReportedShare ? 2 : 1;
-    if (evidence_ > -config_.ambiguity_margin) {
-      out.status = TargetStatus::kAmbiguous;
+    if (mirror_share >= kReportedShare) {
+      out.hypotheses = 2;
+      // The law of total covariance over the two hypotheses.
+      const Eigen::Vector3d apart = out.alternative - position;
+      mixture_position = position + mirror_share * apart;
+      mixture_velocity = out.velocity + mirror_share * (mirror_.meanVelocity() - out.velocity);
+      mixture_covariance = (1.0 - mirror_share) * covariance +
+                           mirror_share * mirror_.covariance() +
+                           mirror_share * (1.0 - mirror_share) * apart * apart.transpose();
     }
   }
+  const Eigen::Matrix3d reported = mixture_covariance + correlatedFloor(mixture_position);
+  out.covariance = reported;
+  if (worstSigma(reported) <= allowed) {
+    // One estimate, even with a mirror close by: the mixture is where the target is.
+    out.status = TargetStatus::kOk;
+    out.position = mixture_position;
+    out.velocity = mixture_velocity;
+    return out;
+  }
+  // Too wide to act on: the leading hypothesis, DEGRADED, or AMBIGUOUS while the data do
+  // not prefer one side of a distinct mirror.
+  out.status = out.hypotheses == 2 && evidence_ > -config_.ambiguity_margin
+                   ? TargetStatus::kAmbiguous
+                   : TargetStatus::kDegraded;
   return out;
 }
 

@@ -82,6 +82,11 @@ struct LocatorConfig {
   /// Worst-axis sigma beyond which a ranged track is LOST and restarts (or twice
   /// max_relative_sigma times the distance, if larger), m.
   double lost_sigma = 1.0;
+  /// Particle estimator: the slowly varying part of each sensor's error, which filtering
+  /// cannot average away (correlated_error.hpp); the floor of the reported covariance.
+  double range_bias_sigma = 0.05;     ///< m, TWR ranges
+  double tdoa_bias_sigma = 0.05;      ///< m, TDoA differences
+  double azimuth_bias_sigma = 0.035;  ///< rad, AoA azimuths
 
   /// Reads the fields from their parameters (the locator node's names, e.g. `range_sigma`,
   /// `azimuth_sigma_deg`, `measurement_covariance`); absent keys keep their value.

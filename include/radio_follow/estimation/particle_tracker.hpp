@@ -43,6 +43,11 @@ struct ParticleTrackerConfig {
   double max_relative_sigma = 0.1;  ///< ... or this fraction of the distance
   double lost_sigma = 1.0;          ///< m, worst axis beyond which the track is LOST
   double default_range = 3.0;       ///< m, distance reported along a bearing alone
+  /// The slowly varying part of each sensor's error (correlated_error.hpp): the floor
+  /// of the reported covariance. Range and TDoA in m, azimuth in rad.
+  double range_bias_sigma = 0.05;
+  double tdoa_bias_sigma = 0.05;
+  double azimuth_bias_sigma = 0.035;
 };
 
 /// What the tracker reports, in the tracking frame and in the robot frame at `stamp`.
@@ -86,6 +91,11 @@ struct TrackerStats {
 ///   - while neither is preferred by that margin, the status is AMBIGUOUS;
 ///   - when the mirror falls onto the main one (target on the modules' axis) it is
 ///     re-seeded as the main one's mirror image.
+/// The report is the mixture of the two, weighted by the evidence: its covariance holds
+/// the spread between them (so a mirror a few decimetres away, a target near the
+/// modules' axis, is one wider estimate, not a reason to stop), plus the floor that
+/// errors correlated over seconds leave (correlated_error.hpp). Only when that mixture is
+/// too wide to act on and the data do not prefer one side is the status AMBIGUOUS.
 /// Cold starts sample the whole set of positions the fresh data allow (a ring around a
 /// module, rays along bearings) and split it by side.
 class ParticleTracker {
@@ -117,6 +127,9 @@ class ParticleTracker {
   Eigen::Vector3d mirrored(const Eigen::Vector3d& p, const Pose2& pose) const;
   Eigen::Vector2d mirroredVelocity(const Eigen::Vector2d& v, const Pose2& pose) const;
   bool onMainSide(const Eigen::Vector3d& p, const Pose2& pose) const;
+  /// The covariance floor of correlated errors at `position` from the sensors processed
+  /// within max_age.
+  Eigen::Matrix3d correlatedFloor(const Eigen::Vector3d& position) const;
 
   Layout layout_;
   ParticleTrackerConfig config_;
