@@ -49,6 +49,8 @@ void VelocityLawParams::validate() const {
               " m): the law must stop the robot before the safety stop trips");
   require(std::isfinite(max_linear) && max_linear > 0.0, "~max_linear", max_linear,
           "a speed > 0 in m/s");
+  require(std::isfinite(max_linear_decel) && max_linear_decel > 0.0, "~max_linear_decel",
+          max_linear_decel, "a deceleration > 0 in m/s^2");
   linear.validate("~linear_pid");
   angular.validate("~angular_pid");
 }
@@ -76,13 +78,24 @@ double governingGap(double gap, double module_gap, const VelocityLawParams& para
   return std::isnan(module_gap) ? gap : std::min(gap, module_gap - params.stop_margin);
 }
 
+double brakingSpeed(double room, double decel, double delay) {
+  if (!(room > 0.0)) {
+    return 0.0;
+  }
+  const double reaction = decel * delay;
+  return std::sqrt(reaction * reaction + 2.0 * decel * room) - reaction;
+}
+
 double gapSpeed(double gap, double target_speed, double dt, Pid& pid,
                 const VelocityLawParams& params) {
   const double feed_forward =
       std::isfinite(target_speed) ? params.feed_forward * std::max(0.0, target_speed) : 0.0;
   const double speed = std::max(0.0, feed_forward + pid.update(gap, dt));
-  return std::min(speed, slowdownCap(gap, params.slowdown_distance, params.closing_distance,
-                                     params.max_linear, feed_forward));
+  const double cap = std::min(slowdownCap(gap, params.slowdown_distance, params.closing_distance,
+                                          params.max_linear, feed_forward),
+                              brakingSpeed(gap + params.closing_distance,
+                                           params.max_linear_decel, dt));
+  return std::min(speed, cap);
 }
 
 VelocityLaw::VelocityLaw(const VelocityLawParams& params)
@@ -161,6 +174,7 @@ VelocityLawParams loadVelocityLawParams(const ParamSource& p, const CommandPipel
 
 VelocityLawParams lawWithCommon(VelocityLawParams law, const CommandPipelineParams& common) {
   law.max_linear = common.limits.max_linear;
+  law.max_linear_decel = common.limits.max_linear_decel;
   law.safe_distance = common.safety.safe_distance;
   law.linear.output_limit = common.limits.max_linear;
   law.angular.output_limit = common.limits.max_angular;

@@ -82,6 +82,7 @@ ParticleTrackerConfig trackerConfig(const LocatorConfig& c) {
   t.max_relative_sigma = c.max_relative_sigma;
   t.lost_sigma = c.lost_sigma;
   t.default_range = c.default_range;
+  t.mirror_memory = c.mirror_memory;
   t.range_bias_sigma = c.range_bias_sigma;
   t.tdoa_bias_sigma = c.tdoa_bias_sigma;
   t.azimuth_bias_sigma = c.azimuth_bias_sigma;

@@ -114,6 +114,9 @@ const ParamTable<LocatorConfig>& LocatorConfig::table() {
                "Share of bearings that are reflections (particle).", Range::open(0.0, 0.5))
           .add("lost_sigma", &C::lost_sigma, "m",
                "Worst-axis sigma beyond which the track is lost (particle).", Range::above(0.0))
+          .add("mirror_memory", &C::mirror_memory, "s",
+               "Time constant over which the mirror test's evidence fades (particle).",
+               Range::above(0.0))
           .add("range_bias_sigma", &C::range_bias_sigma, "m",
                "Slowly varying part of the range error: covariance floor (particle).",
                Range::atLeast(0.0))

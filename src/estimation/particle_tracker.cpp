@@ -17,9 +17,11 @@ namespace radio_follow {
 namespace estimation {
 namespace {
 
-/// |log Bayes factor| cap, nats: past evidence for one side never outweighs more than
-/// this much new evidence for the other (a wrong side is left within a few epochs).
-constexpr double kMaxEvidence = 10.0;
+/// |log Bayes factor| of a cold start's two sides at most, nats: one epoch's data, some of
+/// which may be reflections, never make a side certain.
+constexpr double kColdStartEvidence = 10.0;
+/// |log Bayes factor| cap, nats: a numerical guard only (the fading memory bounds it).
+constexpr double kMaxEvidence = 50.0;
 /// Modules whose scatter's small/large eigenvalue ratio is below this are "nearly
 /// collinear": their ranges allow a mirror solution, which a second filter follows.
 constexpr double kCollinearRatio = 0.15;
@@ -149,9 +151,17 @@ void ParticleTracker::apply(const TrackedMeasurement& m) {
     mirror_.predict(m.t);
     const MeasurementFit mirror_fit = weigh(mirror_, m, pose);
     if (main_fit.likelihood > 0.0 && mirror_fit.likelihood > 0.0) {
-      evidence_ =
-          std::clamp(evidence_ + std::log(mirror_fit.likelihood) - std::log(main_fit.likelihood),
-                     -kMaxEvidence, kMaxEvidence);
+      // Fading memory: the side is decided by about the last `mirror_memory` seconds of
+      // data. It bounds the evidence by the rate at which the sensors deliver it, so one
+      // reflection cannot overturn a second of consistent bearings, and errors that stay
+      // correlated for seconds stop adding up after a while; a wrong side is left within
+      // about that time once the data disambiguate.
+      const double faded = evidence_ * std::exp(-std::max(0.0, m.t - evidence_time_) /
+                                                config_.mirror_memory);
+      evidence_ = std::clamp(
+          faded + std::log(mirror_fit.likelihood) - std::log(main_fit.likelihood),
+          -kMaxEvidence, kMaxEvidence);
+      evidence_time_ = std::max(evidence_time_, m.t);
     }
     mirror_.resampleIfNeeded();
   }
@@ -256,6 +266,7 @@ bool ParticleTracker::coldStart(double now) {
     weigh(sampler, *m, m->pose.value_or(Pose2{}));
   }
   evidence_ = 0.0;
+  evidence_time_ = latest->t;
   if (axis_ && ring != nullptr) {
     // Keep the side with more weight; the other is what the mirror filter starts from.
     const auto side = [this, &pose](const Eigen::Vector3d& p) { return onMainSide(p, pose); };
@@ -268,7 +279,7 @@ bool ParticleTracker::coldStart(double now) {
     }
     evidence_ = std::clamp(std::log(std::max(std::min(first, second), 1e-12) /
                                     std::max(std::max(first, second), 1e-12)),
-                           -kMaxEvidence, kMaxEvidence);
+                           -kColdStartEvidence, kColdStartEvidence);
   }
   std::vector<Eigen::Vector3d> kept;
   std::vector<Eigen::Vector2d> velocities;

@@ -39,6 +39,10 @@ struct VelocityLawParams {
   double degraded_speed_factor = 0.5;
   /// Maximum forward speed, m/s (also the linear PID's output limit).
   double max_linear = 1.5;
+  /// The base's braking deceleration (MotionLimits::max_linear_decel, copied by the node),
+  /// m/s^2: the speed is never more than the robot can still brake from before the point
+  /// where the law has it at rest (brakingSpeed()).
+  double max_linear_decel = 2.0;
   /// The safety layer's stop distance (SafetyParams::safe_distance, copied by the node):
   /// the law must come to rest before it, so follow_distance - closing_distance >= it.
   double safe_distance = 1.3;
@@ -132,8 +136,16 @@ double slowdownCap(double gap, double slowdown_distance, double closing_distance
 /// nearest module's range beyond safe_distance. Whichever is closer to its limit governs.
 double governingGap(double gap, double module_gap, const VelocityLawParams& params);
 
+/// The fastest speed from which the robot comes to rest within `room` metres: braking at
+/// `decel` after a reaction time `delay` (the command's period), v with
+/// v delay + v^2 / (2 decel) = room; 0 without room.
+double brakingSpeed(double room, double decel, double delay);
+
 /// Forward speed that holds the gap: feed_forward * target_speed plus the PID on `gap`,
-/// within [0, slowdownCap()]. Shared by the velocity law and the path follower.
+/// within [0, slowdownCap()] and never above brakingSpeed() to the point where the cap is
+/// zero (gap = -closing_distance): the person may stop at any step, and a robot closing in
+/// at walking speed needs a quarter of a metre to stop. Shared by the velocity law and the
+/// path follower.
 double gapSpeed(double gap, double target_speed, double dt, Pid& pid,
                 const VelocityLawParams& params);
 

@@ -82,6 +82,8 @@ struct LocatorConfig {
   /// Worst-axis sigma beyond which a ranged track is LOST and restarts (or twice
   /// max_relative_sigma times the distance, if larger), m.
   double lost_sigma = 1.0;
+  /// Particle estimator: time constant over which the mirror test's evidence fades, s.
+  double mirror_memory = 1.0;
   /// Particle estimator: the slowly varying part of each sensor's error, which filtering
   /// cannot average away (correlated_error.hpp); the floor of the reported covariance.
   double range_bias_sigma = 0.05;     ///< m, TWR ranges

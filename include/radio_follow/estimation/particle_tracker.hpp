@@ -39,6 +39,7 @@ struct ParticleTrackerConfig {
   BearingLikelihood bearing;
   double max_age = 0.5;             ///< s; measurements older than this are dropped
   double ambiguity_margin = 2.0;    ///< nats; see ParticleTracker
+  double mirror_memory = 1.0;       ///< s, time constant of the mirror evidence's fading
   double max_position_sigma = 0.5;  ///< m, worst axis for OK
   double max_relative_sigma = 0.1;  ///< ... or this fraction of the distance
   double lost_sigma = 1.0;          ///< m, worst axis beyond which the track is LOST
@@ -85,7 +86,8 @@ struct TrackerStats {
 /// mirror solution across their axis that ranges alone cannot rule out, and a single
 /// filter that settled on the wrong side has no particle left on the right one. So a
 /// second, smaller filter tracks the mirror image of the first, the two accumulate the
-/// evidence of every measurement (log marginal likelihoods; a log Bayes factor D), and
+/// evidence of every measurement (log marginal likelihoods; a log Bayes factor D that
+/// fades with the time constant `mirror_memory`), and
 ///   - the mirror replaces the main hypothesis as soon as the data prefer it by more than
 ///     `ambiguity_margin` nats (D > margin): no lock on a wrong mirror;
 ///   - while neither is preferred by that margin, the status is AMBIGUOUS;
@@ -137,6 +139,7 @@ class ParticleTracker {
   ParticleFilter mirror_;
   bool mirror_active_ = false;
   double evidence_ = 0.0;
+  double evidence_time_ = 0.0;  ///< stamp of the newest measurement in evidence_
   /// The modules' main axis in the robot frame, when they are nearly collinear.
   std::optional<MirrorAxis> axis_;
   std::vector<TrackedMeasurement> queue_;
