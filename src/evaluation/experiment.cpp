@@ -81,6 +81,8 @@ std::vector<Experiment> loadExperiments(const std::string& path) {
     c.min_gap_within_tolerance = optionalNumber(p, "check/min_gap_within_tolerance");
     c.max_estimate_error_median = optionalNumber(p, "check/max_estimate_error_median");
     c.max_path_deviation = optionalNumber(p, "check/max_path_deviation");
+    c.max_path_deviation_beyond_estimate =
+        optionalNumber(p, "check/max_path_deviation_beyond_estimate");
     c.resume_after = optionalNumber(p, "check/resume_after");
     std::vector<double> window;
     p.param("check/stop_window", window, window);
@@ -115,6 +117,13 @@ std::vector<std::string> checkRun(const ExperimentCheck& check, const FollowRepo
   if (check.max_path_deviation && !(r.path_deviation_max <= *check.max_path_deviation)) {
     violations.push_back(format("path deviation %.3f m (at most %.2f)", r.path_deviation_max,
                                 *check.max_path_deviation));
+  }
+  if (check.max_path_deviation_beyond_estimate &&
+      !(r.path_deviation_max <=
+        r.estimate_error_p95 + *check.max_path_deviation_beyond_estimate)) {
+    violations.push_back(format("path deviation %.3f m (at most the estimate's p95 %.3f + %.2f)",
+                                r.path_deviation_max, r.estimate_error_p95,
+                                *check.max_path_deviation_beyond_estimate));
   }
   if (check.stop_window) {
     const auto [from, until] = *check.stop_window;

@@ -17,6 +17,10 @@ struct ExperimentCheck {
   std::optional<double> min_gap_within_tolerance;   ///< share of the walk
   std::optional<double> max_estimate_error_median;  ///< m
   std::optional<double> max_path_deviation;         ///< m
+  /// The path follower adds at most this to the estimate's own error: path deviation max
+  /// <= estimate error p95 + this, m (a layout whose estimate wanders sideways, TWR only,
+  /// cannot be held on the true path closer than its estimate is).
+  std::optional<double> max_path_deviation_beyond_estimate;
   /// No forward command in [first, second] (simulator clock: scenario s + 1).
   std::optional<std::pair<double, double>> stop_window;
   /// A forward command above 0.1 m/s after this (simulator clock).
