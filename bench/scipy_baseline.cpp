@@ -43,8 +43,8 @@ constexpr int kEpochs = 600;
 // The first epochs of every pass are a cold start (multi-start solve, track
 // confirmation): left out of every estimator's statistics alike.
 constexpr int kWarmUp = 20;
-constexpr double kRangeSigma = 0.03;                   // m
-constexpr double kAngleSigma = 5.0 * rf::kPi / 180.0;  // rad, azimuth and elevation
+constexpr double kRangeSigma = 0.03;              // m
+constexpr double kAngleSigma = rf::deg2rad(5.0);  // rad, azimuth and elevation
 
 struct Bearing {
   std::size_t board = 0;  // index into the layout's boards

@@ -93,9 +93,8 @@ def residuals(xy, e, height):
 
 
 def solve(e):
-    height = e.start[2]
-    result = least_squares(residuals, e.start[:2], loss="soft_l1", f_scale=1.0, args=(e, height))
-    return result
+    """The thesis's call: warm-started, soft_l1 at f_scale 1, everything else SciPy's default."""
+    return least_squares(residuals, e.start[:2], loss="soft_l1", f_scale=1.0, args=(e, e.start[2]))
 
 
 def percentile(sorted_values, q):
