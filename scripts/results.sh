@@ -7,14 +7,14 @@
 # with a baseline measured in the same run and the ratio to it.
 #   bash scripts/results.sh [section ...]
 # Sections, in order (default: all; 387 s in one run on a shared 2-core machine, built):
-#   accuracy latency load experiments homing placement offline stop demo
+#   accuracy latency scipy pcrb load experiments homing placement offline stop demo
 # Not part of scripts/test.sh: too slow, and timings vary with the machine's load.
 # Masters: RF_RESULTS_PORT (default 11751) for the stop-latency benchmark and the demo;
 # rostest and measure_locator_load.sh pick their own.
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 export PATH="/usr/bin:$PATH"
-all=(accuracy latency load experiments homing placement offline stop demo)
+all=(accuracy latency scipy pcrb load experiments homing placement offline stop demo)
 sections=("$@")
 [ ${#sections[@]} -eq 0 ] && sections=("${all[@]}")
 for s in "${sections[@]}"; do
@@ -69,6 +69,21 @@ if wanted latency; then
   echo "the same Ceres options from the same warm starts (the locator's solve also computes the"
   echo "covariance its Kalman filter needs; the thesis's filter uses a fixed one); and"
   echo "Locator::update with the mirror test off (\`ambiguity_margin: 0\`)."
+fi
+
+if wanted scipy; then
+  heading "Against the thesis's SciPy solve, same epochs (doc/locator_accuracy.md#against-the-thesiss-scipy-solve)"
+  shown 'python3 bench/thesis_scipy.py "$RF_WS"/devel/lib/radio_follow/bench_scipy_baseline'
+  python3 bench/thesis_scipy.py "$bin/bench_scipy_baseline"
+fi
+
+if wanted pcrb; then
+  heading "Walking person against the posterior CRB (doc/locator_accuracy.md#walking-person-against-the-posterior-crb)"
+  t0=$(now)
+  shown '"$RF_WS"/devel/lib/radio_follow/locator_pcrb --runs 200'
+  "$bin/locator_pcrb" --runs 200
+  echo
+  echo "(pcrb: $(elapsed "$t0") s; deterministic: fixed seed)"
 fi
 
 if wanted load; then

@@ -15,6 +15,7 @@
 
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/common/tool_options.hpp"
 #include "radio_follow/common/yaml_keys.hpp"
 #include "radio_follow/common/yaml_params.hpp"
 #include "radio_follow/evaluation/calibration_run.hpp"
@@ -38,12 +39,8 @@ int main(int argc, char** argv) {
                                              {"--hardware-seed", "1"},
                                              {"--seed", "1"},
                                              {"--config-dir", RF_CONFIG_DIR}};
-  for (int i = 1; i < argc; i += 2) {
-    const auto option = options.find(argv[i]);
-    if (option == options.end() || i + 1 >= argc) {
-      return usage(std::string("unknown option or no value: ") + argv[i]);
-    }
-    option->second = argv[i + 1];
+  if (const auto problem = rf::readToolOptions(argc, argv, options)) {
+    return usage(*problem);
   }
   const std::string layout_name = options["--layout"];
   const std::string config_dir = options["--config-dir"];

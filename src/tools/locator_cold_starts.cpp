@@ -11,6 +11,7 @@
 #include <string>
 
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/common/tool_options.hpp"
 #include "radio_follow/evaluation/closed_loop.hpp"
 #include "radio_follow/evaluation/cold_starts.hpp"
 
@@ -34,12 +35,8 @@ int main(int argc, char** argv) {
                                              {"--sensor-profile", "realistic"},
                                              {"--locator-overrides", ""},
                                              {"--config-dir", RF_CONFIG_DIR}};
-  for (int i = 1; i < argc; i += 2) {
-    const auto option = options.find(argv[i]);
-    if (option == options.end() || i + 1 >= argc) {
-      return usage(std::string("unknown option or no value: ") + argv[i]);
-    }
-    option->second = argv[i + 1];
+  if (const auto problem = rf::readToolOptions(argc, argv, options)) {
+    return usage(*problem);
   }
   try {
     const int trials = std::atoi(options["--trials"].c_str());
