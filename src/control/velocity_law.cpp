@@ -91,10 +91,10 @@ double gapSpeed(double gap, double target_speed, double dt, Pid& pid,
   const double feed_forward =
       std::isfinite(target_speed) ? params.feed_forward * std::max(0.0, target_speed) : 0.0;
   const double speed = std::max(0.0, feed_forward + pid.update(gap, dt));
-  const double cap = std::min(slowdownCap(gap, params.slowdown_distance, params.closing_distance,
-                                          params.max_linear, feed_forward),
-                              brakingSpeed(gap + params.closing_distance,
-                                           params.max_linear_decel, dt));
+  const double cap =
+      std::min(slowdownCap(gap, params.slowdown_distance, params.closing_distance,
+                           params.max_linear, feed_forward),
+               brakingSpeed(gap + params.closing_distance, params.max_linear_decel, dt));
   return std::min(speed, cap);
 }
 

@@ -156,11 +156,11 @@ void ParticleTracker::apply(const TrackedMeasurement& m) {
       // reflection cannot overturn a second of consistent bearings, and errors that stay
       // correlated for seconds stop adding up after a while; a wrong side is left within
       // about that time once the data disambiguate.
-      const double faded = evidence_ * std::exp(-std::max(0.0, m.t - evidence_time_) /
-                                                config_.mirror_memory);
-      evidence_ = std::clamp(
-          faded + std::log(mirror_fit.likelihood) - std::log(main_fit.likelihood),
-          -kMaxEvidence, kMaxEvidence);
+      const double faded =
+          evidence_ * std::exp(-std::max(0.0, m.t - evidence_time_) / config_.mirror_memory);
+      evidence_ =
+          std::clamp(faded + std::log(mirror_fit.likelihood) - std::log(main_fit.likelihood),
+                     -kMaxEvidence, kMaxEvidence);
       evidence_time_ = std::max(evidence_time_, m.t);
     }
     mirror_.resampleIfNeeded();
@@ -312,24 +312,23 @@ Eigen::Matrix3d ParticleTracker::correlatedFloor(const Eigen::Vector3d& position
     InformingSensor s;
     switch (m.kind) {
       case TrackedMeasurement::Kind::kRange:
-        s.gradient = rangeGradient(pose_.toFixed(layout_.twr_modules[m.sensor].position),
-                                   position, config_.filter.planar);
+        s.gradient = rangeGradient(pose_.toFixed(layout_.twr_modules[m.sensor].position), position,
+                                   config_.filter.planar);
         s.white_sigma = config_.range.sigma;
         s.bias_sigma = config_.range_bias_sigma;
         break;
       case TrackedMeasurement::Kind::kTdoa:
-        s.gradient =
-            rangeGradient(pose_.toFixed(layout_.tdoa_anchors[m.sensor].position), position,
-                          config_.filter.planar) -
-            rangeGradient(pose_.toFixed(layout_.tdoa_anchors[m.sensor_b].position), position,
-                          config_.filter.planar);
+        s.gradient = rangeGradient(pose_.toFixed(layout_.tdoa_anchors[m.sensor].position), position,
+                                   config_.filter.planar) -
+                     rangeGradient(pose_.toFixed(layout_.tdoa_anchors[m.sensor_b].position),
+                                   position, config_.filter.planar);
         s.white_sigma = m.sigma;
         s.bias_sigma = config_.tdoa_bias_sigma;
         break;
       case TrackedMeasurement::Kind::kBearing: {
         const AoaBoard& board = layout_.aoa_boards[m.sensor];
-        const Eigen::Vector3d local = board.orientation.conjugate() *
-                                      (pose_.fromFixed(position) - board.position);
+        const Eigen::Vector3d local =
+            board.orientation.conjugate() * (pose_.fromFixed(position) - board.position);
         if (!(local.x() > std::cos(board.field_of_view) * local.head<2>().norm())) {
           continue;  // the filter all but ignores a board that does not see the target
         }
@@ -480,8 +479,7 @@ TrackerOutput ParticleTracker::update(double now) {
       const Eigen::Vector3d apart = out.alternative - position;
       mixture_position = position + mirror_share * apart;
       mixture_velocity = out.velocity + mirror_share * (mirror_.meanVelocity() - out.velocity);
-      mixture_covariance = (1.0 - mirror_share) * covariance +
-                           mirror_share * mirror_.covariance() +
+      mixture_covariance = (1.0 - mirror_share) * covariance + mirror_share * mirror_.covariance() +
                            mirror_share * (1.0 - mirror_share) * apart * apart.transpose();
     }
   }

@@ -119,8 +119,7 @@ std::vector<std::string> checkRun(const ExperimentCheck& check, const FollowRepo
                                 *check.max_path_deviation));
   }
   if (check.max_path_deviation_beyond_estimate &&
-      !(r.path_deviation_max <=
-        r.estimate_error_p95 + *check.max_path_deviation_beyond_estimate)) {
+      !(r.path_deviation_max <= r.estimate_error_p95 + *check.max_path_deviation_beyond_estimate)) {
     violations.push_back(format("path deviation %.3f m (at most the estimate's p95 %.3f + %.2f)",
                                 r.path_deviation_max, r.estimate_error_p95,
                                 *check.max_path_deviation_beyond_estimate));

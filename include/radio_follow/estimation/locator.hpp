@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_source.hpp"
 #include "radio_follow/common/param_table.hpp"
 #include "radio_follow/common/pose2.hpp"
@@ -88,7 +89,7 @@ struct LocatorConfig {
   /// cannot average away (correlated_error.hpp); the floor of the reported covariance.
   double range_bias_sigma = 0.05;     ///< m, TWR ranges
   double tdoa_bias_sigma = 0.05;      ///< m, TDoA differences
-  double azimuth_bias_sigma = 0.035;  ///< rad, AoA azimuths
+  double azimuth_bias_sigma = deg2rad(2.0);  ///< rad, AoA azimuths
 
   /// Reads the fields from their parameters (the locator node's names, e.g. `range_sigma`,
   /// `azimuth_sigma_deg`, `measurement_covariance`); absent keys keep their value.

@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/pose2.hpp"
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/estimation/mirror_axis.hpp"
@@ -48,7 +49,7 @@ struct ParticleTrackerConfig {
   /// of the reported covariance. Range and TDoA in m, azimuth in rad.
   double range_bias_sigma = 0.05;
   double tdoa_bias_sigma = 0.05;
-  double azimuth_bias_sigma = 0.035;
+  double azimuth_bias_sigma = deg2rad(2.0);
 };
 
 /// What the tracker reports, in the tracking frame and in the robot frame at `stamp`.

@@ -241,6 +241,42 @@ TEST(ParticleTracker, LeavesAWrongMirrorWithinOneSecondOnceTheDataDisambiguate) 
   EXPECT_GE(locator.tracker().stats().mirror_swaps, 1u);
 }
 
+// A settled track on the person's side; then two boards at once report the mirror image
+// (reflections). The evidence of the last second outweighs them: the estimate stays OK on
+// the person and is never AMBIGUOUS. (With the evidence capped at 10 nats instead of
+// fading, two such bearings, 6.4 nats each, made it AMBIGUOUS or swapped it.)
+TEST(ParticleTracker, TwoReflectionsDoNotUnsettleASettledSide) {
+  const LocatorConfig config = particleConfig();
+  Locator locator(test::uncalibratedLayout("spot.yaml"), config);
+  Feeder feed(locator, 0.03, 0.03, 5);
+  const Eigen::Vector3d truth(1.0, 2.5, config.height);
+  const Eigen::Vector3d mirror(1.0, -2.4, config.height);
+  LocatorEstimate e;
+  for (int k = 0; k < 30; ++k) {
+    feed.epoch(truth, 0.1 * k, std::nullopt);
+    e = locator.update(0.1 * k + 0.1);
+  }
+  ASSERT_EQ(e.status, TargetStatus::kOk);
+  ASSERT_LT(locator.tracker().mirrorEvidence(), -10.0);
+  for (const char* board : {"front", "right"}) {
+    const AoaBoard* b = nullptr;
+    for (const auto& candidate : locator.layout().aoa_boards) {
+      b = candidate.id == board ? &candidate : b;
+    }
+    ASSERT_NE(b, nullptr) << board;
+    const Eigen::Vector2d ae =
+        predictBearing(mirror, b->position, b->orientation.toRotationMatrix());
+    locator.addBearing(b->id, ae(0), ae(1), -60.0, 3.0);
+  }
+  for (int k = 30; k < 40; ++k) {
+    feed.epoch(truth, 0.1 * k + 0.005, std::nullopt);
+    e = locator.update(0.1 * k + 0.1);
+    EXPECT_EQ(e.status, TargetStatus::kOk) << "at " << 0.1 * k;
+    EXPECT_LT((e.position - truth).head<2>().norm(), 0.3) << "at " << 0.1 * k;
+  }
+  EXPECT_EQ(locator.tracker().stats().mirror_swaps, 0u);
+}
+
 TEST(ParticleTracker, OutOfOrderMeasurementsAreSortedAndFutureOnesDropped) {
   const LocatorConfig config = particleConfig();
   Locator locator(test::uncalibratedLayout("spot_twr.yaml"), config);

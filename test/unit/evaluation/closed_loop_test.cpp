@@ -92,6 +92,15 @@ TEST(ClosedLoop, ThresholdsCanFail) {
   EXPECT_EQ(checkRun(stop, r, {{11.0, 0.0}, {13.0, 0.5}}).size(), 0u);
   EXPECT_EQ(checkRun(stop, r, {{11.0, 0.2}, {13.0, 0.05}}).size(), 2u);
   EXPECT_EQ(checkRun(stop, r, {}).size(), 2u) << "no command in the window is a failure too";
+
+  ExperimentCheck path;
+  path.max_path_deviation_beyond_estimate = 0.1;
+  FollowReport wide = r;
+  wide.estimate_error_p95 = 0.5;
+  wide.path_deviation_max = 0.55;
+  EXPECT_TRUE(checkRun(path, wide, {}).empty());
+  wide.path_deviation_max = 0.65;
+  EXPECT_EQ(checkRun(path, wide, {}).size(), 1u) << "0.15 m beyond the estimate's p95";
 }
 
 TEST(ClosedLoop, AllModulesSilentStopsTheRobot) {
