@@ -3,8 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 
 #include "radio_follow/common/angles.hpp"
@@ -327,8 +325,6 @@ void ClosedLoop::runController(double now) {
     velocity_law_.reset();
     path_law_.reset();
     result = pipeline_.stop(decision.reason);
-    if (std::getenv("RF_DEBUG_STOP"))
-      std::fprintf(stderr, "STOP %.2f %s\n", now, control::stopText(decision.reason).c_str());
   } else {
     const estimation::LocatorEstimate& e = *estimate_;  // may_move implies an estimate was heard
     const double range = e.position.head<2>().norm();
