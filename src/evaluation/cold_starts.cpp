@@ -56,6 +56,7 @@ ColdStartResult runColdStarts(const Layout& layout, sim::WorldConfig world,
   std::vector<double> times_to_usable;
   std::vector<double> errors;
   double nees_sum = 0.0;
+  std::vector<double> nees;
   for (std::size_t trial = 0; trial < params.trials; ++trial) {
     const auto robot = static_cast<std::uint64_t>(trial % static_cast<std::size_t>(params.robots));
     const double r = params.min_distance + (params.max_distance - params.min_distance) * unit(rng);
@@ -129,7 +130,8 @@ ColdStartResult runColdStarts(const Layout& layout, sim::WorldConfig world,
         const Eigen::Vector2d err = (e.position - target).head<2>();
         const Eigen::Matrix2d c = e.covariance.topLeftCorner<2, 2>();
         if (c.determinant() > 0.0) {
-          nees_sum += err.dot(c.ldlt().solve(err));
+          nees.push_back(err.dot(c.ldlt().solve(err)));
+          nees_sum += nees.back();
           ++result.nees_samples;
         }
       }
@@ -145,6 +147,15 @@ ColdStartResult runColdStarts(const Layout& layout, sim::WorldConfig world,
   result.error_p95 = quantile(errors, 0.95);
   result.nees_mean =
       result.nees_samples > 0 ? nees_sum / static_cast<double>(result.nees_samples) : std::nan("");
+  result.nees_median = quantile(nees, 0.5);
+  // The 95 % quantile of the chi-square distribution with 2 degrees of freedom.
+  constexpr double kChiSquare2Dof95 = 5.991;
+  result.within_95 =
+      nees.empty()
+          ? std::nan("")
+          : static_cast<double>(std::count_if(nees.begin(), nees.end(),
+                                              [](double v) { return v <= kChiSquare2Dof95; })) /
+                static_cast<double>(nees.size());
   return result;
 }
 

@@ -87,8 +87,8 @@ struct LocatorConfig {
   double mirror_memory = 1.0;
   /// Particle estimator: the slowly varying part of each sensor's error, which filtering
   /// cannot average away (correlated_error.hpp); the floor of the reported covariance.
-  double range_bias_sigma = 0.05;     ///< m, TWR ranges
-  double tdoa_bias_sigma = 0.05;      ///< m, TDoA differences
+  double range_bias_sigma = 0.05;           ///< m, TWR ranges
+  double tdoa_bias_sigma = 0.05;             ///< m, TDoA differences
   double azimuth_bias_sigma = deg2rad(2.0);  ///< rad, AoA azimuths
 
   /// Reads the fields from their parameters (the locator node's names, e.g. `range_sigma`,

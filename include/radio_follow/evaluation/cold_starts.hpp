@@ -42,6 +42,11 @@ struct ColdStartResult {
   double error_p95 = 0.0;
   /// Mean normalised estimation error squared of those (2D: consistent = 2).
   double nees_mean = 0.0;
+  /// Its median (2D: consistent = 1.39, chi-square with 2 degrees of freedom; the mean is
+  /// dominated by the few estimates on the mirror) and the share of errors inside the 95 %
+  /// ellipse (consistent = 0.95).
+  double nees_median = 0.0;
+  double within_95 = 0.0;
   std::size_t nees_samples = 0;
   std::size_t ambiguous_updates = 0;
   std::size_t updates = 0;
