@@ -16,6 +16,8 @@ COLUMNS = [
     ("est. error median (m)", "estimate_error_median_m", "{:.3f}"),
     ("est. error p95 (m)", "estimate_error_p95_m", "{:.3f}"),
     ("path deviation max (m)", "path_deviation_max_m", "{:.2f}"),
+    ("NEES median (1.39)", "estimate_nees_median", "{:.2f}"),
+    ("inside 95 % ellipse", "estimate_within_95", "{:.2f}"),
 ]
 
 

@@ -375,6 +375,8 @@ void ClosedLoop::sample(double now) {
       s.truth_y = closest->second.y();
       s.estimate_x = estimate_->position.x();
       s.estimate_y = estimate_->position.y();
+      const Eigen::Matrix3d& c = estimate_->covariance;
+      s.estimate_covariance = std::array<double, 3>{c(0, 0), c(0, 1), c(1, 1)};
     }
   }
   metrics_.add(s);

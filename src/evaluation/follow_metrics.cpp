@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/evaluation/follow_metrics.hpp"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -99,6 +100,7 @@ FollowReport FollowMetrics::report() const {
                            samples_.back().target_y - samples_.back().robot_y);
   std::vector<double> gaps_in_window;
   std::vector<double> errors;
+  std::vector<double> nees;
   std::map<std::string, int> status_counts;
   int within = 0;
   bool caught_up = false;
@@ -130,6 +132,15 @@ FollowReport FollowMetrics::report() const {
     ++status_counts[s.estimate_status];
     if (s.estimate_x && s.estimate_y) {
       errors.push_back(std::hypot(*s.estimate_x - s.truth_x, *s.estimate_y - s.truth_y));
+      if (s.estimate_covariance) {
+        const auto& c = *s.estimate_covariance;
+        const Eigen::Vector2d e(*s.estimate_x - s.truth_x, *s.estimate_y - s.truth_y);
+        Eigen::Matrix2d p;
+        p << c[0], c[1], c[1], c[2];
+        if (p.allFinite() && p.determinant() > 0.0) {
+          nees.push_back(e.dot(p.ldlt().solve(e)));
+        }
+      }
     }
   }
   r.gap_samples = static_cast<int>(gaps_in_window.size());
@@ -142,6 +153,14 @@ FollowReport FollowMetrics::report() const {
   r.estimate_error_median = quantile(errors, 0.5);
   r.estimate_error_p95 = quantile(errors, 0.95);
   r.estimate_error_mean = mean(errors);
+  r.estimate_nees_median = quantile(nees, 0.5);
+  // The 95 % quantile of the chi-square distribution with 2 degrees of freedom.
+  constexpr double kChiSquare2Dof95 = 5.991;
+  r.estimate_within_95 =
+      nees.empty() ? std::numeric_limits<double>::quiet_NaN()
+                   : double(std::count_if(nees.begin(), nees.end(),
+                                          [](double v) { return v <= kChiSquare2Dof95; })) /
+                         nees.size();
 
   std::vector<double> deviations;
   const std::vector<PathPoint> path = buildPath(samples_, settings_);
@@ -223,6 +242,8 @@ std::string FollowReport::toJson() const {
       << "  \"estimate_error_median_m\": " << jsonNumber(estimate_error_median) << ",\n"
       << "  \"estimate_error_p95_m\": " << jsonNumber(estimate_error_p95) << ",\n"
       << "  \"estimate_error_mean_m\": " << jsonNumber(estimate_error_mean) << ",\n"
+      << "  \"estimate_nees_median\": " << jsonNumber(estimate_nees_median) << ",\n"
+      << "  \"estimate_within_95\": " << jsonNumber(estimate_within_95) << ",\n"
       << "  \"path_deviation_median_m\": " << jsonNumber(path_deviation_median) << ",\n"
       << "  \"path_deviation_max_m\": " << jsonNumber(path_deviation_max) << ",\n"
       << "  \"path_samples\": " << path_samples << ",\n"

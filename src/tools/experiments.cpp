@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <vector>
@@ -35,16 +36,28 @@ const Column kColumns[] = {
     {"est. error median (m)", [](const auto& r) { return r.estimate_error_median; }, "%.3f", 1},
     {"est. error p95 (m)", [](const auto& r) { return r.estimate_error_p95; }, "%.2f", 1},
     {"path deviation max (m)", [](const auto& r) { return r.path_deviation_max; }, "%.2f", 1},
+    {"NEES median (1.39)", [](const auto& r) { return r.estimate_nees_median; }, "%.2f", 1},
+    {"inside 95 % ellipse", [](const auto& r) { return r.estimate_within_95; }, "%.2f", 1},
 };
 
-/// "a" or "a-b" for the range of the values, formatted alike.
-std::string range(const std::vector<double>& values, const char* format, double scale) {
+/// "a" or "a-b" for the range of the finite values, formatted alike ("nan" if none is;
+/// "a-b (n nan)" when some are not: a metric without samples on some seeds).
+std::string range(const std::vector<double>& all, const char* format, double scale) {
+  std::vector<double> values;
+  std::copy_if(all.begin(), all.end(), std::back_inserter(values),
+               [](double v) { return std::isfinite(v); });
+  if (values.empty()) {
+    return "nan";
+  }
+  const std::string missing = values.size() == all.size()
+                                  ? ""
+                                  : " (" + std::to_string(all.size() - values.size()) + " nan)";
   const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
   char a[32];
   char b[32];
   std::snprintf(a, sizeof(a), format, scale * *lo);
   std::snprintf(b, sizeof(b), format, scale * *hi);
-  return std::string(a) == b ? a : std::string(a) + "-" + b;
+  return (std::string(a) == b ? std::string(a) : std::string(a) + "-" + b) + missing;
 }
 
 }  // namespace

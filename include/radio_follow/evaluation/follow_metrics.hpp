@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <array>
 #include <map>
 #include <optional>
 #include <string>
@@ -24,6 +25,8 @@ struct FollowSample {
   /// The locator's estimate in the robot frame, when one was valid (status OK/DEGRADED).
   std::optional<double> estimate_x;
   std::optional<double> estimate_y;
+  /// Its covariance in the robot frame (xx, xy, yy), m^2, when the estimator gave one.
+  std::optional<std::array<double, 3>> estimate_covariance;
   /// Ground truth in the robot frame (x forward, y left), m: at the estimate's stamp when
   /// there is an estimate (so the error is the locator's, not transport latency), else now.
   double truth_x = 0.0;
@@ -72,6 +75,10 @@ struct FollowReport {
   double estimate_error_median = 0.0;  ///< m
   double estimate_error_p95 = 0.0;     ///< m
   double estimate_error_mean = 0.0;    ///< m
+  /// Consistency of the reported covariance over the samples that carry one: median NEES
+  /// (2D: 1.39 when consistent) and the share of errors inside the 95 % ellipse (0.95).
+  double estimate_nees_median = 0.0;
+  double estimate_within_95 = 0.0;
   double estimate_availability = 0.0;  ///< fraction of samples with an estimate
   /// Fraction of samples by the newest estimate's status (OK, DEGRADED, AMBIGUOUS, ...).
   std::map<std::string, double> estimate_status_share;

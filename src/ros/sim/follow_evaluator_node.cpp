@@ -223,6 +223,8 @@ void FollowEvaluatorNode::onTick(const ros::TimerEvent& event) {
     s.truth_y = (*closest)->point.y;
     s.estimate_x = estimate_->position.x;
     s.estimate_y = estimate_->position.y;
+    const auto& c = estimate_->position_covariance;
+    s.estimate_covariance = std::array<double, 3>{c[0], c[1], c[4]};
   }
   metrics_.add(s);
 }
