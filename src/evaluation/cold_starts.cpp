@@ -8,6 +8,7 @@
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/estimation/mirror_axis.hpp"
 #include "radio_follow/evaluation/calibration_run.hpp"
+#include "radio_follow/evaluation/error_statistics.hpp"
 #include "radio_follow/sim/sensor_profile.hpp"
 #include "radio_follow/sim/virtual_sensors.hpp"
 
@@ -29,14 +30,6 @@ Eigen::Vector3d mirrorOf(const Layout& layout, const Eigen::Vector3d& p) {
   }
   const std::optional<estimation::MirrorAxis> axis = estimation::mirrorAxis(modules);
   return axis ? axis->reflect(p) : p;
-}
-
-double quantile(std::vector<double> v, double q) {
-  if (v.empty()) {
-    return std::nan("");
-  }
-  std::sort(v.begin(), v.end());
-  return v[static_cast<std::size_t>(q * static_cast<double>(v.size() - 1))];
 }
 
 }  // namespace
@@ -148,14 +141,7 @@ ColdStartResult runColdStarts(const Layout& layout, sim::WorldConfig world,
   result.nees_mean =
       result.nees_samples > 0 ? nees_sum / static_cast<double>(result.nees_samples) : std::nan("");
   result.nees_median = quantile(nees, 0.5);
-  // The 95 % quantile of the chi-square distribution with 2 degrees of freedom.
-  constexpr double kChiSquare2Dof95 = 5.991;
-  result.within_95 =
-      nees.empty()
-          ? std::nan("")
-          : static_cast<double>(std::count_if(nees.begin(), nees.end(),
-                                              [](double v) { return v <= kChiSquare2Dof95; })) /
-                static_cast<double>(nees.size());
+  result.within_95 = shareInside95(nees);
   return result;
 }
 

@@ -21,6 +21,16 @@ double quantile(std::vector<double> values, double q) {
   return values[k];
 }
 
+double shareInside95(const std::vector<double>& nees_2d) {
+  constexpr double kChiSquare2Dof95 = 5.991;
+  if (nees_2d.empty()) {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  const auto inside =
+      std::count_if(nees_2d.begin(), nees_2d.end(), [](double v) { return v <= kChiSquare2Dof95; });
+  return static_cast<double>(inside) / static_cast<double>(nees_2d.size());
+}
+
 double mean(const std::vector<double>& values) {
   if (values.empty()) {
     return std::numeric_limits<double>::quiet_NaN();

@@ -154,13 +154,7 @@ FollowReport FollowMetrics::report() const {
   r.estimate_error_p95 = quantile(errors, 0.95);
   r.estimate_error_mean = mean(errors);
   r.estimate_nees_median = quantile(nees, 0.5);
-  // The 95 % quantile of the chi-square distribution with 2 degrees of freedom.
-  constexpr double kChiSquare2Dof95 = 5.991;
-  r.estimate_within_95 =
-      nees.empty() ? std::numeric_limits<double>::quiet_NaN()
-                   : double(std::count_if(nees.begin(), nees.end(),
-                                          [](double v) { return v <= kChiSquare2Dof95; })) /
-                         nees.size();
+  r.estimate_within_95 = shareInside95(nees);
 
   std::vector<double> deviations;
   const std::vector<PathPoint> path = buildPath(samples_, settings_);

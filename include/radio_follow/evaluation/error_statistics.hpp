@@ -19,6 +19,11 @@ std::string jsonNumber(double v);
 /// A JSON string literal (quotes, backslashes and control characters escaped).
 std::string jsonString(const std::string& text);
 
+/// Share of 2D normalised estimation errors squared (e^T P^-1 e) inside the 95 % ellipse,
+/// i.e. at most the chi-square quantile with 2 degrees of freedom (5.991): 0.95 for a
+/// consistent estimate; NaN for no values.
+double shareInside95(const std::vector<double>& nees_2d);
+
 /// Count, mean, median, 95th percentile and maximum of a set of errors.
 struct ErrorSummary {
   std::size_t count = 0;

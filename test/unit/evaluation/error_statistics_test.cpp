@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "radio_follow/common/angles.hpp"
 
@@ -55,6 +56,17 @@ TEST(ErrorStatistics, SplitsByDirectionAndDistance) {
   const std::string json = stats.toJson();
   EXPECT_NE(json.find("\"by_sector\""), std::string::npos);
   EXPECT_NE(json.find("\"median_m\": null"), std::string::npos);  // empty sectors
+}
+
+TEST(ShareInside95, CountsWhatTheChiSquareQuantileBounds) {
+  EXPECT_TRUE(std::isnan(shareInside95({})));
+  EXPECT_DOUBLE_EQ(shareInside95({0.5, 5.9, 6.1, 100.0}), 0.5);
+  // Draws of a consistent 2D estimate (NEES ~ chi-square, 2 dof = exponential, mean 2).
+  std::vector<double> nees;
+  for (int i = 0; i < 1000; ++i) {
+    nees.push_back(-2.0 * std::log(1.0 - (i + 0.5) / 1000.0));
+  }
+  EXPECT_NEAR(shareInside95(nees), 0.95, 0.002);
 }
 
 }  // namespace
