@@ -126,8 +126,7 @@ CalibrationResult runCalibration(const Layout& layout, const sim::WorldConfig& w
 }
 
 Layout locatorLayoutFor(const Layout& layout, const sim::WorldConfig& world) {
-  return world.profile == sim::SensorProfile::kRealistic ? runCalibration(layout, world).layout
-                                                         : layout;
+  return runCalibration(layout, world).layout;
 }
 
 LayoutCalibrationUpdate CalibrationResult::update() const {
