@@ -23,7 +23,9 @@ BagData loadBag(const std::string& path, const std::string& truth_topic) {
   rosbag::Bag bag;
   openBagForReading(bag, path);
   // The replay clock is the messages' own stamps (the drivers stamp on receipt), the
-  // time base the locator node compares them with; the recorder's clock may differ.
+  // time base the locator node compares them with; the recorder's clock (the bag's time,
+  // which may differ) only says which transforms had arrived when a measurement did, and
+  // times the gaps in TF, as the node's own clock would.
   // Only the connections of these types are read (odometry, commands, ... are skipped).
   const rosbag::TypeQuery types({"radio_follow/UwbRanges", "radio_follow/AoaBearing",
                                  "radio_follow/TdoaMeasurements", "geometry_msgs/PointStamped",
