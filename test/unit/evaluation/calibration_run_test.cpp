@@ -122,6 +122,11 @@ TEST(CalibrationRun, IsDeterministicAndCalibratesTheIdealSensorsToo) {
     EXPECT_GT(at_3m, 0.05) << fitted.twr_modules[i].id;
     EXPECT_LT(at_3m, 0.3) << fitted.twr_modules[i].id;
   }
+  // Ideal boards are mounted as designed: nothing to turn.
+  for (std::size_t i = 0; i < fitted.aoa_boards.size(); ++i) {
+    EXPECT_TRUE(fitted.aoa_boards[i].orientation.isApprox(spot().aoa_boards[i].orientation, 0.0))
+        << fitted.aoa_boards[i].id;
+  }
   EXPECT_NE(locatorLayoutFor(spot(), realistic(4)).twr_modules[0].calibration,
             spot().twr_modules[0].calibration);
 }
