@@ -33,4 +33,6 @@ wait $record || true
 bag="$(ls "$tmp"/sim_*.bag)"
 mkdir -p "$(dirname "$out")"
 cp "$bag" "$out"
-rosbag info "$out" | head -n 30
+# sed reads to the end: `head` would close the pipe early, and rosbag info's SIGPIPE
+# fails the script under pipefail after a successful recording.
+rosbag info "$out" | sed -n 1,30p

@@ -165,6 +165,13 @@ if wanted offline; then
     runs+=("$(elapsed "$t0")")
   done
   cat "$tmp/offline_1.log" | grep -v '^wrote'
+  echo
+  echo 'The same replay in the robot frame (`odom_frame: ""` on top: the TF in the bag is not used):'
+  echo
+  printf 'odom_frame: ""\n' >"$tmp/robot_frame.yaml"
+  shown "\"\$RF_WS\"/devel/lib/radio_follow/locator_offline $bag --layout config/layouts/spot.yaml --params config/locator.yaml --params ROBOT_FRAME.yaml   # ROBOT_FRAME.yaml: odom_frame: \"\""
+  "$bin/locator_offline" "$bag" --layout config/layouts/spot.yaml --params config/locator.yaml \
+    --params "$tmp/robot_frame.yaml" | grep -E '^(tracking|updates|error)'
   read -r replay speed speed_lo speed_hi < <("${tables[@]}" offline-speed "$tmp"/offline_?.log)
   whole=$("${tables[@]}" median "${runs[@]}")
   length=$(sed -n 's/^bag [^:]*: \([0-9.]*\) s,.*/\1/p' "$tmp/offline_1.log")

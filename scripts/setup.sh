@@ -17,7 +17,7 @@ packages=(
   python3-std-srvs python3-diagnostic-msgs python3-rosservice python3-rosparam python3-rosmsg
   python3-tf2-msgs python3-rosgraph-msgs libdiagnostic-msgs-dev libxmlrpcpp-dev
   libstd-msgs-dev libstd-srvs-dev libgeometry-msgs-dev libnav-msgs-dev libsensor-msgs-dev
-  libvisualization-msgs-dev libtf2-ros-dev libtf2-geometry-msgs-dev libdiagnostic-updater-dev
+  libvisualization-msgs-dev libtf2-ros-dev libtf2-msgs-dev libtf2-geometry-msgs-dev libdiagnostic-updater-dev
   libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure
   # tests
   librostest-dev python3-rostest libgtest-dev googletest catkin-lint

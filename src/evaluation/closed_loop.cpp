@@ -168,6 +168,15 @@ ClosedLoop::ClosedLoop(const ClosedLoopConfig& config)
         if (!c.locator_layout) {
           c.locator_layout = locatorLayoutFor(c.layout, c.world);
         }
+        // A robot's nodes read one layout file: the safety stop corrects the raw ranges
+        // with the same calibration the locator gets (control::CommandPipelineParams::load).
+        if (c.pipeline.calibrate_ranges) {
+          c.pipeline.calibrated_modules.clear();
+          for (const TwrModule& module : c.locator_layout->twr_modules) {
+            c.pipeline.calibrated_modules[module.id] = module;
+          }
+          c.pipeline.validate();
+        }
         return c;
       }()),
       world_(config_.layout, config_.scenario, config_.world),

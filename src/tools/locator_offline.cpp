@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/common/yaml_params.hpp"
 #include "radio_follow/ros/locator/locator_node.hpp"
 #include "radio_follow/ros/replay/locator_replay.hpp"
-#include "radio_follow/common/yaml_params.hpp"
 
 namespace rf = radio_follow;
 
@@ -110,7 +110,15 @@ void writeFile(const std::string& path, const std::string& text) {
   }
 }
 
-void printSummary(const rf::ReplayResult& r) {
+void printSummary(const rf::ReplayResult& r, const std::string& odom_frame) {
+  const rf::estimation::OdometryPlacement& placed = r.placement;
+  if (odom_frame.empty()) {
+    std::cout << "tracking in the robot frame (odom_frame \"\")\n";
+  } else {
+    std::cout << "tracking in " << odom_frame << ": " << placed.placed()
+              << " messages placed with the bag's TF, " << placed.dropped() << " dropped (TF gap), "
+              << placed.robotFrame() << " in the robot frame (no odometry)\n";
+  }
   const rf::evaluation::ErrorSummary all = r.statistics.overall();
   std::cout << "updates " << r.rows.size() << ", with a position " << r.availability * 100.0
             << " %, compared with the ground truth " << all.count << "\n";
@@ -128,8 +136,8 @@ void printSummary(const rf::ReplayResult& r) {
   std::cout << "by distance (median / p95 m, count):\n";
   for (std::size_t i = 0; i <= rf::evaluation::ErrorStatistics::kBandEdges.size(); ++i) {
     const rf::evaluation::ErrorSummary s = r.statistics.band(i);
-    std::cout << "  " << rf::evaluation::ErrorStatistics::bandName(i) << ": " << s.median << " / " << s.p95
-              << " (" << s.count << ")\n";
+    std::cout << "  " << rf::evaluation::ErrorStatistics::bandName(i) << ": " << s.median << " / "
+              << s.p95 << " (" << s.count << ")\n";
   }
 }
 
@@ -163,7 +171,7 @@ int runSweep(const Options& o, const rf::BagData& bag, const rf::Layout& layout,
       setting << (a ? " " : "") << axes[a].first << "=" << YAML::Dump(axes[a].second[index[a]]);
     }
     const rf::LocatorNode::Params p = loadParams(params, o.layout);
-    const rf::ReplayResult r = rf::replay(bag, layout, p.locator, o.rate > 0 ? o.rate : p.rate);
+    const rf::ReplayResult r = rf::replay(bag, layout, p, o.rate > 0 ? o.rate : p.rate);
     runs.push_back({setting.str(), r.statistics.overall(), r.availability});
     std::size_t a = 0;
     while (a < axes.size() && ++index[a] == axes[a].second.size()) {
@@ -213,13 +221,13 @@ int main(int argc, char** argv) {
     }
     const double rate = o.rate > 0 ? o.rate : params.rate;
     const auto start = std::chrono::steady_clock::now();
-    const rf::ReplayResult result = rf::replay(bag, layout, params.locator, rate);
+    const rf::ReplayResult result = rf::replay(bag, layout, params, rate);
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::cout << "bag " << o.bag << ": " << bag.duration() << " s, " << bag.entries.size()
               << " sensor messages, replayed in " << wall << " s ("
               << bag.duration() / std::max(wall, 1e-9) << " x real time)\n";
-    printSummary(result);
+    printSummary(result, params.odom_frame);
     if (result.refused > 0) {
       std::cout << result.refused << " measurements refused (sensors not in the layout?)\n";
     }

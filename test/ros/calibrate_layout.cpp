@@ -212,10 +212,8 @@ TEST_F(CalibrateLayout, ASilentModuleKeepsItsCalibrationAndTheRestIsFitted) {
   writeBag(bag, layout_, errors_, 120.0, true, walk, {1});
   std::string output;
   ASSERT_EQ(runTool(args(bag, "--truth-topic ground_truth/target_relative"), output), 0) << output;
-  EXPECT_NE(output.find("5A84       not fitted, keeps [0.057, 1.017]: no message on "
-                        "uwb/5A84/ranges"),
-            std::string::npos)
-      << output;
+  EXPECT_NE(output.find("5A84       not fitted, keeps ["), std::string::npos) << output;
+  EXPECT_NE(output.find("]: no message on uwb/5A84/ranges"), std::string::npos) << output;
   const rf::Layout out = rf::loadLayoutFile(dir_ + "/out.yaml");
   EXPECT_EQ(out.twr_modules[1].calibration, layout_.twr_modules[1].calibration);
   EXPECT_NE(out.twr_modules[0].calibration, layout_.twr_modules[0].calibration);
@@ -276,8 +274,11 @@ TEST_F(CalibrateLayout, OnTheShippedSimulatorBagEveryModuleImproves) {
   ASSERT_EQ(runTool(args(param("bag"), "--truth-topic ground_truth/target_relative"), output), 0)
       << output;
   const rf::Layout out = rf::loadLayoutFile(dir_ + "/out.yaml");
-  // The simulator's bias is Table 3.1's (0.06-0.26 m short); the walk stays 1.5-4 m from
-  // the robot, so the fit is checked by its residual, not against the table's line.
+  // The simulated robot's modules (realistic profile, hardware_seed 1) read long by a bias
+  // of +0.08 to +0.31 m and +0.6 to +2 % of the range; the walk stays 1.5-4 m from the
+  // robot, so the fit is checked by its residual. What no range polynomial removes is the
+  // time-correlated noise, sigma 0.065 m (sensor_profile_test), and the direction
+  // dependence, nearly constant with the person ahead: 0.053-0.065 m after on this bag.
   for (const rf::TwrModule& m : out.twr_modules) {
     const std::string row = output.substr(output.find("\n" + m.id + " "), 80);
     double used = 0, rejected = 0, before = 0, after = 0;
@@ -286,7 +287,7 @@ TEST_F(CalibrateLayout, OnTheShippedSimulatorBagEveryModuleImproves) {
               4)
         << row;
     EXPECT_GT(used, 300) << row;
-    EXPECT_LT(after, 0.03) << row;
+    EXPECT_LT(after, 0.08) << row;  // the noise's sigma 0.065 m, and some margin
     EXPECT_LT(after, before / 2.0) << row;
   }
   std::cout << output;

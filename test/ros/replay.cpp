@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <deque>
 #include <vector>
 
@@ -55,7 +56,10 @@ TEST(Replay, EstimatesFollowTheGroundTruthAndNothingDrives) {
   ASSERT_TRUE(radio_follow::test::spinUntil([&] { return errors.size() >= 200; }, 90.0))
       << "only " << errors.size() << " estimates compared with the ground truth";
   std::nth_element(errors.begin(), errors.begin() + errors.size() / 2, errors.end());
-  EXPECT_LT(errors[errors.size() / 2], 0.2);  // the live loop: 0.06-0.07 m
+  // Issue 14's goal for Spot on realistic sensors is a median of 0.15 m;
+  // locator_offline.test replays the same bag at 0.09 m.
+  std::printf("median error %.3f m over %zu estimates\n", errors[errors.size() / 2], errors.size());
+  EXPECT_LT(errors[errors.size() / 2], 0.15);
   EXPECT_GT(replay_cmd_vel, 0) << "the controller did not run";
   EXPECT_EQ(cmd_vel, 0) << "something was sent on cmd_vel during a replay";
 }

@@ -60,8 +60,10 @@ CalibrationResult runCalibration(const Layout& layout, const sim::WorldConfig& w
                                  const CalibrationRunParams& params = {});
 
 /// The layout a locator should be given for a run on `world`'s simulated robot: the
-/// calibration run's with the realistic profile; `layout` itself with the ideal one, whose
-/// sensors err as the shipped layouts' calibration expects (thesis Table 3.1).
+/// calibration run's, whatever the profile (the ideal modules err by thesis Table 3.1, the
+/// realistic ones by their hardware; a layout file's calibration is some other robot's:
+/// the shipped ones are the ROS simulator's, realistic with hardware_seed 1). Ideal boards
+/// keep the layout's orientation: they have no mounting error to find.
 Layout locatorLayoutFor(const Layout& layout, const sim::WorldConfig& world);
 
 }  // namespace evaluation

@@ -36,8 +36,10 @@ struct ClosedLoopConfig {
   /// Where the sensors are meant to be: the simulated world's layout.
   Layout layout;
   /// The layout the locator is given. Empty: ClosedLoop fills it with
-  /// locatorLayoutFor(layout, world) (evaluation/calibration_run.hpp): with the realistic
-  /// profile it first runs the calibration run on this run's simulated hardware.
+  /// locatorLayoutFor(layout, world) (evaluation/calibration_run.hpp): it first runs the
+  /// calibration run on this run's simulated hardware. Its calibrations are also the ones
+  /// the safety stop corrects raw ranges with (pipeline, with calibrate_ranges), as on a
+  /// robot whose nodes read one layout file.
   std::optional<Layout> locator_layout;
   sim::Scenario scenario;
   sim::WorldConfig world;

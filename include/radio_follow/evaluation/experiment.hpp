@@ -63,8 +63,8 @@ struct ExperimentResult {
 
 /// Runs `experiment` in the lockstep closed loop with the configuration under
 /// `config_dir` and noise seed `seed` (the simulated hardware's too), and checks it.
-/// With the realistic profile the locator gets the layout the calibration run fitted on
-/// that hardware (ClosedLoopConfig::locator_layout).
+/// The locator gets the layout the calibration run fitted on that hardware, on either
+/// sensor profile (ClosedLoopConfig::locator_layout).
 ExperimentResult runExperiment(const Experiment& experiment, const std::string& config_dir,
                                int seed);
 

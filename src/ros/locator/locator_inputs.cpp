@@ -11,7 +11,7 @@ bool LocatorInputs::poseFor(const ros::Time& stamp, std::optional<Pose2>* pose) 
     return true;
   }
   *pose = lookup_(stamp);
-  const auto decision = placement_.decide(*pose, ros::Time::now().toSec());
+  const auto decision = placement_.decide(*pose, clock_());
   if (decision == estimation::OdometryPlacement::Decision::kRobotFrame) {
     pose->reset();
   }

@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include "radio_follow/ros/common/wiring_debug.hpp"
+#include "radio_follow/ros/locator/odometry_lookup.hpp"
 
 namespace radio_follow {
 namespace {
@@ -125,28 +126,8 @@ LocatorNode::LocatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
 }
 
 std::optional<Pose2> LocatorNode::odometryPose(const ros::Time& stamp) const {
-  geometry_msgs::TransformStamped t;
-  try {
-    t = tf_buffer_->lookupTransform(params_.odom_frame, layout_.fixed_frame, stamp);
-  } catch (const tf2::ExtrapolationException&) {
-    // Newer than the newest odometry (TF lags the drivers by a few ms): that one, when close.
-    try {
-      t = tf_buffer_->lookupTransform(params_.odom_frame, layout_.fixed_frame, ros::Time(0));
-    } catch (const tf2::TransformException&) {
-      return std::nullopt;
-    }
-    if (std::abs((stamp - t.header.stamp).toSec()) > params_.tf_tolerance) {
-      return std::nullopt;
-    }
-  } catch (const tf2::TransformException&) {
-    return std::nullopt;
-  }
-  const auto& q = t.transform.rotation;
-  Pose2 pose;
-  pose.x = t.transform.translation.x;
-  pose.y = t.transform.translation.y;
-  pose.yaw = std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
-  return pose;
+  return odometryPoseAt(*tf_buffer_, params_.odom_frame, layout_.fixed_frame, stamp,
+                        params_.tf_tolerance);
 }
 
 template <typename Message>

@@ -3,13 +3,17 @@
 
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
+#include <tf2/buffer_core.h>
+#include <tf2_msgs/TFMessage.h>
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 
 #include "radio_follow/ros/locator/locator_inputs.hpp"
+#include "radio_follow/ros/locator/odometry_lookup.hpp"
 #include "radio_follow/ros/replay/bag_file.hpp"
 
 namespace radio_follow {
@@ -19,23 +23,34 @@ BagData loadBag(const std::string& path, const std::string& truth_topic) {
   rosbag::Bag bag;
   openBagForReading(bag, path);
   // The replay clock is the messages' own stamps (the drivers stamp on receipt), the
-  // time base the locator node compares them with; the recorder's clock may differ.
-  // Only the connections of these types are read (TF, odometry, ... are skipped).
+  // time base the locator node compares them with; the recorder's clock (the bag's time,
+  // which may differ) only says which transforms had arrived when a measurement did, and
+  // times the gaps in TF, as the node's own clock would.
+  // Only the connections of these types are read (odometry, commands, ... are skipped).
   const rosbag::TypeQuery types({"radio_follow/UwbRanges", "radio_follow/AoaBearing",
-                                 "radio_follow/TdoaMeasurements", "geometry_msgs/PointStamped"});
+                                 "radio_follow/TdoaMeasurements", "geometry_msgs/PointStamped",
+                                 "tf2_msgs/TFMessage"});
   for (const rosbag::MessageInstance& m : rosbag::View(bag, types)) {
+    const double received = m.getTime().toSec();
     if (auto r = m.instantiate<UwbRanges>()) {
       data.entries.push_back(
-          {r->header.stamp.toSec(), BagData::Entry::Kind::kRanges, data.ranges.size()});
+          {r->header.stamp.toSec(), received, BagData::Entry::Kind::kRanges, data.ranges.size()});
       data.ranges.push_back(*r);
     } else if (auto b = m.instantiate<AoaBearing>()) {
-      data.entries.push_back(
-          {b->header.stamp.toSec(), BagData::Entry::Kind::kBearing, data.bearings.size()});
+      data.entries.push_back({b->header.stamp.toSec(), received, BagData::Entry::Kind::kBearing,
+                              data.bearings.size()});
       data.bearings.push_back(*b);
     } else if (auto d = m.instantiate<TdoaMeasurements>()) {
       data.entries.push_back(
-          {d->header.stamp.toSec(), BagData::Entry::Kind::kTdoa, data.tdoa.size()});
+          {d->header.stamp.toSec(), received, BagData::Entry::Kind::kTdoa, data.tdoa.size()});
       data.tdoa.push_back(*d);
+    } else if (auto tf = m.instantiate<tf2_msgs::TFMessage>()) {
+      const bool is_static = m.getTopic() == "/tf_static" || m.getTopic() == "tf_static";
+      if (is_static || m.getTopic() == "/tf" || m.getTopic() == "tf") {
+        for (const geometry_msgs::TransformStamped& t : tf->transforms) {
+          data.tf.push_back({received, is_static, t});
+        }
+      }
     } else if (m.getTopic() == truth_topic || m.getTopic() == "/" + truth_topic) {
       if (auto p = m.instantiate<geometry_msgs::PointStamped>()) {
         data.truth.push_back(*p);
@@ -50,6 +65,8 @@ BagData loadBag(const std::string& path, const std::string& truth_topic) {
                    [](const auto& a, const auto& b) { return a.t < b.t; });
   std::stable_sort(data.truth.begin(), data.truth.end(),
                    [](const auto& a, const auto& b) { return a.header.stamp < b.header.stamp; });
+  std::stable_sort(data.tf.begin(), data.tf.end(),
+                   [](const auto& a, const auto& b) { return a.received < b.received; });
   return data;
 }
 
@@ -80,11 +97,35 @@ bool truthAt(const std::vector<geometry_msgs::PointStamped>& truth, double t,
 
 }  // namespace
 
-ReplayResult replay(const BagData& bag, const Layout& layout,
-                    const estimation::LocatorConfig& config, double rate) {
+ReplayResult replay(const BagData& bag, const Layout& layout, const LocatorNode::Params& params,
+                    double rate) {
   ReplayResult result;
-  estimation::Locator locator(layout, config);
-  LocatorInputs inputs(locator);
+  estimation::Locator locator(layout, params.locator);
+  // The node's TF buffer as it stood when the node received each message: the bag's
+  // transforms up to that message's recording time (the node's default 10 s cache).
+  tf2::BufferCore tf;
+  std::size_t next_tf = 0;
+  double received = 0.0;
+  const auto feedTf = [&](double until) {
+    received = std::max(received, until);
+    for (; next_tf < bag.tf.size() && bag.tf[next_tf].received <= received; ++next_tf) {
+      tf.setTransform(bag.tf[next_tf].transform, "bag", bag.tf[next_tf].is_static);
+    }
+  };
+  const bool odometry = !params.odom_frame.empty();
+  std::unique_ptr<LocatorInputs> placed;
+  if (odometry) {
+    placed = std::make_unique<LocatorInputs>(
+        locator,
+        [&](const ros::Time& stamp) {
+          return odometryPoseAt(tf, params.odom_frame, layout.fixed_frame, stamp,
+                                params.tf_tolerance);
+        },
+        [&] { return received; });
+  } else {
+    placed = std::make_unique<LocatorInputs>(locator);
+  }
+  LocatorInputs& inputs = *placed;
   const double period = 1.0 / rate;
   std::size_t next = 0;
   std::size_t with_position = 0;
@@ -93,6 +134,9 @@ ReplayResult replay(const BagData& bag, const Layout& layout,
        next < bag.entries.size() || result.rows.empty(); now += period) {
     for (; next < bag.entries.size() && bag.entries[next].t <= now; ++next) {
       const BagData::Entry& e = bag.entries[next];
+      if (odometry) {
+        feedTf(e.received);
+      }
       switch (e.kind) {
         case BagData::Entry::Kind::kRanges:
           result.refused += inputs.add(bag.ranges[e.index]);
@@ -118,6 +162,7 @@ ReplayResult replay(const BagData& bag, const Layout& layout,
     result.rows.push_back(std::move(row));
   }
   result.availability = double(with_position) / result.rows.size();
+  result.placement = inputs.placement();
   return result;
 }
 

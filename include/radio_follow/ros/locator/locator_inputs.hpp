@@ -26,11 +26,15 @@ class LocatorInputs {
   /// The robot's odometry pose at a stamp (TF odom -> fixed frame), or nothing.
   using PoseLookup = std::function<std::optional<Pose2>(const ros::Time& stamp)>;
 
+  /// The receiver's clock when a message is handled, s: the node's ros::Time::now(), a
+  /// replay's recording time of the message (estimation::OdometryPlacement's time base).
+  using Clock = std::function<double()>;
+
   explicit LocatorInputs(estimation::Locator& locator) : locator_(locator) {}
   /// With a lookup, every measurement is placed in the odometry frame at its stamp
-  /// (estimation::OdometryPlacement decides what happens without a pose).
-  LocatorInputs(estimation::Locator& locator, PoseLookup lookup)
-      : locator_(locator), lookup_(std::move(lookup)) {}
+  /// (estimation::OdometryPlacement decides what happens without a pose, on `clock`).
+  LocatorInputs(estimation::Locator& locator, PoseLookup lookup, Clock clock = rosNow)
+      : locator_(locator), lookup_(std::move(lookup)), clock_(std::move(clock)) {}
 
   /// Each returns how many entries the locator refused (unknown sensor, invalid value).
   std::size_t add(const UwbRanges& msg);
@@ -48,8 +52,11 @@ class LocatorInputs {
   /// The pose for a message stamped `stamp`; false: drop the message (TF gap).
   bool poseFor(const ros::Time& stamp, std::optional<Pose2>* pose);
 
+  static double rosNow() { return ros::Time::now().toSec(); }
+
   estimation::Locator& locator_;
   PoseLookup lookup_;
+  Clock clock_;
   estimation::OdometryPlacement placement_;
   std::size_t target_ranges_ = 0;
   std::map<std::string, std::size_t> other_anchors_;

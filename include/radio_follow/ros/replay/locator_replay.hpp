@@ -2,6 +2,7 @@
 #pragma once
 
 #include <geometry_msgs/PointStamped.h>
+#include <geometry_msgs/TransformStamped.h>
 
 #include <Eigen/Core>
 #include <string>
@@ -12,7 +13,9 @@
 #include "radio_follow/UwbRanges.h"
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/estimation/locator.hpp"
+#include "radio_follow/estimation/odometry_placement.hpp"
 #include "radio_follow/evaluation/error_statistics.hpp"
+#include "radio_follow/ros/locator/locator_node.hpp"
 
 namespace radio_follow {
 
@@ -20,7 +23,8 @@ namespace radio_follow {
 /// bag can be replayed through many locator settings.
 struct BagData {
   struct Entry {
-    double t = 0.0;  ///< the message's header stamp (driver receive time), s
+    double t = 0.0;         ///< the message's header stamp (driver receive time), s
+    double received = 0.0;  ///< when the recorder received it (the bag's time), s
     enum class Kind { kRanges, kBearing, kTdoa } kind = Kind::kRanges;
     std::size_t index = 0;  ///< into the vector of its kind
   };
@@ -31,13 +35,20 @@ struct BagData {
   /// The target in the robot frame (the simulator's ground_truth/target_relative), sorted
   /// by stamp.
   std::vector<geometry_msgs::PointStamped> truth;
+  /// Every transform of /tf and /tf_static, sorted by when the recorder received it.
+  struct Transform {
+    double received = 0.0;  ///< the bag's time, s
+    bool is_static = false;
+    geometry_msgs::TransformStamped transform;
+  };
+  std::vector<Transform> tf;
 
   double duration() const { return entries.empty() ? 0.0 : entries.back().t - entries.front().t; }
 };
 
-/// Reads every UwbRanges, AoaBearing and TdoaMeasurements message of a bag (any topic)
-/// and the PointStamped messages on `truth_topic`. Throws std::runtime_error naming the
-/// bag when it cannot be read or holds no sensor message.
+/// Reads every UwbRanges, AoaBearing and TdoaMeasurements message of a bag (any topic),
+/// the transforms on /tf and /tf_static and the PointStamped messages on `truth_topic`. Throws
+/// std::runtime_error naming the bag when it cannot be read or holds no sensor message.
 BagData loadBag(const std::string& path, const std::string& truth_topic);
 
 /// One locator update of a replay.
@@ -55,13 +66,19 @@ struct ReplayResult {
       statistics;             ///< over the rows with a position (OK/DEGRADED) and a truth
   std::size_t refused = 0;    ///< measurements the locator refused (unknown sensors)
   double availability = 0.0;  ///< share of updates with a position
+  /// Where the messages went: placed in the odometry frame, dropped in a TF gap, or in the
+  /// robot frame (no odometry in the bag, or `odom_frame` empty: then all of them).
+  estimation::OdometryPlacement placement;
 };
 
-/// Runs the locator over the bag exactly as the node would: messages in recording order,
-/// an update every 1/rate seconds of bag time; estimates compared with the ground truth
-/// interpolated at the estimate's stamp.
-ReplayResult replay(const BagData& bag, const Layout& layout,
-                    const estimation::LocatorConfig& config, double rate);
+/// Runs the locator over the bag exactly as the node would: messages in stamp order, an
+/// update every 1/rate seconds of their time; with `params.odom_frame` set, each message
+/// placed with the bag's TF `odom_frame -> layout fixed frame` at its stamp by the node's
+/// own lookup (odometryPoseAt, `params.tf_tolerance`), the buffer holding the transforms
+/// the recorder had received when it received the message. Estimates (robot frame) are
+/// compared with the ground truth interpolated at the estimate's stamp.
+ReplayResult replay(const BagData& bag, const Layout& layout, const LocatorNode::Params& params,
+                    double rate);
 
 /// The rows as CSV with a header (t, status, x, y, z, sigma_x, sigma_y, truth_x, truth_y,
 /// error; empty cells where there is no value).
