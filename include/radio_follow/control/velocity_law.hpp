@@ -29,7 +29,7 @@ struct VelocityLawParams {
   /// centre (a corner module of the tracked layout is 0.39 m off), a person at the follow
   /// distance can otherwise be within the safety stop of a corner, and the stop trips
   /// while following. See governingGap().
-  double stop_margin = 0.15;
+  double stop_margin = 0.1;
   /// Fraction of the target's own speed (TargetPolar::receding_speed, the path follower's
   /// walking speed) added to the command before the PID and to the speed cap; 0 disables.
   /// It lets the robot match a walking person at the follow distance instead of trailing

@@ -149,11 +149,11 @@ TEST(VelocityLaw, BrakesInTimeForAPersonWhoStopsDead) {
 }
 
 TEST(GoverningGap, TheNearestModuleGovernsWhenItIsCloserToTheStop) {
-  VelocityLawParams p;  // stop_margin 0.15
+  VelocityLawParams p;  // stop_margin 0.1
   EXPECT_EQ(governingGap(0.4, std::numeric_limits<double>::infinity(), p), 0.4);
   EXPECT_EQ(governingGap(0.4, 1.0, p), 0.4);
-  EXPECT_NEAR(governingGap(0.4, 0.25, p), 0.1, 1e-12);
-  EXPECT_NEAR(governingGap(0.0, 0.05, p), -0.1, 1e-12);
+  EXPECT_NEAR(governingGap(0.4, 0.25, p), 0.15, 1e-12);
+  EXPECT_NEAR(governingGap(0.0, 0.05, p), -0.05, 1e-12);
   EXPECT_EQ(governingGap(0.4, std::nan(""), p), 0.4);
 }
 
@@ -172,7 +172,7 @@ TEST(VelocityLaw, HangsBackWhenACornerModuleNearsTheStop) {
   VelocityLaw law{p};
   const double speed = law.update(t, 0.05).linear;
   EXPECT_NEAR(free_speed, 1.0, 1e-9);
-  EXPECT_LT(speed, 0.5 + 1e-9);  // cap 1 * (1 - 0.1 / 0.2)
+  EXPECT_LT(speed, 0.75 + 1e-9);  // cap 1 * (1 - 0.05 / 0.2)
 }
 
 TEST(VelocityLaw, NotArrivedWhileThePersonWalksAway) {
