@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "radio_follow/common/angles.hpp"
+#include "radio_follow/common/param_error.hpp"
 #include "radio_follow/estimation/locator.hpp"
 #include "radio_follow/estimation/particle_filter.hpp"
 #include "radio_follow/models/sensor_tables.hpp"
@@ -147,6 +148,46 @@ TEST(RssDifferencer, PairsReadingsWithinTheWindowAndUsesEachOnce) {
   EXPECT_EQ(lr->pair, 1u);
   EXPECT_DOUBLE_EQ(lr->difference, 6.0);  // left - right
   EXPECT_FALSE(differ.add(1, std::nan(""), 1.3));
+}
+
+// The locator forms the pairs' differences from its bearings' RSSI, only when asked to.
+TEST(RssDifferencer, TheLocatorFeedsDifferencesOnlyWithRssDirection) {
+  const Layout layout = shippedLayout("spot.yaml");
+  for (const bool on : {false, true}) {
+    LocatorConfig config;
+    config.rss_direction = on;
+    Locator locator(layout, config);
+    std::size_t before = 0;
+    for (int k = 0; k < 2; ++k) {
+      const double t = 0.1 * k;
+      for (const auto& m : layout.twr_modules) {
+        locator.addRange(m.id, (Eigen::Vector3d(3.0, 0.5, 1.0) - m.position).norm(), t);
+      }
+      double rssi = -50.0;
+      for (const auto& b : layout.aoa_boards) {
+        locator.addBearing(b.id, 0.1, 0.0, rssi, t + 0.02);
+        rssi -= 2.0;
+      }
+      before = k == 0 ? locator.tracker().stats().processed : before;
+      locator.update(t + 0.05);
+    }
+    // The second epoch: 3 ranges, 4 bearings and, with rss_direction, 2 differences.
+    EXPECT_EQ(locator.tracker().stats().processed - before, on ? 9u : 7u);
+  }
+}
+
+TEST(RssDirectionLikelihood, NonPositiveGainOrSigmaIsRefusedByName) {
+  for (const std::string name : {"rss_direction_gain_db", "rss_direction_sigma_db"}) {
+    LocatorConfig config;
+    (name == "rss_direction_gain_db" ? config.rss_direction_gain : config.rss_direction_sigma) =
+        0.0;
+    try {
+      config.validate();
+      ADD_FAILURE() << name << " = 0 was accepted";
+    } catch (const ParamError& e) {
+      EXPECT_EQ(e.name(), "~" + name);  // the private ROS parameter
+    }
+  }
 }
 
 // The defaults come from the measured tables and the documented behind drop, not from a
