@@ -86,6 +86,11 @@ ParticleTrackerConfig trackerConfig(const LocatorConfig& c) {
   t.range_bias_sigma = c.range_bias_sigma;
   t.tdoa_bias_sigma = c.tdoa_bias_sigma;
   t.azimuth_bias_sigma = c.azimuth_bias_sigma;
+  t.rss_direction = c.rss_direction;
+  t.rss.gain = c.rss_direction_gain;
+  t.rss.sigma = c.rss_direction_sigma;
+  // A reflected reading's RSSI is as far off as its angle: the bearings' outlier share.
+  t.rss.outlier_share = c.bearing_outlier_share;
   return t;
 }
 
@@ -115,6 +120,7 @@ Locator::Locator(const Layout& layout, const LocatorConfig& config)
       selector_(layout.aoa_boards.size(), config_.aoa),
       filter_(kalmanConfig(config_)),
       tracker_(layout, trackerConfig(config_)),
+      rss_(layout.aoa_boards),
       ranges_(layout.twr_modules.size()),
       bearings_(layout.aoa_boards.size()) {
   init_config_.planar = config.planar;
@@ -199,6 +205,17 @@ bool Locator::addBearing(const std::string& board_id, double azimuth, double ele
     m.value = azimuth;
     m.elevation = elevation;
     tracker_.add(m);
+    if (config_.rss_direction) {
+      if (const std::optional<RssDifference> d = rss_.add(index, rssi, t)) {
+        TrackedMeasurement r;
+        r.kind = TrackedMeasurement::Kind::kRssDirection;
+        r.t = d->t;
+        r.pose = pose;  // the pair's readings are within 0.1 s of this one
+        r.sensor = d->pair;
+        r.value = d->difference;
+        tracker_.add(r);
+      }
+    }
   }
   return true;
 }

@@ -125,7 +125,16 @@ const ParamTable<LocatorConfig>& LocatorConfig::table() {
                Range::atLeast(0.0))
           .addScaled("azimuth_bias_sigma_deg", &C::azimuth_bias_sigma, kPi / 180.0, "deg",
                      "Slowly varying part of the azimuth error: covariance floor (particle).",
-                     Range::atLeast(0.0));
+                     Range::atLeast(0.0))
+          .add("rss_direction", &C::rss_direction, "",
+               "Weigh the RSSI difference of opposed AoA boards (seed 001; particle).")
+          .add("rss_direction_gain_db", &C::rss_direction_gain, "dB",
+               "RSSI difference with the target straight ahead of one board of a pair "
+               "(particle).",
+               Range::above(0.0))
+          .add("rss_direction_sigma_db", &C::rss_direction_sigma, "dB",
+               "Standard deviation of an opposed pair's RSSI difference (particle).",
+               Range::above(0.0));
   return t;
 }
 

@@ -202,6 +202,20 @@ MeasurementFit ParticleFilter::weightBearing(const Eigen::Vector3d& board,
                          Eigen::ArrayXd::Constant(gauss.size(), m.outlier_share * uniform));
 }
 
+MeasurementFit ParticleFilter::weightRssDirection(const Eigen::Vector3d& midpoint, double axis_yaw,
+                                                  double difference,
+                                                  const RssDirectionLikelihood& m) {
+  const Eigen::ArrayXd dx = x_ - midpoint.x();
+  const Eigen::ArrayXd dy = y_ - midpoint.y();
+  // cos(theta - theta_a) of every particle; one on the midpoint itself says nothing.
+  const Eigen::ArrayXd cos_offset = (dx * std::cos(axis_yaw) + dy * std::sin(axis_yaw)) /
+                                    (dx.square() + dy.square()).sqrt().max(1e-9);
+  const Eigen::ArrayXd z = (difference - m.gain * cos_offset) / m.sigma;
+  return applyLikelihood(
+      (1.0 - m.outlier_share) / (std::sqrt(2.0 * kPi) * m.sigma) * (-0.5 * z.square()).exp(),
+      Eigen::ArrayXd::Constant(z.size(), m.outlier_share / m.floor_width));
+}
+
 double ParticleFilter::restrict(const std::function<bool(const Eigen::Vector3d&)>& keep) {
   scratch_ = w_;
   for (Eigen::Index i = 0; i < w_.size(); ++i) {

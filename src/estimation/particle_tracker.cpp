@@ -62,7 +62,11 @@ ParticleFilter::Config mirrorConfig(ParticleFilter::Config c) {
 }  // namespace
 
 ParticleTracker::ParticleTracker(const Layout& layout, const ParticleTrackerConfig& config)
-    : layout_(layout), config_(config), main_(config.filter), mirror_(mirrorConfig(config.filter)) {
+    : layout_(layout),
+      config_(config),
+      main_(config.filter),
+      mirror_(mirrorConfig(config.filter)),
+      rss_pairs_(opposedBoardPairs(layout.aoa_boards)) {
   std::vector<Eigen::Vector3d> modules;
   for (const auto& m : layout.twr_modules) {
     modules.push_back(m.position);
@@ -87,6 +91,14 @@ void ParticleTracker::setConfig(const ParticleTrackerConfig& config) {
   const bool restart = config.filter.particles != config_.filter.particles ||
                        config.filter.planar != config_.filter.planar;
   config_ = config;
+  if (!config_.rss_direction) {
+    // Switched off: what is queued or kept for cold starts must not count any more.
+    const auto rss = [](const TrackedMeasurement& m) {
+      return m.kind == TrackedMeasurement::Kind::kRssDirection;
+    };
+    queue_.erase(std::remove_if(queue_.begin(), queue_.end(), rss), queue_.end());
+    recent_.erase(std::remove_if(recent_.begin(), recent_.end(), rss), recent_.end());
+  }
   if (restart) {
     main_ = ParticleFilter(config.filter);
     mirror_ = ParticleFilter(mirrorConfig(config.filter));
@@ -95,6 +107,10 @@ void ParticleTracker::setConfig(const ParticleTrackerConfig& config) {
 }
 
 void ParticleTracker::add(const TrackedMeasurement& measurement) {
+  if (measurement.kind == TrackedMeasurement::Kind::kRssDirection &&
+      (!config_.rss_direction || measurement.sensor >= rss_pairs_.size())) {
+    return;  // an optional input, off
+  }
   queue_.push_back(measurement);
 }
 
@@ -132,6 +148,11 @@ MeasurementFit ParticleTracker::weigh(ParticleFilter& filter, const TrackedMeasu
       return filter.weightBearing(pose.toFixed(board.position),
                                   yawRotation(pose.yaw) * board.orientation.toRotationMatrix(),
                                   m.value, m.elevation, model);
+    }
+    case TrackedMeasurement::Kind::kRssDirection: {
+      const RssPair& pair = rss_pairs_[m.sensor];
+      return filter.weightRssDirection(pose.toFixed(pair.midpoint), pose.yaw + pair.axis_yaw,
+                                       m.value, config_.rss);
     }
   }
   return {};
@@ -171,7 +192,7 @@ void ParticleTracker::apply(const TrackedMeasurement& m) {
   }
   const auto kind = static_cast<std::size_t>(m.kind);
   last_kind_[kind] = std::max(last_kind_[kind], m.t);
-  if (m.kind != TrackedMeasurement::Kind::kBearing) {
+  if (m.kind == TrackedMeasurement::Kind::kRange || m.kind == TrackedMeasurement::Kind::kTdoa) {
     last_position_fix_ = std::max(last_position_fix_, m.t);
   }
   ++stats_.processed;
@@ -241,7 +262,12 @@ bool ParticleTracker::coldStart(double now) {
   } else {
     std::vector<const TrackedMeasurement*> bearings;
     for (const auto& [key, m] : newest) {
-      bearings.push_back(m);
+      if (m->kind == TrackedMeasurement::Kind::kBearing) {
+        bearings.push_back(m);  // an RSS difference weighs the rays, it places none
+      }
+    }
+    if (bearings.empty()) {
+      return false;
     }
     for (std::size_t k = 0; k < count; ++k) {
       const TrackedMeasurement& b = *bearings[k % bearings.size()];
@@ -289,7 +315,7 @@ bool ParticleTracker::coldStart(double now) {
   for (const auto& [key, m] : newest) {
     const auto kind = static_cast<std::size_t>(m->kind);
     last_kind_[kind] = std::max(last_kind_[kind], m->t);
-    if (m->kind != TrackedMeasurement::Kind::kBearing) {
+    if (m->kind == TrackedMeasurement::Kind::kRange || m->kind == TrackedMeasurement::Kind::kTdoa) {
       last_position_fix_ = std::max(last_position_fix_, m->t);
     }
   }
@@ -337,6 +363,9 @@ Eigen::Matrix3d ParticleTracker::correlatedFloor(const Eigen::Vector3d& position
         s.bias_sigma = config_.azimuth_bias_sigma;
         break;
       }
+      case TrackedMeasurement::Kind::kRssDirection:
+        // Which side, not where: it only weighs hypotheses the other sensors place.
+        continue;
     }
     sensors.push_back(s);
   }
@@ -445,9 +474,9 @@ TrackerOutput ParticleTracker::update(double now) {
     reset();
     return out;
   }
-  for (std::size_t k = 0; k < 3; ++k) {
+  for (std::size_t k = 0; k < 4; ++k) {
     if (last_kind_[k] >= 0.0 && now - last_kind_[k] <= config_.max_age) {
-      out.sources |= k == 0 ? kSourceTwr : k == 1 ? kSourceAoa : kSourceTdoa;
+      out.sources |= k == 0 ? kSourceTwr : k == 2 ? kSourceTdoa : kSourceAoa;
     }
   }
   out.position = position;

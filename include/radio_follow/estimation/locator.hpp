@@ -20,6 +20,7 @@
 #include "radio_follow/estimation/kalman_filter.hpp"
 #include "radio_follow/estimation/particle_tracker.hpp"
 #include "radio_follow/estimation/position_solver.hpp"
+#include "radio_follow/estimation/rss_direction.hpp"
 #include "radio_follow/estimation/target_status.hpp"
 
 namespace radio_follow {
@@ -87,9 +88,18 @@ struct LocatorConfig {
   double mirror_memory = 1.0;
   /// Particle estimator: the slowly varying part of each sensor's error, which filtering
   /// cannot average away (correlated_error.hpp); the floor of the reported covariance.
-  double range_bias_sigma = 0.05;           ///< m, TWR ranges
+  double range_bias_sigma = 0.05;            ///< m, TWR ranges
   double tdoa_bias_sigma = 0.05;             ///< m, TDoA differences
   double azimuth_bias_sigma = deg2rad(2.0);  ///< rad, AoA azimuths
+  /// Particle estimator: seed 001's RSS direction. The RSSI difference of two opposed
+  /// boards (rss_direction.hpp) weighs which side of the pair the target is on; an
+  /// optional input, off by default.
+  bool rss_direction = false;
+  /// g: the difference with the target straight ahead of one board of a pair, dB (the
+  /// front-to-back drop of one board: doc/nodes/locator.md, "RSS direction").
+  double rss_direction_gain = 6.0;
+  /// Standard deviation of a pair's difference, dB.
+  double rss_direction_sigma = 8.0;
 
   /// Reads the fields from their parameters (the locator node's names, e.g. `range_sigma`,
   /// `azimuth_sigma_deg`, `measurement_covariance`); absent keys keep their value.
@@ -221,6 +231,7 @@ class Locator {
   AoaSelector selector_;
   KalmanFilter filter_;
   ParticleTracker tracker_;
+  RssDifferencer rss_;  ///< opposed boards' RSSI differences (rss_direction only)
   std::vector<RangeSlot> ranges_;
   std::vector<BearingSlot> bearings_;
   std::vector<TdoaSlot> tdoas_;

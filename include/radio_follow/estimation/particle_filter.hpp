@@ -7,6 +7,8 @@
 #include <functional>
 #include <vector>
 
+#include "radio_follow/estimation/rss_direction.hpp"
+
 namespace radio_follow {
 namespace estimation {
 
@@ -87,6 +89,11 @@ class ParticleFilter {
   /// `rotation`: board -> tracking frame; azimuth/elevation in the board frame.
   MeasurementFit weightBearing(const Eigen::Vector3d& board, const Eigen::Matrix3d& rotation,
                                double azimuth, double elevation, const BearingLikelihood& model);
+  /// An opposed pair's RSSI difference (rss_direction.hpp): `midpoint` of the pair and
+  /// `axis_yaw` of its forward board in the tracking frame; the particle's direction is
+  /// taken in the xy-plane.
+  MeasurementFit weightRssDirection(const Eigen::Vector3d& midpoint, double axis_yaw,
+                                    double difference, const RssDirectionLikelihood& model);
 
   /// Systematic resampling when the effective sample size is below the threshold.
   /// Returns true when it resampled.

@@ -13,6 +13,7 @@
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/estimation/mirror_axis.hpp"
 #include "radio_follow/estimation/particle_filter.hpp"
+#include "radio_follow/estimation/rss_direction.hpp"
 #include "radio_follow/estimation/target_status.hpp"
 
 namespace radio_follow {
@@ -21,13 +22,14 @@ namespace estimation {
 /// One calibrated measurement at its own stamp, with the robot's pose in the tracking
 /// frame at that stamp (none: the robot's own frame is the tracking frame).
 struct TrackedMeasurement {
-  enum class Kind { kRange, kBearing, kTdoa };
+  /// kRssDirection: an opposed pair's RSSI difference (rss_direction.hpp).
+  enum class Kind { kRange, kBearing, kTdoa, kRssDirection };
   Kind kind = Kind::kRange;
   double t = 0.0;
   std::optional<Pose2> pose;
-  std::size_t sensor = 0;    ///< layout index: module, board, or anchor a
+  std::size_t sensor = 0;    ///< layout index: module, board, or anchor a; RSS: pair index
   std::size_t sensor_b = 0;  ///< TDoA: anchor b
-  double value = 0.0;        ///< range, azimuth or distance difference
+  double value = 0.0;        ///< range, azimuth, distance difference or RSSI difference (dB)
   double elevation = 0.0;    ///< bearings
   double sigma = 0.0;        ///< TDoA sigma, m
 };
@@ -38,6 +40,10 @@ struct ParticleTrackerConfig {
   RangeLikelihood range;
   RangeLikelihood tdoa;  ///< sigma per measurement
   BearingLikelihood bearing;
+  /// Seed 001's RSS direction of opposed boards: an optional input; when false the
+  /// tracker ignores kRssDirection measurements.
+  bool rss_direction = false;
+  RssDirectionLikelihood rss;
   double max_age = 0.5;             ///< s; measurements older than this are dropped
   double ambiguity_margin = 2.0;    ///< nats; see ParticleTracker
   double mirror_memory = 1.0;       ///< s, time constant of the mirror evidence's fading
@@ -143,12 +149,14 @@ class ParticleTracker {
   double evidence_time_ = 0.0;  ///< stamp of the newest measurement in evidence_
   /// The modules' main axis in the robot frame, when they are nearly collinear.
   std::optional<MirrorAxis> axis_;
+  /// The layout's opposed board pairs (kRssDirection's `sensor` indexes them).
+  std::vector<RssPair> rss_pairs_;
   std::vector<TrackedMeasurement> queue_;
   std::deque<TrackedMeasurement> recent_;  ///< processed within max_age (cold starts)
   bool in_odom_ = false;
-  Pose2 pose_;                       ///< of the newest processed measurement
-  double last_position_fix_ = -1.0;  ///< newest range or TDoA applied
-  double last_kind_[3] = {-1.0, -1.0, -1.0};
+  Pose2 pose_;                                      ///< of the newest processed measurement
+  double last_position_fix_ = -1.0;                 ///< newest range or TDoA applied
+  double last_kind_[4] = {-1.0, -1.0, -1.0, -1.0};  ///< by Kind
   /// Running mean of the inlier probability of the applied measurements (see apply()).
   double fit_ = 1.0;
   TrackerStats stats_;
