@@ -7,14 +7,14 @@
 # with a baseline measured in the same run and the ratio to it.
 #   bash scripts/results.sh [section ...]
 # Sections, in order (default: all; 387 s in one run on a shared 2-core machine, built):
-#   accuracy latency scipy pcrb load experiments homing placement offline stop demo
+#   accuracy latency scipy pcrb coldstarts load experiments homing placement offline stop demo
 # Not part of scripts/test.sh: too slow, and timings vary with the machine's load.
 # Masters: RF_RESULTS_PORT (default 11751) for the stop-latency benchmark and the demo;
 # rostest and measure_locator_load.sh pick their own.
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 export PATH="/usr/bin:$PATH"
-all=(accuracy latency scipy pcrb load experiments homing placement offline stop demo)
+all=(accuracy latency scipy pcrb coldstarts load experiments homing placement offline stop demo)
 sections=("$@")
 [ ${#sections[@]} -eq 0 ] && sections=("${all[@]}")
 for s in "${sections[@]}"; do
@@ -84,6 +84,22 @@ if wanted pcrb; then
   "$bin/locator_pcrb" --runs 200
   echo
   echo "(pcrb: $(elapsed "$t0") s; deterministic: fixed seed)"
+fi
+
+if wanted coldstarts; then
+  heading "Locator cold starts and the reported covariance's consistency (doc/locator_accuracy.md#cold-starts)"
+  t0=$(now)
+  shown '(cd test && "$RF_WS"/devel/lib/radio_follow/locator_cold_starts --trials 10000)'
+  (cd "$repo/test" && "$bin/locator_cold_starts" --trials 10000)
+  echo
+  shown '(cd test && "$RF_WS"/devel/lib/radio_follow/locator_cold_starts --trials 10000 --locator-overrides RSS.yaml)   # RSS.yaml: rss_direction: true'
+  printf 'rss_direction: true\n' > "$tmp/rss.yaml"
+  (cd "$repo/test" && "$bin/locator_cold_starts" --trials 10000 --locator-overrides "$tmp/rss.yaml")
+  echo
+  shown '(cd test && "$RF_WS"/devel/lib/radio_follow/locator_cold_starts --sensor-profile ideal --trials 2000)'
+  (cd "$repo/test" && "$bin/locator_cold_starts" --sensor-profile ideal --trials 2000)
+  echo
+  echo "(coldstarts: $(elapsed "$t0") s; deterministic: fixed seeds)"
 fi
 
 if wanted load; then
