@@ -20,6 +20,7 @@
 
 #include "../support/private_param.hpp"
 #include "../support/run_tool.hpp"
+#include "../support/uwb_ranges.hpp"
 #include "radio_follow/AoaBearing.h"
 #include "radio_follow/UwbRanges.h"
 #include "radio_follow/common/angles.hpp"
@@ -86,19 +87,13 @@ void writeBag(const std::string& path, const rf::Layout& layout, const Errors& e
         continue;
       }
       const rf::TwrModule& m = layout.twr_modules[i];
-      rf::UwbRanges r;
-      r.header.stamp = measured;
-      r.header.frame_id = m.frame_id;
-      r.tag_id = m.id;
-      rf::UwbRange range;
-      range.anchor_id = layout.target_anchor_id;
-      range.range = e.bias[i] + (1.0 + e.slope[i]) * (tag - m.position).norm() + 0.05 * noise(rng);
+      double range = e.bias[i] + (1.0 + e.slope[i]) * (tag - m.position).norm() + 0.05 * noise(rng);
       if (unit(rng) < 0.05) {
-        range.range += 0.5 + 2.0 * unit(rng);
+        range += 0.5 + 2.0 * unit(rng);
       }
-      r.ranges.push_back(range);
-      range.anchor_id = "0B0B";  // another anchor of the network: not the target's
-      r.ranges.push_back(range);
+      rf::UwbRanges r = rf::test::uwbRanges(m, layout.target_anchor_id, range, measured);
+      r.ranges.push_back(r.ranges.front());
+      r.ranges.back().anchor_id = "0B0B";  // another anchor of the network: not the target's
       bag.write("/uwb/" + m.id + "/ranges", measured, r);
     }
     for (std::size_t i = 0; i < layout.aoa_boards.size(); ++i) {

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "../support/spin_until.hpp"
+#include "../support/uwb_ranges.hpp"
 #include "radio_follow/AoaBearing.h"
 #include "radio_follow/TargetEstimate.h"
 #include "radio_follow/UwbRanges.h"
@@ -91,15 +92,8 @@ TEST(LocatorMirror, LeavesTheMirrorWithinOneSecondOfTheFirstTrueBearing) {
     const ros::Time now = ros::Time::now();
     for (std::size_t i = 0; i < layout.twr_modules.size(); ++i) {
       const rf::TwrModule& m = layout.twr_modules[i];
-      rf::UwbRanges msg;
-      msg.header.stamp = now;
-      msg.header.frame_id = m.frame_id;
-      msg.tag_id = m.id;
-      rf::UwbRange r;
-      r.anchor_id = layout.target_anchor_id;
-      r.range = rawRange(m, (truth - m.position).norm());
-      msg.ranges.push_back(r);
-      ranges[i].publish(msg);
+      ranges[i].publish(rf::test::uwbRanges(m, layout.target_anchor_id,
+                                            rawRange(m, (truth - m.position).norm()), now));
     }
     for (std::size_t i = 0; i < layout.aoa_boards.size(); ++i) {
       const rf::AoaBoard& b = layout.aoa_boards[i];
