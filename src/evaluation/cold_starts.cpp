@@ -48,7 +48,6 @@ ColdStartResult runColdStarts(const Layout& layout, sim::WorldConfig world,
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::vector<double> times_to_usable;
   std::vector<double> errors;
-  double nees_sum = 0.0;
   std::vector<double> nees;
   for (std::size_t trial = 0; trial < params.trials; ++trial) {
     const auto robot = static_cast<std::uint64_t>(trial % static_cast<std::size_t>(params.robots));
@@ -120,12 +119,9 @@ ColdStartResult runColdStarts(const Layout& layout, sim::WorldConfig world,
       longest = std::max(longest, mirror_run);
       if (now >= 1.0) {
         errors.push_back(to_target);
-        const Eigen::Vector2d err = (e.position - target).head<2>();
-        const Eigen::Matrix2d c = e.covariance.topLeftCorner<2, 2>();
-        if (c.determinant() > 0.0) {
-          nees.push_back(err.dot(c.ldlt().solve(err)));
-          nees_sum += nees.back();
-          ++result.nees_samples;
+        if (const auto v =
+                nees2d((e.position - target).head<2>(), e.covariance.topLeftCorner<2, 2>())) {
+          nees.push_back(*v);
         }
       }
     }
@@ -138,8 +134,8 @@ ColdStartResult runColdStarts(const Layout& layout, sim::WorldConfig world,
   result.median_time_to_usable = quantile(times_to_usable, 0.5);
   result.error_median = quantile(errors, 0.5);
   result.error_p95 = quantile(errors, 0.95);
-  result.nees_mean =
-      result.nees_samples > 0 ? nees_sum / static_cast<double>(result.nees_samples) : std::nan("");
+  result.nees_samples = nees.size();
+  result.nees_mean = mean(nees);
   result.nees_median = quantile(nees, 0.5);
   result.within_95 = shareInside95(nees);
   return result;

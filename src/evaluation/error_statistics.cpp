@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/evaluation/error_statistics.hpp"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -19,6 +20,13 @@ double quantile(std::vector<double> values, double q) {
   const std::size_t k = static_cast<std::size_t>(q * (values.size() - 1) + 0.5);
   std::nth_element(values.begin(), values.begin() + k, values.end());
   return values[k];
+}
+
+std::optional<double> nees2d(const Eigen::Vector2d& error, const Eigen::Matrix2d& covariance) {
+  if (!covariance.allFinite() || !(covariance.determinant() > 0.0)) {
+    return std::nullopt;
+  }
+  return error.dot(covariance.ldlt().solve(error));
 }
 
 double shareInside95(const std::vector<double>& nees_2d) {

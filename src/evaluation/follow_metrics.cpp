@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/evaluation/follow_metrics.hpp"
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -134,11 +134,11 @@ FollowReport FollowMetrics::report() const {
       errors.push_back(std::hypot(*s.estimate_x - s.truth_x, *s.estimate_y - s.truth_y));
       if (s.estimate_covariance) {
         const auto& c = *s.estimate_covariance;
-        const Eigen::Vector2d e(*s.estimate_x - s.truth_x, *s.estimate_y - s.truth_y);
         Eigen::Matrix2d p;
         p << c[0], c[1], c[1], c[2];
-        if (p.allFinite() && p.determinant() > 0.0) {
-          nees.push_back(e.dot(p.ldlt().solve(e)));
+        if (const auto v =
+                nees2d(Eigen::Vector2d(*s.estimate_x - s.truth_x, *s.estimate_y - s.truth_y), p)) {
+          nees.push_back(*v);
         }
       }
     }

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <Eigen/Core>
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +20,10 @@ double mean(const std::vector<double>& values);
 std::string jsonNumber(double v);
 /// A JSON string literal (quotes, backslashes and control characters escaped).
 std::string jsonString(const std::string& text);
+
+/// The normalised estimation error squared e^T P^-1 e of a 2D error and its covariance;
+/// nothing when P is not finite and positive definite (no covariance to judge).
+std::optional<double> nees2d(const Eigen::Vector2d& error, const Eigen::Matrix2d& covariance);
 
 /// Share of 2D normalised estimation errors squared (e^T P^-1 e) inside the 95 % ellipse,
 /// i.e. at most the chi-square quantile with 2 degrees of freedom (5.991): 0.95 for a

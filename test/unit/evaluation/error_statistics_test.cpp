@@ -58,6 +58,15 @@ TEST(ErrorStatistics, SplitsByDirectionAndDistance) {
   EXPECT_NE(json.find("\"median_m\": null"), std::string::npos);  // empty sectors
 }
 
+TEST(Nees2d, WeighsTheErrorByItsCovarianceAndRefusesNone) {
+  EXPECT_DOUBLE_EQ(*nees2d({0.2, 0.0}, Eigen::Vector2d(0.01, 0.04).asDiagonal()), 4.0);
+  EXPECT_DOUBLE_EQ(*nees2d({0.0, 0.2}, Eigen::Vector2d(0.01, 0.04).asDiagonal()), 1.0);
+  EXPECT_FALSE(nees2d({0.1, 0.1}, Eigen::Matrix2d::Zero()));
+  Eigen::Matrix2d nan = Eigen::Matrix2d::Identity();
+  nan(0, 1) = std::nan("");
+  EXPECT_FALSE(nees2d({0.1, 0.1}, nan));
+}
+
 TEST(ShareInside95, CountsWhatTheChiSquareQuantileBounds) {
   EXPECT_TRUE(std::isnan(shareInside95({})));
   EXPECT_DOUBLE_EQ(shareInside95({0.5, 5.9, 6.1, 100.0}), 0.5);
