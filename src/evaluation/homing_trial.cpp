@@ -8,6 +8,8 @@
 #include <random>
 
 #include "radio_follow/common/angles.hpp"
+#include "radio_follow/common/yaml_params.hpp"
+#include "radio_follow/control/command_pipeline.hpp"
 
 namespace radio_follow {
 namespace evaluation {
@@ -62,6 +64,27 @@ HomingResult runHomingTrial(const HomingStep& controller, double target_x, doubl
                           ? std::hypot(*command.goal_x - target_x, *command.goal_y - target_y)
                           : std::numeric_limits<double>::quiet_NaN();
   return result;
+}
+
+control::HomingControllerParams loadHomingControllerParams(
+    const std::string& config_dir, const std::vector<std::string>& overlays) {
+  std::vector<std::string> files{config_dir + "/controller_common.yaml",
+                                 config_dir + "/homing_controller.yaml"};
+  files.insert(files.end(), overlays.begin(), overlays.end());
+  const YamlParams source = YamlParams::fromFiles(files);
+  control::CommandPipelineParams pipeline;
+  pipeline.load(source, nullptr);
+  control::HomingControllerParams params;
+  params.load(source, pipeline.limits);
+  // Read by the node's ROS wrapper (wiring, rate, tag filter), not by the law.
+  for (const char* key : {"cmd_vel_topic", "rate", "start_enabled", "layout_file", "range_topics",
+                          "tag_id", "distance_range_topic"}) {
+    source.allow(key);
+  }
+  source.requireAllKnown();
+  pipeline.validate();
+  params.validate();
+  return params;
 }
 
 HomingStep homingControllerStep(const control::HomingControllerParams& params) {

@@ -70,6 +70,13 @@ HomingResult runHomingTrial(const HomingStep& controller, double target_x, doubl
                             const HomingNoise& noise, const HomingTrialConfig& config,
                             std::uint64_t seed);
 
+/// The homing_controller node's law parameters as the node loads them from the shipped
+/// files (`config_dir`/controller_common.yaml, then homing_controller.yaml, then each of
+/// `overlays` on top), strictly: an unknown key or a bad value throws ParamError naming
+/// it. The node-only keys (topics, rate, tag filter) are accepted and not used.
+control::HomingControllerParams loadHomingControllerParams(
+    const std::string& config_dir, const std::vector<std::string>& overlays = {});
+
 /// A fresh control::HomingController (the homing_controller node's law) as a HomingStep.
 /// Each cycle feeds it the odometry pose, the distance as a UWB range and the bearing as
 /// the azimuth of a board at the robot's centre facing forward, all stamped with the

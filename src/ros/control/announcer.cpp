@@ -40,6 +40,9 @@ void AnnouncerNode::Params::load(const ParamReader& pnh) {
   pnh.param("words_per_minute", words_per_minute, words_per_minute);
   pnh.param("repeat_interval", repeat_interval, repeat_interval);
   pnh.param("max_queued", max_queued, max_queued);
+  pnh.param("diagnostics_topic", diagnostics_topic, diagnostics_topic);
+  pnh.param("fault_hold_time", faults.hold_time, faults.hold_time);
+  pnh.param("fault_silence_timeout", faults.silence_timeout, faults.silence_timeout);
 }
 
 void AnnouncerNode::Params::validate() const {
@@ -50,11 +53,16 @@ void AnnouncerNode::Params::validate() const {
           "80 .. 450");
   require(repeat_interval >= 0.0, "~repeat_interval", repeat_interval, "seconds >= 0");
   require(max_queued >= 1, "~max_queued", max_queued, "a count >= 1");
+  if (!diagnostics_topic.empty()) {
+    requireGraphName("~diagnostics_topic", diagnostics_topic);
+  }
+  faults.validate("~fault_");
 }
 
 AnnouncerNode::AnnouncerNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
     : params_(loadStrict<Params>(private_nh)),
       queue_(params_.repeat_interval, static_cast<std::size_t>(params_.max_queued)),
+      faults_(params_.faults),
       executable_(findExecutable(params_.command)) {
   if (executable_.empty()) {
     ROS_WARN("%s: '%s' not found; status texts are only printed", ros::this_node::getName().c_str(),
@@ -62,6 +70,10 @@ AnnouncerNode::AnnouncerNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
   }
   for (const auto& topic : params_.status_topics) {
     subs_.push_back(nh.subscribe(topic, 10, &AnnouncerNode::onStatus, this));
+  }
+  if (!params_.diagnostics_topic.empty()) {
+    subs_.push_back(
+        nh.subscribe(params_.diagnostics_topic, 10, &AnnouncerNode::onDiagnostics, this));
   }
   timer_ = nh.createTimer(ros::Duration(0.1), &AnnouncerNode::onTimer, this);
 }
@@ -77,7 +89,23 @@ void AnnouncerNode::onStatus(const FollowerStatus::ConstPtr& msg) {
   queue_.push(msg->text, ros::WallTime::now().toSec());
 }
 
+void AnnouncerNode::onDiagnostics(const diagnostic_msgs::DiagnosticArray::ConstPtr& msg) {
+  const double now = ros::WallTime::now().toSec();
+  for (const auto& status : msg->status) {
+    // Levels beyond STALE are not defined: read them as an error, never as OK.
+    const bool defined = status.level >= diagnostic_msgs::DiagnosticStatus::OK &&
+                         status.level <= diagnostic_msgs::DiagnosticStatus::STALE;
+    const auto level =
+        defined ? static_cast<control::StatusLevel>(status.level) : control::StatusLevel::kError;
+    faults_.observe({status.name, level, status.message, status.hardware_id}, now);
+  }
+}
+
 void AnnouncerNode::onTimer(const ros::TimerEvent& /*event*/) {
+  const double wall = ros::WallTime::now().toSec();
+  for (const std::string& text : faults_.due(wall)) {
+    queue_.push(text, wall);
+  }
   if (child_ > 0) {
     int status = 0;
     const pid_t done = waitpid(child_, &status, WNOHANG);
