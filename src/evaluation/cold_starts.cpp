@@ -9,6 +9,7 @@
 #include "radio_follow/estimation/mirror_axis.hpp"
 #include "radio_follow/evaluation/calibration_run.hpp"
 #include "radio_follow/evaluation/error_statistics.hpp"
+#include "radio_follow/evaluation/standing_robot.hpp"
 #include "radio_follow/sim/sensor_profile.hpp"
 #include "radio_follow/sim/virtual_sensors.hpp"
 
@@ -16,8 +17,7 @@ namespace radio_follow {
 namespace evaluation {
 namespace {
 
-/// Sensor report period and the locator's update period, s.
-constexpr double kSensorPeriod = 0.1;
+/// The locator's update period, s.
 constexpr double kUpdatePeriod = 0.05;
 /// A mirror image closer than this to the person is no wrong side, m.
 constexpr double kMinMirrorSeparation = 1.0;
@@ -43,7 +43,6 @@ ColdStartResult runColdStarts(const Layout& layout, sim::WorldConfig world,
     world.hardware_seed = static_cast<std::uint64_t>(r + 1);
     calibrated.push_back(locatorLayoutFor(layout, world));
   }
-  const bool realistic = world.profile == sim::SensorProfile::kRealistic;
   sim::Rng rng(params.seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::vector<double> times_to_usable;
@@ -58,50 +57,13 @@ ColdStartResult runColdStarts(const Layout& layout, sim::WorldConfig world,
     const bool has_mirror = (mirror - target).head<2>().norm() > kMinMirrorSeparation;
 
     estimation::Locator estimator(calibrated[robot], locator);
-    std::vector<sim::TwrNoiseState> states(layout.twr_modules.size());
-    std::vector<sim::TwrHardware> hardware;
-    for (const auto& m : layout.twr_modules) {
-      hardware.push_back(sim::drawTwrHardware(robot + 1, m.id, layout.target_anchor_id));
-    }
-    std::vector<AoaBoard> mounted;
-    for (const auto& b : layout.aoa_boards) {
-      mounted.push_back(sim::mountedAoaBoard(b, robot + 1));
-    }
-    // Free-running sensors: each its own phase.
-    const std::size_t sensors = layout.twr_modules.size() + layout.aoa_boards.size();
-    std::vector<double> next(sensors);
-    for (double& t : next) {
-      t = kSensorPeriod * unit(rng);
-    }
+    StandingRobotSensors sensors(layout, world, robot + 1, rng);
+    const auto at_target = [&target](double) { return target; };
     double mirror_run = 0.0;
     double longest = 0.0;
     bool usable_seen = false;
     for (double now = kUpdatePeriod; now <= params.duration + 1e-9; now += kUpdatePeriod) {
-      for (std::size_t s = 0; s < sensors; ++s) {
-        while (next[s] <= now) {
-          const double t = next[s];
-          next[s] += kSensorPeriod;
-          if (s < layout.twr_modules.size()) {
-            const TwrModule& m = layout.twr_modules[s];
-            const std::optional<double> range =
-                realistic ? sim::simulateRealisticTwr(m, hardware[s], world.twr, states[s], target,
-                                                      t, rng)
-                          : sim::simulateTwrRange(m, world.twr, target, rng);
-            if (range) {
-              estimator.addRange(m.id, *range, t);
-            }
-          } else {
-            const std::size_t b = s - layout.twr_modules.size();
-            const std::optional<sim::AoaSample> sample =
-                realistic ? sim::simulateRealisticAoa(mounted[b], world.aoa, target, rng)
-                          : sim::simulateAoa(layout.aoa_boards[b], world.aoa, target, rng);
-            if (sample) {
-              estimator.addBearing(layout.aoa_boards[b].id, sample->azimuth, sample->elevation,
-                                   sample->rssi, t);
-            }
-          }
-        }
-      }
+      sensors.feed(estimator, now, at_target, rng);
       const estimation::LocatorEstimate e = estimator.update(now);
       ++result.updates;
       result.ambiguous_updates += e.status == estimation::TargetStatus::kAmbiguous;

@@ -61,10 +61,16 @@ void HomingControllerNode::onOdom(const nav_msgs::Odometry::ConstPtr& msg) {
 
 void HomingControllerNode::onDistanceRanges(const UwbRanges::ConstPtr& msg) {
   const ros::Time stamp = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;
+  // With ~layout_file the module's calibration corrects the range, as for the safety stop
+  // and the locator: a DWM1001 reads long by up to 0.3 m, which at homing distances is a
+  // large share of the vector estimate's distance.
+  const auto& calibrated = common().calibrated_modules;
+  const auto module = calibrated.find(normalizeId(msg->tag_id));
   for (const auto& r : msg->ranges) {
     if (common().target_anchor_id.empty() ||
         normalizeId(r.anchor_id) == common().target_anchor_id) {
-      law_.onRange(r.range, stamp.toSec());
+      law_.onRange(module == calibrated.end() ? r.range : module->second.correctRange(r.range),
+                   stamp.toSec());
     }
   }
 }

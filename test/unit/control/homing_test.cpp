@@ -171,7 +171,11 @@ TEST(HybridHoming, ConvergesWithNoisyReadingsAndArrives) {
 
 TEST(HybridHoming, ArrivalNeedsAgreementWhenBothEstimatesExist) {
   const Eigen::Vector2d target(3.0, 0.0);
-  HybridHoming homing{HomingParams()};
+  HomingParams params;
+  // With a lower threshold the averaging step pulls the parallax goal onto the (wrong)
+  // vector goal and the two agree: this test is about the arrival rule, not eq 14.
+  params.error_threshold = 0.3;
+  HybridHoming homing{params};
   // Vector goals 1 m short of the parallax goal: the robot at the reported goal has
   // not arrived while the two disagree.
   for (int i = 0; i < 6; ++i) {
@@ -180,6 +184,34 @@ TEST(HybridHoming, ArrivalNeedsAgreementWhenBothEstimatesExist) {
   }
   ASSERT_TRUE(homing.goal());
   EXPECT_FALSE(homing.arrived(*homing.goal()));
+}
+
+/// A parallax goal 0.15 m short of the beacon, then the robot drives straight at it with
+/// exact readings: the bearing lines run along the path, so no Kohonen step can move the
+/// goal along it; only eq 14's averaging step can.
+Eigen::Vector2d goalAfterStraightApproach(double error_threshold) {
+  const Eigen::Vector2d target(3.0, 0.0);
+  const Eigen::Vector2d short_goal(2.85, 0.0);
+  HomingParams params;
+  params.error_threshold = error_threshold;
+  HybridHoming homing{params};
+  for (const Eigen::Vector2d& robot : {Eigen::Vector2d(0.0, -0.5), Eigen::Vector2d(0.0, 0.5)}) {
+    homing.update(robot, bearingTo(robot, short_goal), (target - robot).norm());
+  }
+  for (double x = 0.2; x < 2.35; x += 0.1) {
+    const Eigen::Vector2d robot(x, 0.0);
+    homing.update(robot, bearingTo(robot, target), (target - robot).norm());
+  }
+  return *homing.goal();
+}
+
+TEST(HybridHoming, LowThresholdCorrectsTheParallaxErrorAlongTheLineOfSight) {
+  const Eigen::Vector2d target(3.0, 0.0);
+  // 0.3 (seed 000): 0.7 m from the beacon the short goal still stands.
+  EXPECT_GT((goalAfterStraightApproach(0.3) - target).norm(), 0.1);
+  // 0.1: averaged towards the vector goal until the two agree to 0.1 of the distance
+  // (0.07 m here).
+  EXPECT_LT((goalAfterStraightApproach(0.1) - target).norm(), 0.05);
 }
 
 TEST(HybridHoming, BearingsOnlyArriveOnDistance) {

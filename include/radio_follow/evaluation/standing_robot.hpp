@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "radio_follow/config/layout.hpp"
+#include "radio_follow/estimation/locator.hpp"
+#include "radio_follow/sim/sensor_profile.hpp"
+#include "radio_follow/sim/virtual_sensors.hpp"
+#include "radio_follow/sim/world.hpp"
+
+namespace radio_follow {
+namespace evaluation {
+
+/// The sensors of one simulated robot that stands still, feeding a locator: every TWR
+/// module and AoA board of `layout` reports at 10 Hz on its own phase, with the realistic
+/// profile's hardware of robot `hardware_seed` (per-pair range bias and scale, mounting
+/// errors) and time-correlated noise state, or the ideal profile's white noise. Used by
+/// the cold starts and the thesis's Experiments 1-2, where the robot does not move and
+/// the robot frame is the world frame.
+class StandingRobotSensors {
+ public:
+  /// Sensor report period, s.
+  static constexpr double kPeriod = 0.1;
+
+  /// Draws each sensor's phase from `rng`.
+  StandingRobotSensors(const Layout& layout, const sim::WorldConfig& world,
+                       std::uint64_t hardware_seed, sim::Rng& rng);
+
+  /// Feeds `locator` every reading due up to `now`, of a target at `target(t)` (robot
+  /// frame) at the reading's time t. Readings a sensor does not deliver (dropouts, out of
+  /// view) are skipped.
+  void feed(estimation::Locator& locator, double now,
+            const std::function<Eigen::Vector3d(double)>& target, sim::Rng& rng);
+
+ private:
+  const Layout& layout_;
+  const sim::WorldConfig& world_;
+  bool realistic_;
+  std::vector<sim::TwrNoiseState> states_;
+  std::vector<sim::TwrHardware> hardware_;
+  std::vector<AoaBoard> mounted_;
+  std::vector<double> next_;  // next report time per sensor: modules, then boards
+};
+
+}  // namespace evaluation
+}  // namespace radio_follow

@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/evaluation/standing_robot.hpp"
+
+#include <random>
+
+namespace radio_follow {
+namespace evaluation {
+
+StandingRobotSensors::StandingRobotSensors(const Layout& layout, const sim::WorldConfig& world,
+                                           std::uint64_t hardware_seed, sim::Rng& rng)
+    : layout_(layout),
+      world_(world),
+      realistic_(world.profile == sim::SensorProfile::kRealistic),
+      states_(layout.twr_modules.size()) {
+  for (const auto& m : layout.twr_modules) {
+    hardware_.push_back(sim::drawTwrHardware(hardware_seed, m.id, layout.target_anchor_id));
+  }
+  for (const auto& b : layout.aoa_boards) {
+    mounted_.push_back(sim::mountedAoaBoard(b, hardware_seed));
+  }
+  // Free-running sensors: each its own phase.
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  next_.resize(layout.twr_modules.size() + layout.aoa_boards.size());
+  for (double& t : next_) {
+    t = kPeriod * unit(rng);
+  }
+}
+
+void StandingRobotSensors::feed(estimation::Locator& locator, double now,
+                                const std::function<Eigen::Vector3d(double)>& target,
+                                sim::Rng& rng) {
+  const std::size_t modules = layout_.twr_modules.size();
+  for (std::size_t s = 0; s < next_.size(); ++s) {
+    while (next_[s] <= now) {
+      const double t = next_[s];
+      next_[s] += kPeriod;
+      const Eigen::Vector3d at = target(t);
+      if (s < modules) {
+        const TwrModule& m = layout_.twr_modules[s];
+        const std::optional<double> range =
+            realistic_
+                ? sim::simulateRealisticTwr(m, hardware_[s], world_.twr, states_[s], at, t, rng)
+                : sim::simulateTwrRange(m, world_.twr, at, rng);
+        if (range) {
+          locator.addRange(m.id, *range, t);
+        }
+      } else {
+        const std::size_t b = s - modules;
+        const std::optional<sim::AoaSample> sample =
+            realistic_ ? sim::simulateRealisticAoa(mounted_[b], world_.aoa, at, rng)
+                       : sim::simulateAoa(layout_.aoa_boards[b], world_.aoa, at, rng);
+        if (sample) {
+          locator.addBearing(layout_.aoa_boards[b].id, sample->azimuth, sample->elevation,
+                             sample->rssi, t);
+        }
+      }
+    }
+  }
+}
+
+}  // namespace evaluation
+}  // namespace radio_follow

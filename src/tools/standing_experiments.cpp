@@ -1,0 +1,215 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The thesis's Experiments 1 and 2 (Sections 5.3-5.4) on the simulator's sensors, with the
+// shipped config/locator.yaml and config/simulator.yaml: the robot stands; the person
+// stands at points around it for a minute each (static), or walks round it (walk). Prints
+// the thesis's figures by direction as Markdown, for the layout as shipped and, where it
+// has three or more TWR modules and AoA boards, for its TWR modules alone.
+//   standing_experiments --experiment static|walk [--layout spot] [--sensor-profile realistic]
+//                        [--duration 60] [--sectors 8] [--robot 1] [--seed 1]
+//                        [--scenario walk_around] [--config-dir DIR]
+#include "radio_follow/evaluation/standing_experiments.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "radio_follow/common/param_error.hpp"
+#include "radio_follow/common/tool_options.hpp"
+#include "radio_follow/evaluation/closed_loop.hpp"
+#include "radio_follow/evaluation/error_statistics.hpp"
+
+namespace {
+
+namespace rf = radio_follow;
+
+int usage(const std::string& problem) {
+  std::fprintf(stderr,
+               "standing_experiments: %s\nusage: standing_experiments --experiment static|walk "
+               "[--layout L] [--sensor-profile ideal|realistic] [--duration S] [--sectors N] "
+               "[--robot N] [--seed N] [--scenario S] [--config-dir DIR]\n",
+               problem.c_str());
+  return 2;
+}
+
+/// The configurations the thesis compares on one robot: its sensors as mounted, and
+/// (with three or more modules and some boards) the TWR modules alone.
+std::vector<std::pair<std::string, rf::Layout>> configurations(const rf::Layout& layout) {
+  std::vector<std::pair<std::string, rf::Layout>> out{
+      {layout.aoa_boards.empty() ? "TWR" : "TWR + AoA", layout}};
+  if (!layout.aoa_boards.empty() && layout.twr_modules.size() >= 3) {
+    out.emplace_back("TWR only", rf::evaluation::twrOnly(layout));
+  }
+  return out;
+}
+
+std::string metres(double v) {
+  char text[32];
+  std::snprintf(text, sizeof(text), std::isfinite(v) ? "%.2f" : "none", v);
+  return text;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::map<std::string, std::string> options{{"--experiment", ""},
+                                             {"--layout", "spot"},
+                                             {"--sensor-profile", "realistic"},
+                                             {"--duration", "60"},
+                                             {"--sectors", "8"},
+                                             {"--robot", "1"},
+                                             {"--seed", "1"},
+                                             {"--scenario", "walk_around"},
+                                             {"--config-dir", RF_CONFIG_DIR}};
+  if (const auto problem = rf::readToolOptions(argc, argv, options)) {
+    return usage(*problem);
+  }
+  const std::string experiment = options["--experiment"];
+  if (experiment != "static" && experiment != "walk") {
+    return usage("--experiment must be static or walk");
+  }
+  try {
+    const int sectors = std::atoi(options["--sectors"].c_str());
+    rf::require(sectors >= 1 && sectors <= 36, "--sectors", options["--sectors"], "1 .. 36");
+    const long robot = std::atol(options["--robot"].c_str());
+    rf::require(robot >= 1, "--robot", options["--robot"], "a hardware seed >= 1");
+    const long seed = std::atol(options["--seed"].c_str());
+    rf::require(seed >= 0, "--seed", options["--seed"], "a seed >= 0");
+    const rf::sim::SensorProfile profile =
+        rf::sim::parseSensorProfile(options["--sensor-profile"], "--sensor-profile");
+    // The lockstep loop's loader: the shipped simulator and locator files, as the robot runs.
+    const rf::evaluation::ClosedLoopConfig c = rf::evaluation::loadClosedLoopConfig(
+        options["--config-dir"], options["--layout"], "outdoor_loop",
+        rf::evaluation::FollowController::kVelocity, static_cast<int>(seed), "", "", profile);
+    const auto configs = configurations(c.layout);
+
+    if (experiment == "static") {
+      rf::evaluation::StaticAccuracyParams params;
+      params.duration = std::atof(options["--duration"].c_str());
+      params.robot = static_cast<std::uint64_t>(robot);
+      params.seed = static_cast<std::uint64_t>(seed);
+      std::printf(
+          "Experiment 1, layout %s, %s sensors (robot %ld): the person stands %d points x %zu "
+          "distances (%.1f-%.1f m), %.0f s each; per direction the largest error of the mean "
+          "estimate and the largest spread of the estimates, m\n\n",
+          options["--layout"].c_str(), options["--sensor-profile"].c_str(), robot,
+          params.directions, params.distances.size(), params.distances.front(),
+          params.distances.back(), params.duration);
+      std::vector<std::vector<rf::evaluation::DirectionSector>> tables;
+      std::vector<std::vector<rf::evaluation::DistanceRow>> rows;
+      std::vector<double> usable;
+      std::string header = "| direction (deg) |";
+      std::string rule = "| --- |";
+      for (const auto& config : configs) {
+        const auto points =
+            rf::evaluation::runStaticAccuracy(config.second, c.world, c.locator, params);
+        tables.push_back(rf::evaluation::bySector(points, sectors));
+        rows.push_back(rf::evaluation::byDistance(points, params.distances));
+        double sum = 0.0;
+        for (const auto& p : points) {
+          sum += p.usable;
+        }
+        usable.push_back(sum / static_cast<double>(points.size()));
+        header += " " + config.first + ": error | " + config.first + ": spread |";
+        rule += " --- | --- |";
+      }
+      std::printf("%s\n%s\n", header.c_str(), rule.c_str());
+      for (int k = 0; k < sectors; ++k) {
+        std::printf("| %+.0f |", tables[0][static_cast<std::size_t>(k)].centre_deg);
+        for (const auto& table : tables) {
+          const auto& s = table[static_cast<std::size_t>(k)];
+          std::printf(" %s | %s |", metres(s.max_mean_error).c_str(), metres(s.max_spread).c_str());
+        }
+        std::printf("\n");
+      }
+      std::printf(
+          "\nBy distance: the median and the largest error of the mean over the %d "
+          "directions, the largest spread, m\n\n| distance (m) |",
+          params.directions);
+      for (const auto& config : configs) {
+        std::printf(" %s: median error | max error | max spread |", config.first.c_str());
+      }
+      std::printf("\n| --- |");
+      for (std::size_t i = 0; i < configs.size(); ++i) {
+        std::printf(" --- | --- | --- |");
+      }
+      std::printf("\n");
+      for (std::size_t d = 0; d < params.distances.size(); ++d) {
+        std::printf("| %.1f |", params.distances[d]);
+        for (const auto& r : rows) {
+          std::printf(" %s | %s | %s |", metres(r[d].median_mean_error).c_str(),
+                      metres(r[d].max_mean_error).c_str(), metres(r[d].max_spread).c_str());
+        }
+        std::printf("\n");
+      }
+      std::printf("\nShare of updates with a position (OK or DEGRADED):");
+      for (std::size_t i = 0; i < configs.size(); ++i) {
+        std::printf(" %s %.3f;", configs[i].first.c_str(), usable[i]);
+      }
+      std::printf("\n");
+      return 0;
+    }
+
+    const rf::sim::Scenario scenario = rf::sim::loadScenarioFile(
+        options["--config-dir"] + "/scenarios/" + options["--scenario"] + ".yaml",
+        static_cast<std::uint64_t>(seed));
+    rf::require(scenario.robot_start.x == 0.0 && scenario.robot_start.y == 0.0 &&
+                    scenario.robot_start.yaw == 0.0,
+                "robot_start", options["--scenario"],
+                "a scenario with the robot at the origin facing +x (it stands)");
+    rf::evaluation::WalkAroundParams params;
+    params.robot = static_cast<std::uint64_t>(robot);
+    params.seed = static_cast<std::uint64_t>(seed);
+    std::printf(
+        "Experiment 2, layout %s, %s sensors (robot %ld): the person walks scenario %s "
+        "(%.1f m, %.0f s) round the standing robot; estimate error by the person's direction, "
+        "m\n\n",
+        options["--layout"].c_str(), options["--sensor-profile"].c_str(), robot,
+        options["--scenario"].c_str(), scenario.target.length(), scenario.duration);
+    std::vector<std::vector<rf::evaluation::DirectionSector>> tables;
+    std::vector<std::vector<rf::evaluation::WalkSample>> runs;
+    std::string header = "| direction (deg) |";
+    std::string rule = "| --- |";
+    for (const auto& config : configs) {
+      runs.push_back(rf::evaluation::runWalkAround(config.second, c.world, c.locator,
+                                                   scenario.target, scenario.duration, params));
+      tables.push_back(rf::evaluation::bySector(runs.back(), sectors));
+      header += " " + config.first + ": median | p95 | usable |";
+      rule += " --- | --- | --- |";
+    }
+    std::printf("%s\n%s\n", header.c_str(), rule.c_str());
+    for (int k = 0; k < sectors; ++k) {
+      std::printf("| %+.0f |", tables[0][static_cast<std::size_t>(k)].centre_deg);
+      for (const auto& table : tables) {
+        const auto& s = table[static_cast<std::size_t>(k)];
+        std::printf(" %s | %s | %.2f |", s.count ? metres(s.median_error).c_str() : "none",
+                    s.count ? metres(s.p95_error).c_str() : "none", s.usable);
+      }
+      std::printf("\n");
+    }
+    std::printf("\nWhole walk:");
+    for (std::size_t i = 0; i < configs.size(); ++i) {
+      std::vector<double> errors;
+      for (const auto& w : runs[i]) {
+        if (w.usable) {
+          errors.push_back(w.error);
+        }
+      }
+      std::printf(" %s median %s m, p95 %s m, usable %.3f;", configs[i].first.c_str(),
+                  metres(rf::evaluation::quantile(errors, 0.5)).c_str(),
+                  metres(rf::evaluation::quantile(errors, 0.95)).c_str(),
+                  runs[i].empty()
+                      ? 0.0
+                      : static_cast<double>(errors.size()) / static_cast<double>(runs[i].size()));
+    }
+    std::printf("\n");
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "standing_experiments: %s\n", e.what());
+    return 1;
+  }
+}
