@@ -28,8 +28,8 @@ struct RssiWindowParams {
 /// read as z_k = x_k + v, v ~ N(0, R). Only Q / R matters once started; R is also the
 /// first reading's variance.
 struct RssiKalmanParams {
-  double process_noise = 0.1;       ///< Q, dB^2 per reading, > 0
-  double measurement_noise = 25.0;  ///< R, dB^2, > 0
+  double process_noise = 1.0;       ///< Q, dB^2 per reading, > 0
+  double measurement_noise = 25.0;  ///< R, dB^2, > 0 (gain 0.18 with Q = 1)
   void validate() const;
   /// Closed-form steady-state gain K = P / (P + R) with P = (Q + sqrt(Q^2 + 4 Q R)) / 2,
   /// the prior variance at the fixed point of the Riccati recursion.
@@ -91,7 +91,9 @@ class RssiKalman {
 /// controller's `rssi_filter/...` parameters (config/homing_controller.yaml).
 struct RssiFilterParams {
   enum class Type { kNone, kMean, kMedian, kKalman };
-  Type type = Type::kMedian;
+  /// kalman: the smallest distance error in rssi_filter_compare, static and approaching
+  /// (doc/rssi_filters.md).
+  Type type = Type::kKalman;
   RssiWindowParams window;
   RssiKalmanParams kalman;
 
