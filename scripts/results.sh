@@ -7,14 +7,14 @@
 # with a baseline measured in the same run and the ratio to it.
 #   bash scripts/results.sh [section ...]
 # Sections, in order (default: all; 387 s in one run on a shared 2-core machine, built):
-#   accuracy latency scipy pcrb coldstarts load experiments homing placement offline stop demo
+#   accuracy latency scipy pcrb coldstarts load experiments homing placement offline stop demo rssi
 # Not part of scripts/test.sh: too slow, and timings vary with the machine's load.
 # Masters: RF_RESULTS_PORT (default 11751) for the stop-latency benchmark and the demo;
 # rostest and measure_locator_load.sh pick their own.
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 export PATH="/usr/bin:$PATH"
-all=(accuracy latency scipy pcrb coldstarts load experiments homing placement offline stop demo)
+all=(accuracy latency scipy pcrb coldstarts load experiments homing placement offline stop demo rssi)
 sections=("$@")
 [ ${#sections[@]} -eq 0 ] && sections=("${all[@]}")
 for s in "${sections[@]}"; do
@@ -248,6 +248,17 @@ print("| closed loop passed | simulated duration (s) | ideal wall at 4 x (s) | w
 print("|---|---|---|---|---|")
 print("| %s | %.1f | %.1f | %.1f | %.2f |" % (m["passed"], m["duration_s"], ideal, wall, wall / ideal))
 PY
+fi
+
+if wanted rssi; then
+  heading "RSSI filters and seed 002's trilateration (doc/rssi_filters.md)"
+  shown '"$RF_WS"/devel/lib/radio_follow/rssi_filter_compare'
+  "$bin/rssi_filter_compare"
+  echo
+  shown '"$RF_WS"/devel/lib/radio_follow/trilateration_compare'
+  "$bin/trilateration_compare"
+  echo
+  echo "(rssi: deterministic but for the trilateration timings, which are ratios measured in the same run)"
 fi
 
 printf '\n(results.sh: %s s of wall time)\n' "$(elapsed "$start_all")"
