@@ -32,47 +32,39 @@ double RssiKalmanParams::steadyStateGain() const {
   return prior / (prior + measurement_noise);
 }
 
-MovingMean::MovingMean(const RssiWindowParams& params)
+RssiWindow::RssiWindow(const RssiWindowParams& params)
     : window_([&] {
         params.validate();
         return static_cast<std::size_t>(params.window);
       }()) {}
 
-std::optional<double> MovingMean::update(double rssi) {
+bool RssiWindow::push(double rssi) {
   if (!std::isfinite(rssi)) {
     ++refused_;
-    return std::nullopt;
+    return false;
   }
   values_.push_back(rssi);
   if (values_.size() > window_) {
     values_.pop_front();
+  }
+  return true;
+}
+
+std::optional<double> MovingMean::update(double rssi) {
+  if (!window_.push(rssi)) {
+    return std::nullopt;
   }
   // Summed afresh each time: a running sum drifts by rounding over a long run, and a
   // window is a few tens of readings.
-  return std::accumulate(values_.begin(), values_.end(), 0.0) /
-         static_cast<double>(values_.size());
+  const auto& v = window_.values();
+  return std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
 }
-
-void MovingMean::reset() {
-  values_.clear();
-}
-
-MovingMedian::MovingMedian(const RssiWindowParams& params)
-    : window_([&] {
-        params.validate();
-        return static_cast<std::size_t>(params.window);
-      }()) {}
 
 std::optional<double> MovingMedian::update(double rssi) {
-  if (!std::isfinite(rssi)) {
-    ++refused_;
+  if (!window_.push(rssi)) {
     return std::nullopt;
   }
-  values_.push_back(rssi);
-  if (values_.size() > window_) {
-    values_.pop_front();
-  }
-  std::vector<double> sorted(values_.begin(), values_.end());
+  std::vector<double> sorted(window_.values().begin(), window_.values().end());
   const std::size_t mid = sorted.size() / 2;
   std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(mid),
                    sorted.end());
@@ -83,10 +75,6 @@ std::optional<double> MovingMedian::update(double rssi) {
   const double lower =
       *std::max_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(mid));
   return 0.5 * (lower + upper);
-}
-
-void MovingMedian::reset() {
-  values_.clear();
 }
 
 RssiKalman::RssiKalman(const RssiKalmanParams& params)

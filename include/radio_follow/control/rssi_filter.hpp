@@ -36,14 +36,16 @@ struct RssiKalmanParams {
   double steadyStateGain() const;
 };
 
-/// Arithmetic mean of the last `window` readings.
-class MovingMean {
+/// The last `window` finite readings, oldest first: what the mean and the median share.
+class RssiWindow {
  public:
   /// Validates `params` (throws ParamError).
-  explicit MovingMean(const RssiWindowParams& params);
-  /// The mean including `rssi`; nullopt (state unchanged) when `rssi` is not finite.
-  std::optional<double> update(double rssi);
-  void reset();
+  explicit RssiWindow(const RssiWindowParams& params);
+  /// Adds `rssi` (dropping the oldest beyond the window); false and counted when `rssi`
+  /// is not finite, which leaves the window as it was.
+  bool push(double rssi);
+  const std::deque<double>& values() const { return values_; }
+  void reset() { values_.clear(); }
   std::uint64_t refused() const { return refused_; }
 
  private:
@@ -52,19 +54,30 @@ class MovingMean {
   std::uint64_t refused_ = 0;
 };
 
+/// Arithmetic mean of the last `window` readings.
+class MovingMean {
+ public:
+  explicit MovingMean(const RssiWindowParams& params) : window_(params) {}
+  /// The mean including `rssi`; nullopt (state unchanged) when `rssi` is not finite.
+  std::optional<double> update(double rssi);
+  void reset() { window_.reset(); }
+  std::uint64_t refused() const { return window_.refused(); }
+
+ private:
+  RssiWindow window_;
+};
+
 /// Median of the last `window` readings (mean of the two middle ones for an even count):
 /// a fade shorter than half the window does not move it at all.
 class MovingMedian {
  public:
-  explicit MovingMedian(const RssiWindowParams& params);
+  explicit MovingMedian(const RssiWindowParams& params) : window_(params) {}
   std::optional<double> update(double rssi);
-  void reset();
-  std::uint64_t refused() const { return refused_; }
+  void reset() { window_.reset(); }
+  std::uint64_t refused() const { return window_.refused(); }
 
  private:
-  std::size_t window_;
-  std::deque<double> values_;
-  std::uint64_t refused_ = 0;
+  RssiWindow window_;
 };
 
 /// The 1-D Kalman estimator of RssiKalmanParams, started at the first reading.
