@@ -8,14 +8,14 @@
 #   bash scripts/results.sh [section ...]
 # Sections, in order (default: all; 387 s in one run on a shared 2-core machine, built):
 #   accuracy latency scipy pcrb coldstarts load experiments homing placement offline stop demo
-#   standing
+#   standing rssi
 # Not part of scripts/test.sh: too slow, and timings vary with the machine's load.
 # Masters: RF_RESULTS_PORT (default 11751) for the stop-latency benchmark and the demo;
 # rostest and measure_locator_load.sh pick their own.
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 export PATH="/usr/bin:$PATH"
-all=(accuracy latency scipy pcrb coldstarts load experiments homing placement offline stop demo standing)
+all=(accuracy latency scipy pcrb coldstarts load experiments homing placement offline stop demo standing rssi)
 sections=("$@")
 [ ${#sections[@]} -eq 0 ] && sections=("${all[@]}")
 for s in "${sections[@]}"; do
@@ -272,6 +272,17 @@ if wanted standing; then
     done
   done
   echo "(standing: $(elapsed "$t0") s; deterministic)"
+fi
+
+if wanted rssi; then
+  heading "RSSI filters and seed 002's trilateration (doc/rssi_filters.md)"
+  shown '"$RF_WS"/devel/lib/radio_follow/rssi_filter_compare'
+  "$bin/rssi_filter_compare"
+  echo
+  shown '"$RF_WS"/devel/lib/radio_follow/trilateration_compare'
+  "$bin/trilateration_compare"
+  echo
+  echo "(rssi: deterministic but for the trilateration timings, which are ratios measured in the same run)"
 fi
 
 printf '\n(results.sh: %s s of wall time)\n' "$(elapsed "$start_all")"

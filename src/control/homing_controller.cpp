@@ -66,12 +66,14 @@ const ParamTable<HomingControllerParams>& HomingControllerParams::table() {
           .add("search_speed", &P::search_speed, "m/s", "Forward speed while no goal exists.",
                Range::atLeast(0.0))
           .include(rssiTable(), &P::rssi)
+          .include(RssiFilterParams::table(), &P::rssi_filter, "rssi_filter/")
           .include(estimatorTable(), &P::homing);
   return t;
 }
 
 void HomingControllerParams::validate() const {
   table().check(*this);
+  rssi_filter.validate();
   homing.validate();  // max_linear and max_angular, copied from the common limits
 }
 
@@ -80,12 +82,14 @@ HomingController::HomingController(const HomingControllerParams& params)
         params.validate();
         return params;
       }()),
-      homing_(params_.homing) {}
+      homing_(params_.homing),
+      rssi_filter_(params_.rssi_filter) {}
 
 void HomingController::reset() {
   robot_.reset();
   last_bearing_.reset();
   range_stamp_.reset();
+  rssi_filter_.reset();
   homing_ = HybridHoming(params_.homing);
 }
 
@@ -114,10 +118,9 @@ void HomingController::onRange(double range, double stamp) {
   }
 }
 
-double HomingController::distanceAt(double stamp, double rssi) const {
+double HomingController::distanceAt(double stamp, std::optional<double> filtered) const {
   if (!params_.usesUwb()) {
-    return std::isfinite(rssi) ? params_.rssi.distance(rssi)
-                               : std::numeric_limits<double>::quiet_NaN();
+    return filtered ? params_.rssi.distance(*filtered) : std::numeric_limits<double>::quiet_NaN();
   }
   if (range_stamp_ && std::abs(stamp - *range_stamp_) <= params_.distance_max_age) {
     return range_;
@@ -127,6 +130,11 @@ double HomingController::distanceAt(double stamp, double rssi) const {
 
 HomingController::BearingResult HomingController::onBearing(double azimuth, double rssi,
                                                             double stamp) {
+  // The RSSI reading stands on its own: it is smoothed even when the bearing cannot be
+  // placed, so the filter's history has no holes where odometry lagged. A NaN (no RSSI)
+  // is refused by the filter and leaves this bearing without a distance.
+  const std::optional<double> filtered =
+      params_.usesUwb() ? std::nullopt : rssi_filter_.update(rssi);
   if (!robot_ || std::abs(stamp - odom_stamp_) > params_.odom_timeout) {
     return BearingResult::kNoOdometry;
   }
@@ -139,7 +147,7 @@ HomingController::BearingResult HomingController::onBearing(double azimuth, doub
   const Eigen::Vector2d sensor(robot_->x + c * params_.board_x - s * params_.board_y,
                                robot_->y + s * params_.board_x + c * params_.board_y);
   const double bearing = wrapAngle(robot_->yaw + params_.board_yaw + azimuth);
-  homing_.update(sensor, bearing, distanceAt(stamp, rssi));
+  homing_.update(sensor, bearing, distanceAt(stamp, filtered));
   last_bearing_ = bearing;
   return BearingResult::kUsed;
 }

@@ -27,10 +27,28 @@ std::optional<Eigen::Matrix<double, N, 1>> solveNormal(const Eigen::MatrixXd& a,
   return Eigen::Matrix<double, N, 1>(normal.ldlt().solve(a.transpose() * b));
 }
 
-}  // namespace
+/// R x = Q^T b (seed 002 eqs 6-8). Column pivoting makes R's diagonal reveal the rank:
+/// the same degeneracy threshold as solveNormal's, on A rather than on A^T A.
+std::optional<Eigen::VectorXd> solveQr(const Eigen::MatrixXd& a, const Eigen::VectorXd& b) {
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(a);
+  const Eigen::MatrixXd& r = qr.matrixQR();
+  const double largest = std::abs(r(0, 0));
+  const double smallest = std::abs(r(a.cols() - 1, a.cols() - 1));
+  if (!(largest > 0.0) || smallest < std::sqrt(kMinRcond) * largest) {
+    return std::nullopt;
+  }
+  return Eigen::VectorXd(qr.solve(b));
+}
 
-std::optional<Eigen::Vector3d> trilaterate(const std::vector<RangeObservation>& ranges,
-                                           const InitializerConfig& config) {
+/// The linear system of the squared-range equations, each minus the first (`consecutive`
+/// false) or minus the next (true, seed 002 eq 5). Rows: 2 (m_j - m_i)^T p =
+/// d_i - d_j + |m_j|^2 - |m_i|^2 for the pair (i, j).
+struct LinearSystem {
+  Eigen::MatrixXd a;
+  Eigen::VectorXd b;
+};
+std::optional<LinearSystem> linearSystem(const std::vector<RangeObservation>& ranges,
+                                         const InitializerConfig& config, bool consecutive) {
   const int dims = config.planar ? 2 : 3;
   const int n = static_cast<int>(ranges.size());
   if (n < dims + 1) {
@@ -45,27 +63,56 @@ std::optional<Eigen::Vector3d> trilaterate(const std::vector<RangeObservation>& 
     }
     return d2;
   };
-  const Eigen::Vector3d m0 = ranges[0].module;
-  const double d0 = squared(ranges[0]);
-  Eigen::MatrixXd a(n - 1, dims);
-  Eigen::VectorXd b(n - 1);
-  for (int i = 1; i < n; ++i) {
-    const Eigen::Vector3d mi = ranges[i].module;
-    a.row(i - 1) = 2.0 * (mi - m0).head(dims).transpose();
-    b(i - 1) = d0 - squared(ranges[i]) + mi.head(dims).squaredNorm() - m0.head(dims).squaredNorm();
+  LinearSystem system{Eigen::MatrixXd(n - 1, dims), Eigen::VectorXd(n - 1)};
+  for (int j = 1; j < n; ++j) {
+    const RangeObservation& zi = ranges[consecutive ? j - 1 : 0];
+    const Eigen::Vector3d& mi = zi.module;
+    const Eigen::Vector3d& mj = ranges[j].module;
+    system.a.row(j - 1) = 2.0 * (mj - mi).head(dims).transpose();
+    system.b(j - 1) = squared(zi) - squared(ranges[j]) + mj.head(dims).squaredNorm() -
+                      mi.head(dims).squaredNorm();
+  }
+  return system;
+}
+
+Eigen::Vector3d toPosition(const Eigen::VectorXd& p, const InitializerConfig& config) {
+  Eigen::Vector3d position(p(0), p(1), config.height);
+  if (!config.planar) {
+    position.z() = p(2);
+  }
+  return position;
+}
+
+}  // namespace
+
+std::optional<Eigen::Vector3d> trilaterate(const std::vector<RangeObservation>& ranges,
+                                           const InitializerConfig& config) {
+  const auto system = linearSystem(ranges, config, false);
+  if (!system) {
+    return std::nullopt;
   }
   if (config.planar) {
-    const auto xy = solveNormal<2>(a, b);
+    const auto xy = solveNormal<2>(system->a, system->b);
     if (!xy) {
       return std::nullopt;
     }
     return Eigen::Vector3d(xy->x(), xy->y(), config.height);
   }
-  const auto p = solveNormal<3>(a, b);
+  const auto p = solveNormal<3>(system->a, system->b);
   if (!p) {
     return std::nullopt;
   }
   return *p;
+}
+
+std::optional<Eigen::Vector3d> trilaterateQr(const std::vector<RangeObservation>& ranges,
+                                             const InitializerConfig& config) {
+  const auto system = linearSystem(ranges, config, true);
+  if (!system) {
+    return std::nullopt;
+  }
+  const auto p = solveQr(system->a, system->b);
+  return p ? std::optional<Eigen::Vector3d>(toPosition(*p, config)) : std::nullopt;
 }
 
 Eigen::Vector3d bearingDirection(const BearingObservation& bearing) {

@@ -14,13 +14,20 @@ class ParamError : public std::runtime_error {
  public:
   ParamError(const std::string& name, const std::string& value, const std::string& expected)
       : std::runtime_error("parameter '" + name + "' = " + value + ": expected " + expected),
-        name_(name) {}
+        name_(name),
+        value_(value),
+        expected_(expected) {}
 
   /// The offending parameter's name (dotted path for nested YAML fields).
   const std::string& name() const { return name_; }
+  /// The same complaint about `name`: a table included under a prefix knows its entries
+  /// by their short names only.
+  ParamError renamed(const std::string& name) const { return {name, value_, expected_}; }
 
  private:
   std::string name_;
+  std::string value_;
+  std::string expected_;
 };
 
 /// Renders a value for a ParamError message.

@@ -141,10 +141,21 @@ class ParamTable {
   template <typename Sub>
   ParamTable& include(const ParamTable<Sub>& sub, Sub S::*member, const std::string& prefix = "") {
     for (const auto& e : sub.entries()) {
-      entries_.push_back(
-          Entry{prefix + e.name, e.unit, e.doc, e.range, e.choices,
-                [member, get = e.get](const S& s) { return get(s.*member); },
-                [member, set = e.set](S& s, const ParamValue& v) { set(s.*member, v); }});
+      entries_.push_back(Entry{
+          prefix + e.name, e.unit, e.doc, e.range, e.choices,
+          [member, get = e.get](const S& s) { return get(s.*member); },
+          [member, set = e.set, inner = "~" + e.name, outer = "~" + prefix + e.name](
+              S& s, const ParamValue& v) {
+            try {
+              set(s.*member, v);
+            } catch (const ParamError& error) {
+              // An unknown choice names the entry as `sub` knows it: give its full name.
+              if (error.name() != inner) {
+                throw;
+              }
+              throw error.renamed(outer);
+            }
+          }});
     }
     return *this;
   }

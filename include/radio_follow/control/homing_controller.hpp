@@ -11,6 +11,7 @@
 #include "radio_follow/common/time_policy.hpp"
 #include "radio_follow/control/follower_state.hpp"
 #include "radio_follow/control/homing.hpp"
+#include "radio_follow/control/rssi_filter.hpp"
 #include "radio_follow/control/rssi_model.hpp"
 
 namespace radio_follow {
@@ -32,6 +33,8 @@ struct HomingControllerParams {
   /// Forward speed while no goal exists yet (building the parallax baseline), m/s.
   double search_speed = 0.15;
   RssiModel rssi;
+  /// Smoother of the RSSI before `rssi` turns it into a distance (`rssi_filter/...`).
+  RssiFilterParams rssi_filter;
   /// The estimator and eq 15; a node copies its common max_linear and max_angular here.
   HomingParams homing;
 
@@ -39,8 +42,8 @@ struct HomingControllerParams {
   /// Reads the law's parameters by their names (doc/nodes/homing_controller.md); the
   /// speed caps come from the controller's common `limits`. Absent keys keep their value.
   void load(const ParamSource& source, const MotionLimits& limits);
-  /// The node's law parameters (config/homing_controller.yaml), rssi_* and the
-  /// estimator's (HomingParams) included.
+  /// The node's law parameters (config/homing_controller.yaml), rssi_*, rssi_filter/* and
+  /// the estimator's (HomingParams) included.
   static const ParamTable<HomingControllerParams>& table();
   void validate() const;
 };
@@ -83,7 +86,8 @@ class HomingController {
   };
   /// One angle of arrival in the board frame (rad, CCW) with its RSSI (dBm; NaN when
   /// none), stamped `stamp`: feeds the hybrid estimate with the board's pose in the
-  /// odometry frame and the distance of distance_source.
+  /// odometry frame and the distance of distance_source. With distance_source "rssi"
+  /// every finite RSSI enters the rssi_filter, also when the bearing itself is not used.
   BearingResult onBearing(double azimuth, double rssi, double stamp);
 
   /// The command at `now`: waiting without fresh odometry, searching before a goal,
@@ -103,11 +107,13 @@ class HomingController {
   std::uint64_t odometryRefused() const { return odom_refused_; }
 
  private:
-  /// The vector estimate's distance for a bearing at `stamp` with `rssi`; NaN when none.
-  double distanceAt(double stamp, double rssi) const;
+  /// The vector estimate's distance for a bearing at `stamp` whose smoothed RSSI is
+  /// `filtered`; NaN when none.
+  double distanceAt(double stamp, std::optional<double> filtered) const;
 
   HomingControllerParams params_;
   HybridHoming homing_;
+  RssiFilter rssi_filter_;
   TimePolicy time_;
   std::optional<Pose2> robot_;
   double odom_stamp_ = 0.0;

@@ -21,12 +21,20 @@ struct InitializerConfig {
   double default_range = 3.0;
 };
 
-/// Closed-form linear least-squares trilateration (seed 002 eqs 2-8): subtracting the first
-/// squared-range equation from the others leaves a linear system in the position. In 2D
-/// mode the known height moves into the right-hand side. Needs three modules not on one
-/// line (2D) or four not on one plane (3D); returns nullopt for fewer or degenerate ones.
+/// Closed-form linear least-squares trilateration (after seed 002 eqs 2-5): subtracting the
+/// first squared-range equation from the others leaves a linear system in the position,
+/// solved by its normal equations. In 2D mode the known height moves into the right-hand
+/// side. Needs three modules not on one line (2D) or four not on one plane (3D); returns
+/// nullopt for fewer or degenerate ones. The locator's initial guess.
 std::optional<Eigen::Vector3d> trilaterate(const std::vector<RangeObservation>& ranges,
                                            const InitializerConfig& config);
+
+/// Seed 002 eqs 2-8 as written: each squared-range equation minus the next one
+/// (consecutive differences), solved by a Householder QR of A (R x = Q^T b) instead of
+/// the normal equations, which square A's condition number. Same inputs, conditions and
+/// degeneracy test as trilaterate(); compared in doc/locator_accuracy.md.
+std::optional<Eigen::Vector3d> trilaterateQr(const std::vector<RangeObservation>& ranges,
+                                             const InitializerConfig& config);
 
 /// Starting points for a multi-start solve when trilateration is impossible: the circle of
 /// the first range around its module, plus the point at that range along every bearing

@@ -2,6 +2,7 @@
 #include "radio_follow/control/homing_controller.hpp"
 
 #include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
 
 #include <cmath>
 #include <functional>
@@ -9,6 +10,7 @@
 
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/common/yaml_params.hpp"
 
 namespace radio_follow {
 namespace control {
@@ -122,6 +124,51 @@ TEST(HomingController, DistanceFromTheRssiModel) {
   ASSERT_TRUE(law.goal());
   EXPECT_EQ(law.homing().source(), HomingSource::kVector);
   EXPECT_NEAR(law.goal()->x(), 4.0, 1e-9);
+}
+
+TEST(HomingController, RssiFilterSmoothsAFadeBeforeTheModel) {
+  // Ten readings of a tag 4 m ahead, then one 12 dB fade: unfiltered, the fade alone
+  // makes the vector goal jump to 16 m; the Kalman filter (gain 0.18) moves it far less.
+  const auto lastGoalX = [](RssiFilterParams::Type type) {
+    HomingControllerParams params;
+    params.rssi.rssi_at_1m = -50.0;
+    params.rssi.exponent = 2.0;
+    params.rssi_filter.type = type;
+    params.homing.tau = 1e-3;  // the vector goal follows the newest distance alone
+    HomingController law(params);
+    EXPECT_TRUE(law.onOdometry(pose(0.0, 0.0), 0.0, 0.0).accepted);
+    const double at_4m = -50.0 - 20.0 * std::log10(4.0);
+    for (int i = 0; i < 10; ++i) {
+      law.onBearing(0.0, at_4m, 0.0);
+    }
+    law.onBearing(0.0, kNaN, 0.0);  // no RSSI: refused by the filter, no distance
+    law.onBearing(0.0, at_4m - 12.0, 0.0);
+    return law.homing().vectorGoal()->x();
+  };
+  EXPECT_NEAR(lastGoalX(RssiFilterParams::Type::kNone), 16.0, 0.1);
+  EXPECT_LT(lastGoalX(RssiFilterParams::Type::kKalman), 6.5);
+  EXPECT_NEAR(lastGoalX(RssiFilterParams::Type::kMedian), 4.0, 1e-9);
+}
+
+TEST(HomingControllerParams, RssiFilterLoadsFromItsMappingAndRefusesTyposAndBadValues) {
+  const MotionLimits limits;
+  HomingControllerParams params;
+  YamlParams good(YAML::Load("{rssi_filter: {type: median, window: 5}}"));
+  params.load(good, limits);
+  good.requireAllKnown();
+  EXPECT_EQ(params.rssi_filter.type, RssiFilterParams::Type::kMedian);
+  EXPECT_EQ(params.rssi_filter.window.window, 5);
+
+  YamlParams typo(YAML::Load("{rssi_filter: {typ: kalman}}"));
+  HomingControllerParams().load(typo, limits);
+  EXPECT_THROW(typo.requireAllKnown(), ParamError);
+  try {
+    HomingControllerParams().load(YamlParams(YAML::Load("{rssi_filter: {type: kalmann}}")),
+                                  limits);
+    ADD_FAILURE() << "type kalmann accepted";
+  } catch (const ParamError& e) {
+    EXPECT_EQ(e.name(), "~rssi_filter/type") << e.what();
+  }
 }
 
 TEST(HomingController, StaleUwbRangeGivesNoDistance) {
@@ -255,6 +302,11 @@ TEST(HomingControllerParams, BadValuesThrowNamingTheParameter) {
   expectParamError([](auto& p) { p.homing.k = 1.5; }, "~kohonen_k");
   expectParamError([](auto& p) { p.homing.arrival_distance = 0.0; }, "~arrival_distance");
   expectParamError([](auto& p) { p.homing.max_linear = 0.0; }, "~max_linear");
+  expectParamError([](auto& p) { p.rssi_filter.window.window = 0; }, "~rssi_filter/window");
+  expectParamError([](auto& p) { p.rssi_filter.kalman.process_noise = 0.0; },
+                   "~rssi_filter/process_noise");
+  expectParamError([](auto& p) { p.rssi_filter.kalman.measurement_noise = kNaN; },
+                   "~rssi_filter/measurement_noise");
 }
 
 }  // namespace

@@ -28,6 +28,9 @@ TEST_P(TrilaterationQuadrants, RecoversNoiseFreeTargetInEveryDirection) {
       const auto p = trilaterate(obs.ranges, config);
       ASSERT_TRUE(p.has_value()) << name;
       EXPECT_LT((*p - truth).norm(), 1e-6) << name << " at " << truth.transpose();
+      const auto q = trilaterateQr(obs.ranges, config);
+      ASSERT_TRUE(q.has_value()) << name;
+      EXPECT_LT((*q - truth).norm(), 1e-6) << name << " at " << truth.transpose();
     }
   }
 }
@@ -50,8 +53,71 @@ TEST(Trilateration, ThreeDimensionsNeedsFourNonCoplanarModules) {
   const auto p = trilaterate(ranges, config);
   ASSERT_TRUE(p.has_value());
   EXPECT_LT((*p - truth).norm(), 1e-9);
+  const auto q = trilaterateQr(ranges, config);
+  ASSERT_TRUE(q.has_value());
+  EXPECT_LT((*q - truth).norm(), 1e-9);
   ranges.pop_back();
   EXPECT_FALSE(trilaterate(ranges, config).has_value());
+  EXPECT_FALSE(trilaterateQr(ranges, config).has_value());
+}
+
+/// Noise-free ranges of `truth` from modules at `modules` (2D, on the target's plane).
+std::vector<RangeObservation> exactRanges(const std::vector<Eigen::Vector3d>& modules,
+                                          const Eigen::Vector3d& truth) {
+  std::vector<RangeObservation> ranges;
+  for (const Eigen::Vector3d& m : modules) {
+    RangeObservation z;
+    z.module = m;
+    z.range = (truth - m).norm();
+    ranges.push_back(z);
+  }
+  return ranges;
+}
+
+TEST(TrilaterationQr, CollinearModulesAreRejectedLikeTheNormalEquations) {
+  InitializerConfig config;
+  config.height = 0.0;
+  const Eigen::Vector3d truth(3.0, 2.0, 0.0);
+  // Four modules on one line (consecutive differences all parallel), then one just off it.
+  std::vector<Eigen::Vector3d> modules{{0, 0, 0}, {0.2, 0.1, 0}, {0.4, 0.2, 0}, {0.6, 0.3, 0}};
+  EXPECT_FALSE(trilaterateQr(exactRanges(modules, truth), config).has_value());
+  EXPECT_FALSE(trilaterate(exactRanges(modules, truth), config).has_value());
+  modules.push_back({0.3, 0.5, 0});
+  const auto q = trilaterateQr(exactRanges(modules, truth), config);
+  ASSERT_TRUE(q.has_value());
+  EXPECT_LT((*q - truth).norm(), 1e-9);
+}
+
+TEST(TrilaterationQr, TooFewRangesGiveNothing) {
+  InitializerConfig config;
+  const auto ranges = exactRanges({{0, 0, 1}, {1, 0, 1}}, {2, 2, 1});
+  EXPECT_FALSE(trilaterateQr(ranges, config).has_value());
+  EXPECT_FALSE(trilaterateQr({}, config).has_value());
+}
+
+TEST(TrilaterationQr, IllConditionedGeometryStillRecoversExactRanges) {
+  // Modules 0.5 m apart along x, one 0.3 mm off that line, the target 30 m away. The
+  // first differences' A has cond 7400, its normal matrix 5.4e7 (just inside the
+  // degeneracy limit of 1e8); the consecutive differences' A has cond 2000. Both still
+  // recover the target to 1e-9 m (measured: 3e-10 and 2e-10 m): the rounding of the
+  // right-hand side's squared ranges, not the squared condition number, sets the error.
+  InitializerConfig config;
+  config.height = 0.0;
+  const Eigen::Vector3d truth(21.0, 21.5, 0.0);
+  std::vector<Eigen::Vector3d> modules{{0, 0, 0}, {0.5, 0.0, 0}, {1.0, 0.0003, 0}, {1.5, 0.0, 0}};
+  const auto p = trilaterate(exactRanges(modules, truth), config);
+  const auto q = trilaterateQr(exactRanges(modules, truth), config);
+  ASSERT_TRUE(p.has_value());
+  ASSERT_TRUE(q.has_value());
+  EXPECT_LT((*p - truth).norm(), 1e-9);
+  EXPECT_LT((*q - truth).norm(), 1e-9);
+  // 0.2 mm off the line: the normal matrix's rcond (8e-9) is below the limit, the QR's
+  // R-diagonal ratio (1/3000) is not. Each test judges its own matrix; they disagree here.
+  modules[2].y() = 0.0002;
+  EXPECT_FALSE(trilaterate(exactRanges(modules, truth), config).has_value());
+  const auto q2 = trilaterateQr(exactRanges(modules, truth), config);
+  ASSERT_TRUE(q2.has_value());
+  EXPECT_LT((*q2 - truth).norm(), 1e-8);
 }
 
 TEST(Trilateration, CollinearModulesAreRejected) {
