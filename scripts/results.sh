@@ -134,6 +134,20 @@ if wanted homing; then
   for s in $(seq 1 10); do "$bin/homing_experiment" --arrival 0.15 --seed "$s" >"$tmp/homing_$s.md"; done
   "${tables[@]}" homing-range "$tmp"/homing_{1,2,3,4,5,6,7,8,9,10}.md
   echo
+  echo "Obstacle avoidance, seed 000 Table 4's analogue (configuration 5, 12 obstacles per run), five target sets:"
+  echo
+  shown 'for s in 1 2 3 4 5; do "$RF_WS"/devel/lib/radio_follow/homing_experiment --obstacles 12 --seed $s; done'
+  for s in 1 2 3 4 5; do
+    echo "target set $s:"
+    echo
+    "$bin/homing_experiment" --obstacles 12 --seed "$s"
+    echo
+  done
+  echo "The same with a robot of radius 0.3 m (the paper's thresholds leave too little room):"
+  echo
+  shown '"$RF_WS"/devel/lib/radio_follow/homing_experiment --obstacles 12 --robot-radius 0.3'
+  "$bin/homing_experiment" --obstacles 12 --robot-radius 0.3
+  echo
   echo "A lower eq 14 threshold (doc/control/homing.md), on the benchmark:"
   echo
   printf 'error_threshold: 0.1\n' >"$tmp/threshold.yaml"

@@ -10,6 +10,7 @@
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/yaml_params.hpp"
 #include "radio_follow/control/command_pipeline.hpp"
+#include "radio_follow/control/obstacle_avoidance.hpp"
 
 namespace radio_follow {
 namespace evaluation {
@@ -35,9 +36,24 @@ HomingResult runHomingTrial(const HomingStep& controller, double target_x, doubl
   const double dt = 1.0 / config.rate;
   HomingResult result;
   HomingCommand command;
+  const bool obstacles = !config.obstacles.empty();
+  result.min_clearance = std::numeric_limits<double>::infinity();
+  std::normal_distribution<double> scan_noise(0.0, config.scan.sigma);
+  const double increment = config.scan.beams > 1 ? (config.scan.angle_max - config.scan.angle_min) /
+                                                       (config.scan.beams - 1)
+                                                 : 0.0;
   double t = 0.0;
   for (; t <= config.time_limit; t += dt) {
     const Pose2& pose = robot.pose();
+    if (obstacles) {
+      result.min_clearance =
+          std::min(result.min_clearance,
+                   sim::clearance(config.obstacles, pose.x, pose.y) - config.robot_radius);
+      if (result.min_clearance < 0.0) {
+        result.collided = true;
+        break;
+      }
+    }
     const double dx = target_x - pose.x;
     const double dy = target_y - pose.y;
     const double distance = std::hypot(dx, dy);
@@ -51,12 +67,26 @@ HomingResult runHomingTrial(const HomingStep& controller, double target_x, doubl
     if (command.arrived) {
       break;
     }
-    robot.step(command.linear, command.angular, dt);
+    control::VelocityCommand cmd{command.linear, command.angular};
+    if (obstacles && config.use_scan) {
+      // The scan as the pipeline gets it: noisy ranges, no return beyond range_max.
+      std::vector<float> ranges;
+      for (const double r : sim::scanRanges(config.obstacles, config.scan, pose)) {
+        ranges.push_back(static_cast<float>(std::isfinite(r) ? r + scan_noise(rng) : r));
+      }
+      cmd = control::avoidObstacles(
+          cmd,
+          control::scanSectors(ranges, config.scan.angle_min, increment, config.scan.range_min,
+                               config.scan.range_max),
+          config.avoidance);
+    }
+    robot.step(cmd.linear, cmd.angular, dt);
   }
   const Pose2& end = robot.pose();
   result.time = std::min(t, config.time_limit);
   result.final_error = std::hypot(target_x - end.x, target_y - end.y);
-  result.success = command.arrived && result.final_error < config.success_radius;
+  result.success =
+      !result.collided && command.arrived && result.final_error < config.success_radius;
   const double straight = std::hypot(end.x, end.y);
   result.net_velocity = result.time > 0.0 ? straight / result.time : 0.0;
   result.path_efficiency = robot.odometer() > 0.0 ? straight / robot.odometer() : 0.0;
@@ -66,25 +96,74 @@ HomingResult runHomingTrial(const HomingStep& controller, double target_x, doubl
   return result;
 }
 
-control::HomingControllerParams loadHomingControllerParams(
-    const std::string& config_dir, const std::vector<std::string>& overlays) {
+HomingNodeParams loadHomingNodeParams(const std::string& config_dir,
+                                      const std::vector<std::string>& overlays) {
   std::vector<std::string> files{config_dir + "/controller_common.yaml",
                                  config_dir + "/homing_controller.yaml"};
   files.insert(files.end(), overlays.begin(), overlays.end());
   const YamlParams source = YamlParams::fromFiles(files);
-  control::CommandPipelineParams pipeline;
-  pipeline.load(source, nullptr);
-  control::HomingControllerParams params;
-  params.load(source, pipeline.limits);
+  HomingNodeParams params;
+  params.pipeline.load(source, nullptr);
+  params.law.load(source, params.pipeline.limits);
   // Read by the node's ROS wrapper (wiring, rate, tag filter), not by the law.
   for (const char* key : {"cmd_vel_topic", "rate", "start_enabled", "layout_file", "range_topics",
                           "tag_id", "distance_range_topic"}) {
     source.allow(key);
   }
   source.requireAllKnown();
-  pipeline.validate();
-  params.validate();
+  params.pipeline.validate();
+  params.law.validate();
   return params;
+}
+
+sim::Obstacles homingObstacleCourse(double start_x, double start_y, double target_x,
+                                    double target_y, int count, double half_size, double keep_clear,
+                                    std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const Eigen::Vector2d start(start_x, start_y);
+  const Eigen::Vector2d target(target_x, target_y);
+  sim::Obstacles world;
+  // Clear of the start and the target, measured to the obstacle's surface.
+  auto clear = [&](const sim::Obstacles& candidate) {
+    return sim::clearance(candidate, start.x(), start.y()) >= keep_clear &&
+           sim::clearance(candidate, target.x(), target.y()) >= keep_clear;
+  };
+  auto draw = [&](const Eigen::Vector2d& centre) {
+    sim::Obstacles one;
+    if (unit(rng) < 0.6) {
+      one.circles.push_back({centre.x(), centre.y(), 0.15 + 0.35 * unit(rng)});
+    } else {
+      const double length = 1.0 + 2.0 * unit(rng);
+      const double angle = kPi * unit(rng);
+      const Eigen::Vector2d half = 0.5 * length * Eigen::Vector2d(std::cos(angle), std::sin(angle));
+      one.walls.push_back({centre.x() - half.x(), centre.y() - half.y(), centre.x() + half.x(),
+                           centre.y() + half.y()});
+    }
+    return one;
+  };
+  auto add = [&world](const sim::Obstacles& one) {
+    world.circles.insert(world.circles.end(), one.circles.begin(), one.circles.end());
+    world.walls.insert(world.walls.end(), one.walls.begin(), one.walls.end());
+  };
+  // One across the direct path, somewhere in its middle half, so every run must avoid.
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    const sim::Obstacles one = draw(start + (0.25 + 0.5 * unit(rng)) * (target - start));
+    if (clear(one)) {
+      add(one);
+      break;
+    }
+  }
+  for (int placed = 0, attempt = 0; placed + 1 < count && attempt < 100 * count; ++attempt) {
+    const Eigen::Vector2d centre(half_size * (2.0 * unit(rng) - 1.0),
+                                 half_size * (2.0 * unit(rng) - 1.0));
+    const sim::Obstacles one = draw(centre);
+    if (clear(one)) {
+      add(one);
+      ++placed;
+    }
+  }
+  return world;
 }
 
 HomingStep homingControllerStep(const control::HomingControllerParams& params) {
@@ -129,7 +208,10 @@ HomingSummary summarize(const std::vector<HomingResult>& results) {
   HomingSummary s;
   s.runs = static_cast<int>(results.size());
   int successes = 0;
+  s.min_clearance = std::numeric_limits<double>::infinity();
   for (const auto& r : results) {
+    s.min_clearance = std::min(s.min_clearance, r.min_clearance);
+    s.collisions += r.collided;
     if (!r.success) {
       continue;
     }

@@ -7,6 +7,8 @@
 // uniform-noise configurations of Table 2. Prints a Markdown table beside the paper's.
 //   homing_experiment [--per-quadrant N] [--seed S] [--max-linear V] [--arrival D] [--tau T]
 //                     [--config-dir DIR] [--params FILE (overlay on the shipped files)]
+//                     [--obstacles N (Table 4's analogue: configuration 5, N obstacles per run)]
+//                     [--robot-radius R (its footprint with --obstacles, default 0.2 m)]
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -32,25 +34,28 @@ constexpr double kPaper[5][6] = {{100, 14.24, 0.62, 0.05, 0.25, 0.90},
 }  // namespace
 
 int main(int argc, char** argv) {
+  namespace ev = radio_follow::evaluation;
   std::map<std::string, std::string> options{
-      {"--per-quadrant", "10"}, {"--seed", "1"}, {"--max-linear", "1.0"},
-      {"--arrival", ""},        {"--tau", ""},   {"--config-dir", RF_CONFIG_DIR},
-      {"--params", ""}};
+      {"--per-quadrant", "10"}, {"--seed", "1"},      {"--max-linear", "1.0"},
+      {"--arrival", ""},        {"--tau", ""},        {"--config-dir", RF_CONFIG_DIR},
+      {"--params", ""},         {"--obstacles", "0"}, {"--robot-radius", "0.2"}};
   if (const auto problem = radio_follow::readToolOptions(argc, argv, options)) {
     std::fprintf(stderr,
                  "homing_experiment: %s\nusage: homing_experiment [--per-quadrant N] [--seed S] "
-                 "[--max-linear V] [--arrival D] [--tau T] [--config-dir DIR] [--params FILE]\n",
+                 "[--max-linear V] [--arrival D] [--tau T] [--config-dir DIR] [--params FILE] "
+                 "[--obstacles N] [--robot-radius R]\n",
                  problem->c_str());
     return 2;
   }
   const int per_quadrant = std::atoi(options["--per-quadrant"].c_str());
   const unsigned long seed = std::strtoul(options["--seed"].c_str(), nullptr, 10);
   const double max_linear = std::atof(options["--max-linear"].c_str());
-  if (per_quadrant < 1 || !(max_linear > 0.0)) {
-    std::fprintf(stderr, "--per-quadrant must be >= 1 and --max-linear > 0\n");
+  const int obstacles = std::atoi(options["--obstacles"].c_str());
+  if (per_quadrant < 1 || !(max_linear > 0.0) || obstacles < 0) {
+    std::fprintf(stderr, "--per-quadrant must be >= 1, --max-linear > 0 and --obstacles >= 0\n");
     return 2;
   }
-  radio_follow::control::HomingControllerParams params;
+  ev::HomingNodeParams node;
   try {
     // The node's shipped files, as a user starts it; only the benchmark's conditions
     // differ: the distance is a UWB range and the robot's top speed is the paper's.
@@ -58,37 +63,70 @@ int main(int argc, char** argv) {
     if (!options["--params"].empty()) {
       overlays.push_back(options["--params"]);
     }
-    params =
-        radio_follow::evaluation::loadHomingControllerParams(options["--config-dir"], overlays);
-    params.distance_source = "uwb";
-    params.homing.max_linear = max_linear;
+    node = ev::loadHomingNodeParams(options["--config-dir"], overlays);
+    node.law.distance_source = "uwb";
+    node.law.homing.max_linear = max_linear;
     if (!options["--arrival"].empty()) {
-      params.homing.arrival_distance = std::atof(options["--arrival"].c_str());
+      node.law.homing.arrival_distance = std::atof(options["--arrival"].c_str());
     }
     if (!options["--tau"].empty()) {
-      params.homing.tau = std::atof(options["--tau"].c_str());
+      node.law.homing.tau = std::atof(options["--tau"].c_str());
     }
-    params.validate();
+    node.law.validate();
   } catch (const std::exception& e) {
     std::fprintf(stderr, "homing_experiment: %s\n", e.what());
     return 2;
   }
-  radio_follow::evaluation::HomingTrialConfig config;
+  const radio_follow::control::HomingControllerParams& params = node.law;
+  ev::HomingTrialConfig config;
   config.robot.max_linear = max_linear;
-  const auto targets = radio_follow::evaluation::homingTargets(per_quadrant, 10.0, 1.0, seed);
+  const auto targets = ev::homingTargets(per_quadrant, 10.0, 1.0, seed);
+  const auto configurations = ev::seed000NoiseConfigurations();
+
+  if (obstacles > 0) {
+    // Seed 000 Table 4's analogue: noise configuration 5, an obstacle course per run,
+    // with the pipeline's scan avoidance (the node's avoidance/* parameters) and without.
+    const ev::HomingNoise& noise = configurations.back();
+    config.avoidance = node.pipeline.avoidance;
+    config.robot_radius = std::atof(options["--robot-radius"].c_str());
+    std::printf(
+        "| %s, %d obstacles per run | success %% | time s | net vel. m/s | goal err. m | final "
+        "err. m | path eff. | min clearance m | collisions |\n",
+        noise.name.c_str(), obstacles);
+    std::printf("| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
+    for (const bool use_scan : {true, false}) {
+      config.use_scan = use_scan;
+      std::vector<ev::HomingResult> results;
+      for (std::size_t t = 0; t < targets.size(); ++t) {
+        config.obstacles = ev::homingObstacleCourse(0.0, 0.0, targets[t].first, targets[t].second,
+                                                    obstacles, 10.0, 1.0, seed * 1000 + t);
+        results.push_back(ev::runHomingTrial(ev::homingControllerStep(params), targets[t].first,
+                                             targets[t].second, noise, config,
+                                             seed * 1000 + 400 + t));
+      }
+      const auto s = ev::summarize(results);
+      std::printf("| %s | %.0f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %d |\n",
+                  use_scan ? "scan avoidance (use_scan)" : "no avoidance", 100.0 * s.success_rate,
+                  s.time, s.net_velocity, s.goal_error, s.final_error, s.path_efficiency,
+                  s.min_clearance, s.collisions);
+    }
+    std::printf(
+        "| seed 000 Table 4 (house world) | 96 | 44.91 | 0.22 | 0.12 | 0.23 | 0.69 | - | 3 "
+        "|\n");
+    return 0;
+  }
 
   std::printf(
       "| config | success %% | time s | net vel. m/s | goal err. m | final err. m | path eff. |\n");
   std::printf("| --- | --- | --- | --- | --- | --- | --- |\n");
-  const auto configurations = radio_follow::evaluation::seed000NoiseConfigurations();
   for (std::size_t c = 0; c < configurations.size(); ++c) {
-    std::vector<radio_follow::evaluation::HomingResult> results;
+    std::vector<ev::HomingResult> results;
     for (std::size_t t = 0; t < targets.size(); ++t) {
-      results.push_back(radio_follow::evaluation::runHomingTrial(
-          radio_follow::evaluation::homingControllerStep(params), targets[t].first,
-          targets[t].second, configurations[c], config, seed * 1000 + c * 100 + t));
+      results.push_back(ev::runHomingTrial(ev::homingControllerStep(params), targets[t].first,
+                                           targets[t].second, configurations[c], config,
+                                           seed * 1000 + c * 100 + t));
     }
-    const auto s = radio_follow::evaluation::summarize(results);
+    const auto s = ev::summarize(results);
     std::printf("| %s | %.0f | %.2f | %.2f | %.2f | %.2f | %.2f |\n",
                 configurations[c].name.c_str(), 100.0 * s.success_rate, s.time, s.net_velocity,
                 s.goal_error, s.final_error, s.path_efficiency);

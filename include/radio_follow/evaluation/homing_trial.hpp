@@ -7,7 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "radio_follow/control/command_pipeline.hpp"
 #include "radio_follow/control/homing_controller.hpp"
+#include "radio_follow/sim/obstacles.hpp"
 #include "radio_follow/sim/robot.hpp"
 
 namespace radio_follow {
@@ -52,6 +54,17 @@ struct HomingTrialConfig {
   double rate = 10.0;           ///< controller and measurement rate, Hz
   double time_limit = 120.0;    ///< s
   double success_radius = 1.0;  ///< m (seed 000: "< 1 m from the actual target")
+  /// Obstacles in the world frame (seed 000 Table 4); none: the obstacle-free Table 3.
+  sim::Obstacles obstacles;
+  /// With obstacles: the robot's laser scan (at its origin, each cycle) and the command
+  /// pipeline's avoidance (`use_scan`, `avoidance/*`), applied to the law's command as the
+  /// node's pipeline applies it. Without `use_scan` the robot drives blind.
+  sim::ScanConfig scan;
+  bool use_scan = false;
+  control::AvoidanceParams avoidance;
+  /// The robot's footprint as a circle, m: closer to an obstacle is a collision, which
+  /// ends the run as a failure (seed 000's failures: "the robot hitting an obstacle").
+  double robot_radius = 0.2;
 };
 
 /// One run, with seed 000 Table 3's metrics.
@@ -62,6 +75,10 @@ struct HomingResult {
   double goal_error = 0.0;       ///< final goal estimate vs beacon, m
   double final_error = 0.0;      ///< final robot position vs beacon, m
   double path_efficiency = 0.0;  ///< straight start-end distance / distance driven
+  /// Smallest distance between the robot's footprint and an obstacle, m (+inf without
+  /// obstacles); a collision ends the run.
+  double min_clearance = 0.0;
+  bool collided = false;
 };
 
 /// Drives a robot from the origin (facing +x) with `controller` towards a static beacon
@@ -70,12 +87,26 @@ HomingResult runHomingTrial(const HomingStep& controller, double target_x, doubl
                             const HomingNoise& noise, const HomingTrialConfig& config,
                             std::uint64_t seed);
 
-/// The homing_controller node's law parameters as the node loads them from the shipped
-/// files (`config_dir`/controller_common.yaml, then homing_controller.yaml, then each of
+/// The homing_controller node's parameters as it loads them.
+struct HomingNodeParams {
+  control::CommandPipelineParams pipeline;  ///< limits, safety, use_scan, avoidance/*
+  control::HomingControllerParams law;
+};
+
+/// The homing_controller node's parameters as the node loads them from the shipped files
+/// (`config_dir`/controller_common.yaml, then homing_controller.yaml, then each of
 /// `overlays` on top), strictly: an unknown key or a bad value throws ParamError naming
 /// it. The node-only keys (topics, rate, tag filter) are accepted and not used.
-control::HomingControllerParams loadHomingControllerParams(
-    const std::string& config_dir, const std::vector<std::string>& overlays = {});
+HomingNodeParams loadHomingNodeParams(const std::string& config_dir,
+                                      const std::vector<std::string>& overlays = {});
+
+/// Seed 000 Table 4's kind of world for one run: `count` obstacles (posts of radius
+/// 0.15-0.5 m and wall segments of 1-3 m) uniformly in the (-half_size, half_size)
+/// square, one of them across the straight line from `start` to `target`, none within
+/// `keep_clear` of either. Deterministic per seed.
+sim::Obstacles homingObstacleCourse(double start_x, double start_y, double target_x,
+                                    double target_y, int count, double half_size, double keep_clear,
+                                    std::uint64_t seed);
 
 /// A fresh control::HomingController (the homing_controller node's law) as a HomingStep.
 /// Each cycle feeds it the odometry pose, the distance as a UWB range and the bearing as
@@ -99,6 +130,8 @@ struct HomingSummary {
   double goal_error = 0.0;
   double final_error = 0.0;
   double path_efficiency = 0.0;
+  double min_clearance = 0.0;  ///< smallest over all runs, m
+  int collisions = 0;
 };
 HomingSummary summarize(const std::vector<HomingResult>& results);
 

@@ -9,6 +9,7 @@
 
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/control/homing_controller.hpp"
+#include "radio_follow/sim/obstacles.hpp"
 
 namespace radio_follow {
 namespace evaluation {
@@ -116,6 +117,50 @@ TEST(HomingTrial, HomingControllerReachesBeaconsInEveryQuadrantUnderTheWorstNois
   EXPECT_DOUBLE_EQ(s.success_rate, 1.0);
   EXPECT_LT(s.goal_error, 0.4);
   EXPECT_LT(s.final_error, 0.6);
+}
+
+TEST(HomingTrial, ShippedParametersLoadStrictly) {
+  const HomingNodeParams node = loadHomingNodeParams(RF_CONFIG_DIR);
+  EXPECT_EQ(node.law.homing.arrival_distance, 0.3);  // the paper's radius, the node's default
+  EXPECT_GT(node.pipeline.avoidance.stop_threshold, 0.0);
+}
+
+TEST(HomingTrial, ObstacleCourseBlocksTheDirectPathAndKeepsStartAndTargetClear) {
+  const sim::Obstacles a = homingObstacleCourse(0.0, 0.0, 6.0, 2.0, 8, 10.0, 1.0, 5);
+  const sim::Obstacles b = homingObstacleCourse(0.0, 0.0, 6.0, 2.0, 8, 10.0, 1.0, 5);
+  EXPECT_EQ(a.circles.size() + a.walls.size(), 8u);
+  EXPECT_EQ(a.circles.size(), b.circles.size());  // deterministic
+  EXPECT_GE(sim::clearance(a, 0.0, 0.0), 1.0);
+  EXPECT_GE(sim::clearance(a, 6.0, 2.0), 1.0);
+  // Something lies on the straight line: a ray from the start towards the target hits it
+  // before the target.
+  EXPECT_LT(sim::castRay(a, 0.0, 0.0, std::atan2(2.0, 6.0)), std::hypot(6.0, 2.0));
+}
+
+// A wall across the way: blind, the law drives into it; with the scan (seed 000 Appendix
+// B's rules, the node's avoidance/* defaults, a robot of the 0.2 m radius they leave room
+// for) it goes round and arrives.
+TEST(HomingTrial, ScanAvoidanceGoesRoundAWallThatStopsABlindRobot) {
+  const HomingNodeParams node = loadHomingNodeParams(RF_CONFIG_DIR);
+  control::HomingControllerParams params = node.law;
+  params.distance_source = "uwb";
+  params.homing.max_linear = 1.0;
+  HomingTrialConfig config;
+  config.robot.max_linear = 1.0;
+  config.avoidance = node.pipeline.avoidance;
+  config.obstacles.walls.push_back({3.0, -1.0, 3.0, 1.0});
+  const HomingNoise noise = seed000NoiseConfigurations()[0];
+  const HomingResult blind =
+      runHomingTrial(homingControllerStep(params), 6.0, 0.0, noise, config, 1);
+  EXPECT_TRUE(blind.collided);
+  EXPECT_FALSE(blind.success);
+  config.use_scan = true;
+  const HomingResult seeing =
+      runHomingTrial(homingControllerStep(params), 6.0, 0.0, noise, config, 1);
+  EXPECT_FALSE(seeing.collided);
+  EXPECT_TRUE(seeing.success);
+  EXPECT_GT(seeing.min_clearance, 0.0);
+  EXPECT_LT(seeing.final_error, 0.5);
 }
 
 }  // namespace
