@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/estimation/fisher.hpp"
@@ -375,6 +376,56 @@ SearchResult randomSearch(const PlacementProblem& problem, int samples, std::uin
   best.evaluations = static_cast<std::size_t>(samples);
   best.starts = static_cast<std::size_t>(samples);
   return best;
+}
+
+MinimumSensorsResult minimumSensors(const MountingRegion& region, const AdvisorConfig& advisor,
+                                    double limit, GrowSensors grow, bool greedy, int effort,
+                                    std::uint64_t seed) {
+  require(limit > 0.0, "--limit", limit, "a bound in metres > 0");
+  MinimumSensorsResult out;
+  const auto attempt = [&](int modules, int boards) -> std::optional<SearchResult> {
+    MountingRegion r = region;
+    r.twr_count = modules;
+    r.aoa_count = boards;
+    if (modules > 16 || boards > 16) {
+      return std::nullopt;
+    }
+    try {
+      const PlacementProblem p = buildPlacementProblem(r, advisor);
+      SearchResult s = greedy ? greedyRestarts(p, effort, seed) : randomSearch(p, effort, seed);
+      out.evaluations += s.evaluations;
+      return s;
+    } catch (const ParamError&) {
+      return std::nullopt;  // more sensors than candidates, or than the spacing lets fit
+    }
+  };
+  int modules = region.twr_count;
+  int boards = region.aoa_count;
+  std::optional<SearchResult> current = attempt(modules, boards);
+  while (current && current->score.objective > limit) {
+    std::optional<SearchResult> more_modules;
+    std::optional<SearchResult> more_boards;
+    if (grow != GrowSensors::kBoards) {
+      more_modules = attempt(modules + 1, boards);
+    }
+    if (grow != GrowSensors::kModules) {
+      more_boards = attempt(modules, boards + 1);
+    }
+    const bool take_boards =
+        more_boards && (!more_modules || betterScore(more_boards->score, more_modules->score));
+    if (!take_boards && !more_modules) {
+      break;
+    }
+    current = take_boards ? more_boards : more_modules;
+    (take_boards ? boards : modules) += 1;
+  }
+  if (current) {
+    out.search = *current;
+    out.reached = current->score.objective <= limit;
+  }
+  out.modules = modules;
+  out.boards = boards;
+  return out;
 }
 
 Layout placementLayout(const PlacementProblem& problem, const Placement& placement) {

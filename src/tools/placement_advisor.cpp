@@ -10,7 +10,8 @@
 //   placement_advisor --optimise REGION.yaml [--method exhaustive|greedy|random|all]
 //                     [--objective mean|p90|max|all] [--modules N] [--boards N]
 //                     [--restarts N] [--samples N] [--runs N] [--seed S]
-//                     [--max-combinations N] [--compare REFERENCE.yaml] ... --out DIR
+//                     [--max-combinations N] [--limit M [--grow modules|boards|both]]
+//                     [--compare REFERENCE.yaml] ... --out DIR
 //
 // Writes DIR/<layout>_map.csv and DIR/<layout>_summary.json per layout and prints the
 // summary; --plot runs the given plot script on them (DIR/<layout>[_vs_<other>].png).
@@ -59,6 +60,9 @@ struct OptimiseOptions {
   int runs = 1;
   std::uint64_t seed = 1;
   double max_combinations = 2e6;
+  std::optional<double> limit;  ///< m: find the fewest sensors reaching it
+  est::GrowSensors grow = est::GrowSensors::kBoth;
+  std::string grow_text = "both";
 };
 
 struct Options {
@@ -83,7 +87,8 @@ const char* kUsage =
     "       placement_advisor --optimise REGION.yaml [--method exhaustive|greedy|random|all\n"
     "         (greedy)] [--objective mean|p90|max|all (the region's)] [--modules N]\n"
     "         [--boards N] [--restarts N (20)] [--samples N (2000)] [--runs N (1)]\n"
-    "         [--seed S (1)] [--max-combinations N (2e6)] [--compare REFERENCE.yaml]\n"
+    "         [--seed S (1)] [--max-combinations N (2e6)] [--limit M]\n"
+    "         [--grow modules|boards|both (both)] [--compare REFERENCE.yaml]\n"
     "         [--3d] [--plot PLOT_SCRIPT.py] --out DIR\n";
 
 std::string csvNumber(double value);
@@ -164,6 +169,15 @@ Options parse(int argc, char** argv) {
       o.runs = count(key, value(), 1, 1000);
     } else if (key == "--seed") {
       o.seed = static_cast<std::uint64_t>(count(key, value(), 0, 1e9));
+    } else if (key == "--limit") {
+      o.limit = number(key, value());
+    } else if (key == "--grow") {
+      o.grow_text = value();
+      rf::require(o.grow_text == "modules" || o.grow_text == "boards" || o.grow_text == "both", key,
+                  o.grow_text, "modules, boards or both");
+      o.grow = o.grow_text == "modules"  ? est::GrowSensors::kModules
+               : o.grow_text == "boards" ? est::GrowSensors::kBoards
+                                         : est::GrowSensors::kBoth;
     } else if (key == "--max-combinations") {
       o.max_combinations = number(key, value());
     } else if (!key.empty() && key[0] != '-' && opt.layout.empty()) {
@@ -380,23 +394,18 @@ void printRows(const std::vector<SearchRow>& rows, const est::PlacementProblem& 
   std::printf("\n");
 }
 
-/// --optimise: runs the searches, prints them, writes the best layout and returns its path.
-std::string optimise(Options& opt, const fs::path& out) {
-  const OptimiseOptions& o = *opt.optimise;
-  est::MountingRegion region = est::loadMountingRegionFile(o.region);
-  region.twr_count = o.modules.value_or(region.twr_count);
-  region.aoa_count = o.boards.value_or(region.aoa_count);
-  opt.config.target_height = region.target.height;  // the maps show the searched height
-  est::PlacementProblem problem = est::buildPlacementProblem(region, opt.config);
-  std::printf(
-      "== optimise %s: %d TWR modules among %zu candidates, %d AoA boards among %zu, "
-      "%zu target points (%s bound), %.4g combinations\n",
-      region.name.c_str(), region.twr_count, problem.modules.size(), region.aoa_count,
-      problem.boards.size(), problem.targets.size(), opt.config.planar ? "2D" : "3D",
-      est::combinationCount(problem));
+/// The layout --optimise writes and the line saying how it was found.
+struct Chosen {
+  est::PlacementProblem problem;  ///< with the counts of the placement
+  est::Placement placement;
+  std::string how;
+};
+
+/// The method table (Tables 5.1 and the search comparison): every objective x method x run.
+Chosen searchTable(est::PlacementProblem problem, const OptimiseOptions& o) {
+  const std::string own = est::toString(problem.region.objective);
   const std::vector<std::string> objectives =
-      o.objectives.empty() ? std::vector<std::string>{est::toString(region.objective)}
-                           : o.objectives;
+      o.objectives.empty() ? std::vector<std::string>{own} : o.objectives;
   std::vector<SearchRow> rows;
   for (const std::string& objective : objectives) {
     problem.region.objective = est::parsePlacementObjective(objective, "--objective");
@@ -416,10 +425,8 @@ std::string optimise(Options& opt, const fs::path& out) {
   }
   printRows(rows, problem);
   // The layout written: the best for the region's objective (or the first one searched).
-  const std::string wanted = std::find(objectives.begin(), objectives.end(),
-                                       est::toString(region.objective)) != objectives.end()
-                                 ? est::toString(region.objective)
-                                 : objectives.front();
+  const bool listed = std::find(objectives.begin(), objectives.end(), own) != objectives.end();
+  const std::string wanted = listed ? own : objectives.front();
   const SearchRow* best = nullptr;
   for (const SearchRow& row : rows) {
     if (!row.refused && row.objective == wanted &&
@@ -427,16 +434,85 @@ std::string optimise(Options& opt, const fs::path& out) {
       best = &row;
     }
   }
-  char summary[200];
-  std::snprintf(summary, sizeof(summary), "%s search, %s of sqrt(trace CRLB) = %.4f m over %zu",
-                best->method.c_str(), wanted.c_str(), best->result.score.objective,
-                problem.targets.size());
-  const rf::Layout layout = est::placementLayout(problem, best->result.best);
+  problem.region.objective = est::parsePlacementObjective(wanted, "--objective");
+  char how[200];
+  std::snprintf(how, sizeof(how), "%s search, %s of sqrt(trace CRLB) = %.4f m",
+                best->method.c_str(), wanted.c_str(), best->result.score.objective);
+  return {problem, best->result.best, how};
+}
+
+/// --limit (Tables 5.2 and 5.3): the fewest sensors reaching the limit, one row per run.
+Chosen limitTable(const est::PlacementProblem& problem, const OptimiseOptions& o) {
+  const bool greedy = o.methods.front() == "greedy";
+  rf::require(o.methods.size() == 1 && o.methods.front() != "exhaustive", "--method",
+              o.methods.front(), "greedy or random with --limit");
+  std::printf(
+      "\n| run | seed | grow | modules | boards | total | reached | mean (m) | p90 (m) | max (m) "
+      "| evaluations | time (ms) | sensors "
+      "|\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::optional<Chosen> chosen;
+  int fewest = 0;
+  double best_objective = 0.0;
+  for (int run = 0; run < o.runs; ++run) {
+    const std::uint64_t seed = o.seed + static_cast<std::uint64_t>(run);
+    const auto start = std::chrono::steady_clock::now();
+    const est::MinimumSensorsResult r =
+        est::minimumSensors(problem.region, problem.advisor, *o.limit, o.grow, greedy,
+                            greedy ? o.restarts : o.samples, seed);
+    const double ms =
+        1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    est::MountingRegion region = problem.region;
+    region.twr_count = r.modules;
+    region.aoa_count = r.boards;
+    const est::PlacementProblem sized = est::buildPlacementProblem(region, problem.advisor);
+    const auto& s = r.search.score;
+    std::printf("| %d | %llu | %s | %d | %d | %d | %s | %s | %s | %s | %zu | %.1f | %s |\n",
+                run + 1, static_cast<unsigned long long>(seed), o.grow_text.c_str(), r.modules,
+                r.boards, r.modules + r.boards, r.reached ? "yes" : "no", cell(s.mean).c_str(),
+                cell(s.p90).c_str(), cell(s.max).c_str(), r.evaluations, ms,
+                sensorList(sized, r.search.best).c_str());
+    const int total = r.modules + r.boards;
+    if (r.reached &&
+        (!chosen || total < fewest || (total == fewest && s.objective < best_objective))) {
+      char how[200];
+      std::snprintf(how, sizeof(how),
+                    "fewest sensors with %s <= %.3f m: %s of sqrt(trace CRLB) = %.4f m",
+                    est::toString(region.objective).c_str(), *o.limit,
+                    est::toString(region.objective).c_str(), s.objective);
+      chosen = Chosen{sized, r.search.best, how};
+      fewest = total;
+      best_objective = s.objective;
+    }
+  }
+  std::printf("\n");
+  if (!chosen) {
+    throw std::runtime_error("no run reached the limit: raise --limit or allow more sensors");
+  }
+  return *chosen;
+}
+
+/// --optimise: runs the searches, prints them, writes the best layout and returns its path.
+std::string optimise(Options& opt, const fs::path& out) {
+  const OptimiseOptions& o = *opt.optimise;
+  est::MountingRegion region = est::loadMountingRegionFile(o.region);
+  region.twr_count = o.modules.value_or(region.twr_count);
+  region.aoa_count = o.boards.value_or(region.aoa_count);
+  opt.config.target_height = region.target.height;  // the maps show the searched height
+  const est::PlacementProblem problem = est::buildPlacementProblem(region, opt.config);
+  std::printf(
+      "== optimise %s: %d TWR modules among %zu candidates, %d AoA boards among %zu, "
+      "%zu target points (%s bound), %.4g combinations\n",
+      region.name.c_str(), region.twr_count, problem.modules.size(), region.aoa_count,
+      problem.boards.size(), problem.targets.size(), opt.config.planar ? "2D" : "3D",
+      est::combinationCount(problem));
+  const Chosen chosen = o.limit ? limitTable(problem, o) : searchTable(problem, o);
+  const rf::Layout layout = est::placementLayout(chosen.problem, chosen.placement);
   const fs::path path = out / (region.name + "_optimised.yaml");
   std::ofstream file(path);
   file << rf::writeLayout(
       layout, {"Written by placement_advisor --optimise " + o.region + ":",
-               std::string(summary) + " target points (doc/placement_advisor.md).",
+               chosen.how + " over " + std::to_string(problem.targets.size()) +
+                   " target points (doc/placement_advisor.md).",
                "Module IDs 0001.. are placeholders for your modules' IDs; the calibrations are",
                "identity until calibrate_layout fits them (doc/calibration.md)."});
   if (!file) {

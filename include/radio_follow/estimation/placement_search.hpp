@@ -104,6 +104,25 @@ SearchResult greedyRestarts(const PlacementProblem& problem, int restarts, std::
 /// the best kept. Deterministic for a seed.
 SearchResult randomSearch(const PlacementProblem& problem, int samples, std::uint64_t seed);
 
+/// Which sensor count minimumSensors raises when the limit is not met.
+enum class GrowSensors { kModules, kBoards, kBoth };
+
+/// Seed 004's Algorithm 3 loop around a search: the fewest sensors that reach
+/// objective <= limit. Starting from the region's counts, `search` (randomSearch or
+/// greedyRestarts with `effort` samples or starts, seeded `seed`) is run; while the best
+/// objective exceeds `limit` one sensor is added (kBoth: whichever of +1 module and
+/// +1 board reaches the smaller objective), until a count exceeds its candidates or 16.
+struct MinimumSensorsResult {
+  bool reached = false;  ///< false: the counts ran out first (the last search is kept)
+  int modules = 0;
+  int boards = 0;
+  SearchResult search;          ///< the last (successful) search
+  std::size_t evaluations = 0;  ///< summed over every count tried
+};
+MinimumSensorsResult minimumSensors(const MountingRegion& region, const AdvisorConfig& advisor,
+                                    double limit, GrowSensors grow, bool greedy, int effort,
+                                    std::uint64_t seed);
+
 /// The placement as a layout the locator loads: modules "0001".. (replace with the real
 /// module IDs) with identity calibrations, boards "aoa1".. facing their candidate's yaw.
 Layout placementLayout(const PlacementProblem& problem, const Placement& placement);
