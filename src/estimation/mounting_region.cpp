@@ -133,6 +133,8 @@ void MountingRegion::validate() const {
   require(std::isfinite(twr_height), "twr_modules.height", twr_height, "a finite height in m");
   require(std::isfinite(twr_min_spacing) && twr_min_spacing >= 0.0, "twr_modules.min_spacing",
           twr_min_spacing, "a distance >= 0 m");
+  require(std::isfinite(twr_min_off_line) && twr_min_off_line >= 0.0, "twr_modules.min_off_line",
+          twr_min_off_line, "a distance >= 0 m");
   require(std::isfinite(aoa_height), "aoa_boards.height", aoa_height, "a finite height in m");
   require(std::isfinite(aoa_min_spacing) && aoa_min_spacing >= 0.0, "aoa_boards.min_spacing",
           aoa_min_spacing, "a distance >= 0 m");
@@ -190,11 +192,13 @@ MountingRegion parseMountingRegion(const std::string& yaml_text, const std::stri
 
   const YAML::Node twr = root["twr_modules"];
   if (twr.IsDefined() && !twr.IsNull()) {
-    requireYamlKeys(twr, {"count", "height", "min_spacing"}, "twr_modules.");
+    requireYamlKeys(twr, {"count", "height", "min_spacing", "min_off_line"}, "twr_modules.");
     r.twr_count = yamlScalar<int>(twr, "count", "twr_modules.", "a whole number", &r.twr_count);
     r.twr_height = yamlScalar<double>(twr, "height", "twr_modules.", "metres", &r.twr_height);
     r.twr_min_spacing =
         yamlScalar<double>(twr, "min_spacing", "twr_modules.", "metres", &r.twr_min_spacing);
+    r.twr_min_off_line =
+        yamlScalar<double>(twr, "min_off_line", "twr_modules.", "metres", &r.twr_min_off_line);
   }
   const YAML::Node aoa = root["aoa_boards"];
   if (aoa.IsDefined() && !aoa.IsNull()) {

@@ -89,6 +89,29 @@ bool spaced(const std::vector<MountCandidate>& candidates, const std::vector<int
   });
 }
 
+/// The modules' rms distance from their best-fit line in the xy-plane: the square root of
+/// the smaller eigenvalue of their covariance.
+double offLineRms(const std::vector<MountCandidate>& candidates, const std::vector<int>& chosen) {
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  for (const int c : chosen) {
+    mean += candidates[static_cast<std::size_t>(c)].position.head<2>();
+  }
+  mean /= static_cast<double>(chosen.size());
+  Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
+  for (const int c : chosen) {
+    const Eigen::Vector2d d = candidates[static_cast<std::size_t>(c)].position.head<2>() - mean;
+    cov += d * d.transpose() / static_cast<double>(chosen.size());
+  }
+  const double half_trace = 0.5 * cov.trace();
+  const double disc = std::sqrt(std::max(0.0, half_trace * half_trace - cov.determinant()));
+  return std::sqrt(std::max(0.0, half_trace - disc));
+}
+
+/// The mounting rule the spacings do not cover: 3 or more modules not in one line.
+bool spreadOffLine(const PlacementProblem& p, const std::vector<int>& modules) {
+  return modules.size() < 3 || offLineRms(p.modules, modules) >= p.region.twr_min_off_line - 1e-12;
+}
+
 std::vector<Eigen::Matrix3d> sensorTable(const PlacementProblem& p,
                                          const std::vector<MountCandidate>& candidates,
                                          bool boards) {
@@ -136,6 +159,9 @@ class Enumerator {
   void visit(int level) {
     const std::size_t targets = p_.targets.size();
     if (level == slots_) {
+      if (!spreadOffLine(p_, current_.modules)) {
+        return;
+      }
       ++result_.evaluations;
       const PlacementScore s = scoreFromInformation(p_, sums_[static_cast<std::size_t>(level)]);
       if (result_.evaluations == 1 || betterScore(s, result_.score)) {
@@ -240,7 +266,8 @@ bool feasiblePlacement(const PlacementProblem& problem, const Placement& placeme
   };
   const MountingRegion& r = problem.region;
   return group_ok(problem.modules, placement.modules, r.twr_count, r.twr_min_spacing) &&
-         group_ok(problem.boards, placement.boards, r.aoa_count, r.aoa_min_spacing);
+         group_ok(problem.boards, placement.boards, r.aoa_count, r.aoa_min_spacing) &&
+         spreadOffLine(problem, placement.modules);
 }
 
 double combinationCount(const PlacementProblem& problem) {
@@ -337,12 +364,14 @@ Placement randomPlacement(const PlacementProblem& problem, std::mt19937_64& rng)
   Placement p;
   for (int attempt = 0; attempt < 1000; ++attempt) {
     if (draw(problem.modules, region.twr_count, region.twr_min_spacing, p.modules) &&
-        draw(problem.boards, region.aoa_count, region.aoa_min_spacing, p.boards)) {
+        draw(problem.boards, region.aoa_count, region.aoa_min_spacing, p.boards) &&
+        spreadOffLine(problem, p.modules)) {
       return p;
     }
   }
   throw ParamError("twr_modules.min_spacing", paramValueString(region.twr_min_spacing),
-                   "spacings the region can hold: 1000 random draws found no feasible placement");
+                   "spacings the region can hold: 1000 random draws found no feasible placement "
+                   "(min_spacing apart, min_off_line off one line)");
 }
 
 SearchResult greedyRestarts(const PlacementProblem& problem, int restarts, std::uint64_t seed) {

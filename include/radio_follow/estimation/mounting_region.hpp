@@ -58,6 +58,10 @@ struct MountingRegion {
   int twr_count = 3;
   double twr_height = 0.1;       ///< m, module antenna height in base_link
   double twr_min_spacing = 0.3;  ///< m between any two modules
+  /// m: with 3 or more modules, their rms distance from their best-fit line in the ground
+  /// plane is at least this. The CRLB is a local bound and misses the mirror image ranges
+  /// from modules in one line allow (CTU thesis Section 3.3: not mounted in one line).
+  double twr_min_off_line = 0.05;
 
   int aoa_count = 0;
   double aoa_height = 0.25;       ///< m, board centre height

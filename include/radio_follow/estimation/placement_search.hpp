@@ -60,7 +60,7 @@ bool betterScore(const PlacementScore& a, const PlacementScore& b);
 PlacementScore scorePlacement(const PlacementProblem& problem, const Placement& placement);
 
 /// True when the placement has the region's counts, valid distinct indices and respects
-/// the minimum spacings.
+/// the mounting rules: the minimum spacings and, with 3 or more modules, twr_min_off_line.
 bool feasiblePlacement(const PlacementProblem& problem, const Placement& placement);
 
 /// Result of a search: the best placement found and the work spent.

@@ -151,6 +151,23 @@ TEST(PlacementSearch, GreedyAndRandomNeverBeatTheExhaustiveOptimum) {
   EXPECT_EQ(greedyRestarts(p, 5, 3).best.modules, greedyRestarts(p, 5, 3).best.modules);
 }
 
+TEST(PlacementSearch, ModulesInOneLineAreNotAPlacement) {
+  MountingRegion region = square();
+  region.twr_count = 3;
+  region.twr_min_off_line = 1e-6;  // exactly in one line only
+  PlacementProblem p = buildPlacementProblem(region, AdvisorConfig{});
+  // Candidates row by row from (-0.2, -0.2): 0, 4, 8 is the diagonal, 0, 1, 3 a triangle.
+  EXPECT_FALSE(feasiblePlacement(p, Placement{{0, 4, 8}, {}}));
+  EXPECT_TRUE(feasiblePlacement(p, Placement{{0, 1, 3}, {}}));
+  const SearchResult r = exhaustiveSearch(p, 1e6);
+  EXPECT_TRUE(feasiblePlacement(p, r.best));
+  EXPECT_EQ(r.evaluations, 76u);  // C(9, 3) less the 8 lines of three
+  // The default rule also drops flat triangles (rms off their line < 5 cm).
+  p.region.twr_min_off_line = 0.05;
+  EXPECT_LT(exhaustiveSearch(p, 1e6).evaluations, 76u);
+  EXPECT_FALSE(feasiblePlacement(p, Placement{{0, 4, 5}, {}}));  // 4.2 cm off their line
+}
+
 TEST(PlacementSearch, KeepOutZonesHoldNoSensor) {
   MountingRegion region = square();
   region.grid_spacing = 0.1;
