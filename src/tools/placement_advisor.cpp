@@ -503,6 +503,11 @@ std::string optimise(Options& opt, const fs::path& out) {
   est::MountingRegion region = est::loadMountingRegionFile(o.region);
   region.twr_count = o.modules.value_or(region.twr_count);
   region.aoa_count = o.boards.value_or(region.aoa_count);
+  if (o.objectives.size() == 1) {
+    region.objective = est::parsePlacementObjective(o.objectives.front(), "--objective");
+  }
+  rf::require(!o.limit || o.objectives.size() <= 1, "--objective", std::string("all"),
+              "one objective with --limit");
   opt.config.target_height = region.target.height;  // the maps show the searched height
   const est::PlacementProblem problem = est::buildPlacementProblem(region, opt.config);
   std::printf(
