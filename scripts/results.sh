@@ -192,6 +192,29 @@ if wanted placement; then
   shown 'rosrun radio_follow placement_advisor config/layouts/spot_twr.yaml --compare config/layouts/spot.yaml --out /tmp/advisor'
   "$bin/placement_advisor" config/layouts/spot_twr.yaml --compare config/layouts/spot.yaml \
     --out "$tmp/compare" | grep 'median bound ratio'
+  # The optimiser (doc/placement_advisor.md#optimisation): its Markdown tables, the ratio of
+  # the reference's median bound to the optimised layout's, and the bound along a walk.
+  optimise() {
+    shown "rosrun radio_follow placement_advisor --optimise $* --out /tmp/opt"
+    "$bin/placement_advisor" --optimise "$@" --out "$tmp/opt" 2>&1 | grep -E '^\||refused|median bound ratio|no run reached'
+    echo
+  }
+  heading "Placement optimiser: the objective (seed 004 Table 5.1)"
+  optimise config/placement/spot_region.yaml --boards 0 --method exhaustive --objective all --compare config/layouts/spot_twr.yaml
+  heading "Placement optimiser: exhaustive, greedy and random search"
+  optimise config/placement/tracked_region.yaml --boards 0 --method all --runs 3 --max-combinations 2e7 --compare config/layouts/tracked.yaml
+  heading "Placement optimiser: fewest sensors for a limit (seed 004 Tables 5.2 and 5.3)"
+  optimise config/placement/tracked_region.yaml --modules 3 --boards 0 --grow modules --limit 0.35 --method random --samples 500 --runs 5
+  optimise config/placement/tracked_region.yaml --modules 0 --boards 1 --grow boards --limit 0.35 --method random --samples 500 --runs 5
+  optimise config/placement/tracked_region.yaml --modules 1 --boards 1 --grow both --limit 0.15 --method random --samples 500 --runs 10
+  heading "Placement optimiser: the shipped robots' regions against their layouts"
+  for robot in spot tracked; do
+    optimise "config/placement/${robot}_region.yaml" --method all --compare "config/layouts/$robot.yaml"
+    cp "$tmp/opt/${robot}_optimised.yaml" "$tmp/${robot}_optimised.yaml"
+  done
+  shown '"$RF_WS"/devel/lib/radio_follow/locator_pcrb --layouts spot,/tmp/opt/spot_optimised.yaml,tracked,/tmp/opt/tracked_optimised.yaml --paths straight,arc --runs 20'
+  "$bin/locator_pcrb" --layouts "spot,$tmp/spot_optimised.yaml,tracked,$tmp/tracked_optimised.yaml" \
+    --paths straight,arc --runs 20
 fi
 
 if wanted offline; then

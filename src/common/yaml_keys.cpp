@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/common/yaml_keys.hpp"
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -41,6 +42,26 @@ YAML::Node loadConfigYaml(const std::string& text, const std::string& name,
 
 std::string yamlValueString(const YAML::Node& node) {
   return !node.IsDefined() || node.IsNull() ? "(missing)" : flow(node);
+}
+
+std::vector<double> yamlNumbers(const YAML::Node& node, const std::string& name,
+                                const std::string& expected) {
+  // A missing key of a const node is an invalid ("zombie") node: test IsDefined first.
+  if (!node.IsDefined() || !node.IsSequence()) {
+    throw ParamError(name, yamlValueString(node), expected);
+  }
+  std::vector<double> values;
+  for (const auto& item : node) {
+    try {
+      values.push_back(item.as<double>());
+    } catch (const YAML::Exception&) {
+      throw ParamError(name, yamlValueString(node), expected);
+    }
+    if (!std::isfinite(values.back())) {
+      throw ParamError(name, yamlValueString(node), expected);
+    }
+  }
+  return values;
 }
 
 void requireYamlKeys(const YAML::Node& map, const std::set<std::string>& allowed,

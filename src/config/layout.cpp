@@ -25,49 +25,10 @@ std::string describe(const YAML::Node& node) {
   return yamlValueString(node);
 }
 
-/// Reads a scalar of type T, throwing ParamError with the field's path when absent
-/// (unless a default is given) or of the wrong type.
-template <typename T>
-T readScalar(const YAML::Node& parent, const std::string& key, const std::string& path,
-             const std::string& expected, const T* fallback = nullptr) {
-  const YAML::Node node = parent[key];
-  if (!node.IsDefined() || node.IsNull()) {
-    if (fallback != nullptr) {
-      return *fallback;
-    }
-    throw ParamError(path + key, "(missing)", expected);
-  }
-  try {
-    return node.as<T>();
-  } catch (const YAML::Exception&) {
-    throw ParamError(path + key, describe(node), expected);
-  }
-}
-
-std::vector<double> readNumbers(const YAML::Node& node, const std::string& name,
-                                const std::string& expected) {
-  // A missing key of a const node is an invalid ("zombie") node: test IsDefined first.
-  if (!node.IsDefined() || !node.IsSequence()) {
-    throw ParamError(name, describe(node), expected);
-  }
-  std::vector<double> values;
-  for (const auto& item : node) {
-    try {
-      values.push_back(item.as<double>());
-    } catch (const YAML::Exception&) {
-      throw ParamError(name, describe(node), expected);
-    }
-    if (!std::isfinite(values.back())) {
-      throw ParamError(name, describe(node), expected);
-    }
-  }
-  return values;
-}
-
 Eigen::Vector3d readVector3(const YAML::Node& parent, const std::string& key,
                             const std::string& path, const std::string& unit) {
   const std::string expected = "a list of 3 finite numbers [x, y, z] in " + unit;
-  const std::vector<double> v = readNumbers(parent[key], path + key, expected);
+  const std::vector<double> v = yamlNumbers(parent[key], path + key, expected);
   if (v.size() != 3) {
     throw ParamError(path + key, describe(parent[key]), expected);
   }
@@ -242,15 +203,15 @@ Layout parseLayout(const std::string& yaml_text, const std::string& origin) {
   Layout layout;
   const std::string default_frame = layout.fixed_frame;
   layout.fixed_frame =
-      readScalar<std::string>(root, "fixed_frame", "", "a TF frame name", &default_frame);
+      yamlScalar<std::string>(root, "fixed_frame", "", "a TF frame name", &default_frame);
   const YAML::Node target = root["target"];
   if (target.IsDefined() && !target.IsNull()) {
     requireYamlKeys(target, {"uwb_anchor_id", "aoa_tag_id"}, "target.");
     const std::string empty;
     layout.target_anchor_id = normalizeId(
-        readScalar<std::string>(target, "uwb_anchor_id", "target.", "an anchor ID", &empty));
+        yamlScalar<std::string>(target, "uwb_anchor_id", "target.", "an anchor ID", &empty));
     layout.target_tag_id =
-        normalizeId(readScalar<std::string>(target, "aoa_tag_id", "target.", "a tag ID", &empty));
+        normalizeId(yamlScalar<std::string>(target, "aoa_tag_id", "target.", "a tag ID", &empty));
   }
 
   const YAML::Node twr = root["twr_modules"];
@@ -258,13 +219,13 @@ Layout parseLayout(const std::string& yaml_text, const std::string& origin) {
     const std::string path = itemPath("twr_modules", i);
     requireYamlKeys(twr[i], {"id", "frame_id", "position", "calibration"}, path);
     TwrModule m;
-    m.id = normalizeId(readScalar<std::string>(twr[i], "id", path, "a module ID string"));
+    m.id = normalizeId(yamlScalar<std::string>(twr[i], "id", path, "a module ID string"));
     const std::string default_frame_id = "uwb_" + m.id;
     m.frame_id =
-        readScalar<std::string>(twr[i], "frame_id", path, "a TF frame name", &default_frame_id);
+        yamlScalar<std::string>(twr[i], "frame_id", path, "a TF frame name", &default_frame_id);
     m.position = readVector3(twr[i], "position", path, "metres");
     if (twr[i]["calibration"].IsDefined()) {
-      m.calibration = readNumbers(twr[i]["calibration"], path + "calibration",
+      m.calibration = yamlNumbers(twr[i]["calibration"], path + "calibration",
                                   "a list of polynomial coefficients [c0, c1, ...]");
     }
     layout.twr_modules.push_back(m);
@@ -276,12 +237,12 @@ Layout parseLayout(const std::string& yaml_text, const std::string& origin) {
     requireYamlKeys(aoa[i], {"id", "frame_id", "kind", "position", "rpy_deg", "field_of_view_deg"},
                     path);
     AoaBoard b;
-    b.id = readScalar<std::string>(aoa[i], "id", path, "a board name");
+    b.id = yamlScalar<std::string>(aoa[i], "id", path, "a board name");
     const std::string default_frame_id = "aoa_" + b.id;
     b.frame_id =
-        readScalar<std::string>(aoa[i], "frame_id", path, "a TF frame name", &default_frame_id);
+        yamlScalar<std::string>(aoa[i], "frame_id", path, "a TF frame name", &default_frame_id);
     const std::string default_kind = "xplr_aoa_1";
-    b.kind = parseKind(readScalar<std::string>(aoa[i], "kind", path, "a board kind", &default_kind),
+    b.kind = parseKind(yamlScalar<std::string>(aoa[i], "kind", path, "a board kind", &default_kind),
                        path + "kind");
     b.position = readVector3(aoa[i], "position", path, "metres");
     if (aoa[i]["rpy_deg"].IsDefined()) {
@@ -291,7 +252,7 @@ Layout parseLayout(const std::string& yaml_text, const std::string& origin) {
                       Eigen::AngleAxisd(rpy.x(), Eigen::Vector3d::UnitX());
     }
     const double default_fov = rad2deg(b.field_of_view);
-    b.field_of_view = deg2rad(readScalar<double>(aoa[i], "field_of_view_deg", path,
+    b.field_of_view = deg2rad(yamlScalar<double>(aoa[i], "field_of_view_deg", path,
                                                  "a half-angle in degrees", &default_fov));
     layout.aoa_boards.push_back(b);
   }
@@ -301,7 +262,7 @@ Layout parseLayout(const std::string& yaml_text, const std::string& origin) {
     const std::string path = itemPath("tdoa_anchors", i);
     requireYamlKeys(tdoa[i], {"id", "position"}, path);
     TdoaAnchor a;
-    a.id = normalizeId(readScalar<std::string>(tdoa[i], "id", path, "an anchor ID string"));
+    a.id = normalizeId(yamlScalar<std::string>(tdoa[i], "id", path, "an anchor ID string"));
     a.position = readVector3(tdoa[i], "position", path, "metres");
     layout.tdoa_anchors.push_back(a);
   }

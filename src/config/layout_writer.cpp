@@ -4,6 +4,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <sstream>
@@ -94,8 +95,74 @@ Eigen::Vector3d rpyWithYawOffset(const Eigen::Vector3d& rpy_deg, double yaw_offs
     return {rpy_deg.x(), rpy_deg.y(),
             wrapDegrees(rpy_deg.z() + rad2deg(z.z() > 0.0 ? yaw_offset : -yaw_offset))};
   }
-  return {rad2deg(std::atan2(r(2, 1), r(2, 2))), rad2deg(std::asin(-r(2, 0))),
+  return rpyDegrees(r);
+}
+
+Eigen::Vector3d rpyDegrees(const Eigen::Matrix3d& r) {
+  return {rad2deg(std::atan2(r(2, 1), r(2, 2))),
+          rad2deg(std::asin(std::clamp(-r(2, 0), -1.0, 1.0))),
           rad2deg(std::atan2(r(1, 0), r(0, 0)))};
+}
+
+std::string writeLayout(const Layout& layout, const std::vector<std::string>& header_comment) {
+  layout.validate();
+  const auto vector = [](const Eigen::Vector3d& v) { return flowNumbers({v.x(), v.y(), v.z()}); };
+  YAML::Emitter out;
+  out.SetIndent(2);
+  out << YAML::BeginMap << YAML::Key << "fixed_frame" << YAML::Value << layout.fixed_frame;
+  out << YAML::Key << "target" << YAML::Value << YAML::BeginMap;
+  out << YAML::Key << "uwb_anchor_id" << YAML::Value << YAML::DoubleQuoted
+      << layout.target_anchor_id;
+  out << YAML::Key << "aoa_tag_id" << YAML::Value << YAML::DoubleQuoted << layout.target_tag_id;
+  out << YAML::EndMap;
+  // Empty lists are left out (the keys are optional): yaml-cpp writes them as a lone "[]".
+  if (!layout.twr_modules.empty()) {
+    out << YAML::Key << "twr_modules" << YAML::Value << YAML::BeginSeq;
+    for (const TwrModule& m : layout.twr_modules) {
+      out << YAML::Flow << YAML::BeginMap;
+      // Quoted: a module ID such as "0001" written bare is an integer to other YAML readers.
+      out << YAML::Key << "id" << YAML::Value << YAML::DoubleQuoted << m.id;
+      out << YAML::Key << "frame_id" << YAML::Value << m.frame_id;
+      out << YAML::Key << "position" << YAML::Value << vector(m.position);
+      out << YAML::Key << "calibration" << YAML::Value << flowNumbers(m.calibration);
+      out << YAML::EndMap;
+    }
+    out << YAML::EndSeq;
+  }
+  if (!layout.aoa_boards.empty()) {
+    out << YAML::Key << "aoa_boards" << YAML::Value << YAML::BeginSeq;
+    for (const AoaBoard& b : layout.aoa_boards) {
+      out << YAML::Flow << YAML::BeginMap;
+      out << YAML::Key << "id" << YAML::Value << b.id;
+      out << YAML::Key << "frame_id" << YAML::Value << b.frame_id;
+      out << YAML::Key << "kind" << YAML::Value << toString(b.kind);
+      out << YAML::Key << "position" << YAML::Value << vector(b.position);
+      out << YAML::Key << "rpy_deg" << YAML::Value
+          << vector(rpyDegrees(b.orientation.toRotationMatrix()));
+      out << YAML::Key << "field_of_view_deg" << YAML::Value
+          << flowNumbers({rad2deg(b.field_of_view)})[0];
+      out << YAML::EndMap;
+    }
+    out << YAML::EndSeq;
+  }
+  if (!layout.tdoa_anchors.empty()) {
+    out << YAML::Key << "tdoa_anchors" << YAML::Value << YAML::BeginSeq;
+    for (const TdoaAnchor& a : layout.tdoa_anchors) {
+      out << YAML::Flow << YAML::BeginMap;
+      out << YAML::Key << "id" << YAML::Value << YAML::DoubleQuoted << a.id;
+      out << YAML::Key << "position" << YAML::Value << vector(a.position);
+      out << YAML::EndMap;
+    }
+    out << YAML::EndSeq;
+  }
+  out << YAML::EndMap;
+  std::string text;
+  for (const std::string& line : header_comment) {
+    text += "# " + line + "\n";
+  }
+  text += std::string(out.c_str()) + "\n";
+  parseLayout(text, "written layout");
+  return text;
 }
 
 std::string writeCalibratedLayout(const std::string& yaml_text, const std::string& origin,

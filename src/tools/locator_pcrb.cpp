@@ -6,11 +6,14 @@
 // shipped locator (config/locator.yaml: the particle estimator; second row: `estimator:
 // solver`) is compared with the posterior Cramer-Rao bound of the same measurements, over
 // many Monte Carlo runs. Deterministic: same seed, same table. Prints Markdown.
-//   locator_pcrb [--layouts spot,cube,tracked] [--paths straight,arc,model] [--runs 100] [--seed 1]
+// A --layouts item ending in .yaml is a layout file (e.g. placement_advisor --optimise's
+// output), run with the shipped simulator and locator files, named by its file's stem.
+//   locator_pcrb [--layouts spot,cube,tracked,FILE.yaml] [--paths straight,arc,model] [--runs 100] [--seed 1]
 //                [--locator-overrides FILE] [--config-dir DIR]
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <filesystem>
 #include <map>
 #include <sstream>
 #include <string>
@@ -18,14 +21,17 @@
 
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/common/tool_options.hpp"
+#include "radio_follow/config/layout.hpp"
 #include "radio_follow/evaluation/closed_loop.hpp"
 #include "radio_follow/evaluation/walking_pcrb.hpp"
 
 namespace {
 
+namespace fs = std::filesystem;
+
 int usage(const std::string& problem) {
   std::fprintf(stderr,
-               "locator_pcrb: %s\nusage: locator_pcrb [--layouts L1,L2] [--paths P1,P2] [--runs N] "
+               "locator_pcrb: %s\nusage: locator_pcrb [--layouts L1,FILE.yaml] [--paths P1,P2] [--runs N] "
                "[--seed S] "
                "[--locator-overrides FILE] [--config-dir DIR]\n",
                problem.c_str());
@@ -67,11 +73,19 @@ int main(int argc, char** argv) {
         "| RMSE / PCRB | PCRB, FOV bearings only (m) | RMSE / that | along-track mean (m) | "
         "across mean (m) | median error (m) | runs > 1 m |\n");
     std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
-    for (const std::string& layout : split(options["--layouts"])) {
-      // The lockstep loop's loader: the shipped simulator and locator files.
-      const ev::ClosedLoopConfig c = ev::loadClosedLoopConfig(
-          options["--config-dir"], layout, "outdoor_loop", ev::FollowController::kVelocity, 1, "",
-          options["--locator-overrides"], rf::sim::SensorProfile::kIdeal);
+    for (const std::string& item : split(options["--layouts"])) {
+      // A shipped layout's name, or a layout file (e.g. placement_advisor --optimise's).
+      const bool file = fs::path(item).extension() == ".yaml";
+      const std::string layout = file ? fs::path(item).stem().string() : item;
+      // The lockstep loop's loader: the shipped simulator and locator files; a layout file
+      // replaces the layout they are loaded with (only the layout enters the benchmark).
+      ev::ClosedLoopConfig c = ev::loadClosedLoopConfig(
+          options["--config-dir"], file ? "spot" : item, "outdoor_loop",
+          ev::FollowController::kVelocity, 1, "", options["--locator-overrides"],
+          rf::sim::SensorProfile::kIdeal);
+      if (file) {
+        c.layout = rf::loadLayoutFile(item);
+      }
       for (const std::string& path : split(options["--paths"])) {
         const ev::WalkShape shape = ev::parseWalkShape(path, "--paths");
         for (const auto estimator :

@@ -1,17 +1,28 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Sensor placement advisor: the Cramer-Rao bound of the target position over a grid
 // around the robot for a layout YAML (the locator's format), a summary per ring and
-// direction, and the thesis's placement guidelines. ROS-free.
+// direction, and the thesis's placement guidelines; or, with --optimise, the search for
+// the best layout in a mounting region (estimation/placement_search.hpp). ROS-free.
 //
 //   placement_advisor LAYOUT.yaml [--compare OTHER.yaml] [--extent M] [--resolution M]
 //                     [--height M] [--3d] [--sectors N] [--weak-factor K]
 //                     [--plot scripts/plot_placement.py] --out DIR
+//   placement_advisor --optimise REGION.yaml [--method exhaustive|greedy|random|all]
+//                     [--objective mean|p90|max|all] [--modules N] [--boards N]
+//                     [--restarts N] [--samples N] [--runs N] [--seed S]
+//                     [--max-combinations N] [--limit M [--grow modules|boards|both]]
+//                     [--compare REFERENCE.yaml] ... --out DIR
 //
 // Writes DIR/<layout>_map.csv and DIR/<layout>_summary.json per layout and prints the
 // summary; --plot runs the given plot script on them (DIR/<layout>[_vs_<other>].png).
+// --optimise prints the searches as a Markdown table, writes the best layout as
+// DIR/<region>_optimised.yaml and then maps it (and the reference) as above.
 #include "radio_follow/estimation/placement_advisor.hpp"
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -24,6 +35,8 @@
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/config/layout.hpp"
+#include "radio_follow/config/layout_writer.hpp"
+#include "radio_follow/estimation/placement_search.hpp"
 #include "radio_follow/evaluation/error_statistics.hpp"
 
 namespace rf = radio_follow;
@@ -33,8 +46,28 @@ using rf::evaluation::jsonString;
 
 namespace {
 
+namespace est = rf::estimation;
+
+/// --optimise: the search to run and what to change in the region file.
+struct OptimiseOptions {
+  std::string region;
+  std::vector<std::string> methods{"greedy"};
+  std::vector<std::string> objectives;  ///< empty: the region's
+  std::optional<int> modules;
+  std::optional<int> boards;
+  int restarts = 20;
+  int samples = 2000;
+  int runs = 1;
+  std::uint64_t seed = 1;
+  double max_combinations = 2e6;
+  std::optional<double> limit;  ///< m: find the fewest sensors reaching it
+  est::GrowSensors grow = est::GrowSensors::kBoth;
+  std::string grow_text = "both";
+};
+
 struct Options {
   std::string layout;
+  std::optional<OptimiseOptions> optimise;
   std::optional<std::string> compare;
   std::string out;
   std::optional<std::string> plot_script;
@@ -50,7 +83,15 @@ struct Evaluated {
 const char* kUsage =
     "usage: placement_advisor LAYOUT.yaml [--compare OTHER.yaml] [--extent M (10)]\n"
     "         [--resolution M (0.25)] [--height M (1.0)] [--3d] [--sectors N (16)]\n"
-    "         [--weak-factor K (2)] [--plot PLOT_SCRIPT.py] --out DIR\n";
+    "         [--weak-factor K (2)] [--plot PLOT_SCRIPT.py] --out DIR\n"
+    "       placement_advisor --optimise REGION.yaml [--method exhaustive|greedy|random|all\n"
+    "         (greedy)] [--objective mean|p90|max|all (the region's)] [--modules N]\n"
+    "         [--boards N] [--restarts N (20)] [--samples N (2000)] [--runs N (1)]\n"
+    "         [--seed S (1)] [--max-combinations N (2e6)] [--limit M]\n"
+    "         [--grow modules|boards|both (both)] [--compare REFERENCE.yaml]\n"
+    "         [--3d] [--plot PLOT_SCRIPT.py] --out DIR\n";
+
+std::string csvNumber(double value);
 
 double number(const std::string& option, const char* text) {
   char* end = nullptr;
@@ -61,8 +102,26 @@ double number(const std::string& option, const char* text) {
   return value;
 }
 
+int count(const std::string& option, const char* text, double lo, double hi) {
+  const double value = number(option, text);
+  rf::require(value >= lo && value <= hi && value == std::floor(value), option, value,
+              "a whole number from " + csvNumber(lo) + " to " + csvNumber(hi));
+  return static_cast<int>(value);
+}
+
+std::vector<std::string> choices(const std::string& option, const std::string& text,
+                                 const std::vector<std::string>& allowed) {
+  if (text == "all") {
+    return allowed;
+  }
+  rf::require(std::find(allowed.begin(), allowed.end(), text) != allowed.end(), option, text,
+              "one of the listed choices or 'all'");
+  return {text};
+}
+
 Options parse(int argc, char** argv) {
   Options opt;
+  OptimiseOptions o;
   for (int i = 1; i < argc; ++i) {
     const std::string key = argv[i];
     const auto value = [&]() -> const char* {
@@ -92,13 +151,48 @@ Options parse(int argc, char** argv) {
       opt.config.weak_factor = number(key, value());
     } else if (key == "--3d") {
       opt.config.planar = false;
+    } else if (key == "--optimise") {
+      o.region = value();
+    } else if (key == "--method") {
+      o.methods = choices(key, value(), {"exhaustive", "greedy", "random"});
+    } else if (key == "--objective") {
+      o.objectives = choices(key, value(), {"mean", "p90", "max"});
+    } else if (key == "--modules") {
+      o.modules = count(key, value(), 0, 16);
+    } else if (key == "--boards") {
+      o.boards = count(key, value(), 0, 16);
+    } else if (key == "--restarts") {
+      o.restarts = count(key, value(), 1, 1e6);
+    } else if (key == "--samples") {
+      o.samples = count(key, value(), 1, 1e8);
+    } else if (key == "--runs") {
+      o.runs = count(key, value(), 1, 1000);
+    } else if (key == "--seed") {
+      o.seed = static_cast<std::uint64_t>(count(key, value(), 0, 1e9));
+    } else if (key == "--limit") {
+      o.limit = number(key, value());
+    } else if (key == "--grow") {
+      o.grow_text = value();
+      rf::require(o.grow_text == "modules" || o.grow_text == "boards" || o.grow_text == "both", key,
+                  o.grow_text, "modules, boards or both");
+      o.grow = o.grow_text == "modules"  ? est::GrowSensors::kModules
+               : o.grow_text == "boards" ? est::GrowSensors::kBoards
+                                         : est::GrowSensors::kBoth;
+    } else if (key == "--max-combinations") {
+      o.max_combinations = number(key, value());
     } else if (!key.empty() && key[0] != '-' && opt.layout.empty()) {
       opt.layout = key;
     } else {
       throw rf::ParamError(key, "given", "one layout file and the options above");
     }
   }
-  rf::require(!opt.layout.empty(), "LAYOUT.yaml", std::string("(none)"), "a layout file");
+  if (!o.region.empty()) {
+    opt.optimise = o;
+    rf::require(opt.layout.empty(), "LAYOUT.yaml", opt.layout,
+                "no layout with --optimise (the reference goes after --compare)");
+  } else {
+    rf::require(!opt.layout.empty(), "LAYOUT.yaml", std::string("(none)"), "a layout file");
+  }
   rf::require(!opt.out.empty(), "--out", std::string("(none)"), "an output directory");
   opt.config.validate();
   return opt;
@@ -226,6 +320,219 @@ Evaluated evaluate(const std::string& path, const Options& opt, const fs::path& 
   return e;
 }
 
+/// One search of --optimise and what it cost.
+struct SearchRow {
+  std::string objective;
+  std::string method;
+  std::uint64_t seed = 0;
+  est::SearchResult result;
+  double seconds = 0.0;
+  bool refused = false;
+};
+
+/// "(x, y)" per module, then "(x, y) yaw" per board, in the table's sensors column.
+std::string sensorList(const est::PlacementProblem& p, const est::Placement& placement) {
+  std::string text;
+  char buffer[64];
+  for (const int m : placement.modules) {
+    const auto& c = p.modules[static_cast<std::size_t>(m)];
+    std::snprintf(buffer, sizeof(buffer), "M(%.2f, %.2f) ", c.position.x(), c.position.y());
+    text += buffer;
+  }
+  for (const int b : placement.boards) {
+    const auto& c = p.boards[static_cast<std::size_t>(b)];
+    const double yaw = std::round(rf::rad2deg(c.yaw));
+    std::snprintf(buffer, sizeof(buffer), "B(%.2f, %.2f)%+.0f ", c.position.x(), c.position.y(),
+                  yaw == 0.0 ? 0.0 : yaw);  // no "-0"
+    text += buffer;
+  }
+  return text.empty() ? text : text.substr(0, text.size() - 1);
+}
+
+SearchRow runSearch(const est::PlacementProblem& problem, const std::string& method,
+                    std::uint64_t seed, const OptimiseOptions& o) {
+  SearchRow row;
+  row.method = method;
+  row.seed = seed;
+  row.objective = est::toString(problem.region.objective);
+  const auto start = std::chrono::steady_clock::now();
+  if (method == "exhaustive") {
+    row.result = est::exhaustiveSearch(problem, o.max_combinations);
+  } else if (method == "greedy") {
+    row.result = est::greedyRestarts(problem, o.restarts, seed);
+  } else {
+    row.result = est::randomSearch(problem, o.samples, seed);
+  }
+  row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return row;
+}
+
+void printRows(const std::vector<SearchRow>& rows, const est::PlacementProblem& problem) {
+  std::printf(
+      "\n| optimised for | method | seed | starts | mean (m) | p90 (m) | max (m) | evaluations "
+      "| time (ms) | time / first row | sensors "
+      "|\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+  const SearchRow* baseline = nullptr;
+  for (const SearchRow& row : rows) {
+    if (baseline == nullptr || baseline->objective != row.objective) {
+      baseline = row.refused ? nullptr : &row;
+    }
+    if (row.refused) {
+      std::printf("| %s | %s | - | - | refused | | | | | | |\n", row.objective.c_str(),
+                  row.method.c_str());
+      continue;
+    }
+    const auto& r = row.result;
+    const std::string seed = row.method == "exhaustive" ? "-" : std::to_string(row.seed);
+    std::printf("| %s | %s | %s | %zu | %s | %s | %s | %zu | %.1f | %s | %s |\n",
+                row.objective.c_str(), row.method.c_str(), seed.c_str(), r.starts,
+                cell(r.score.mean).c_str(), cell(r.score.p90).c_str(), cell(r.score.max).c_str(),
+                r.evaluations, 1e3 * row.seconds,
+                baseline ? cell(row.seconds / baseline->seconds).c_str() : "n/a",
+                sensorList(problem, r.best).c_str());
+  }
+  std::printf("\n");
+}
+
+/// The layout --optimise writes and the line saying how it was found.
+struct Chosen {
+  est::PlacementProblem problem;  ///< with the counts of the placement
+  est::Placement placement;
+  std::string how;
+};
+
+/// The method table (Tables 5.1 and the search comparison): every objective x method x run.
+Chosen searchTable(est::PlacementProblem problem, const OptimiseOptions& o) {
+  const std::string own = est::toString(problem.region.objective);
+  const std::vector<std::string> objectives =
+      o.objectives.empty() ? std::vector<std::string>{own} : o.objectives;
+  std::vector<SearchRow> rows;
+  for (const std::string& objective : objectives) {
+    problem.region.objective = est::parsePlacementObjective(objective, "--objective");
+    for (const std::string& method : o.methods) {
+      for (int run = 0; run < (method == "exhaustive" ? 1 : o.runs); ++run) {
+        try {
+          rows.push_back(runSearch(problem, method, o.seed + static_cast<std::uint64_t>(run), o));
+        } catch (const est::SearchTooLarge& e) {
+          if (o.methods.size() == 1) {
+            throw;
+          }
+          std::fprintf(stderr, "placement_advisor: %s\n", e.what());
+          rows.push_back({objective, method, 0, {}, 0.0, true});
+        }
+      }
+    }
+  }
+  printRows(rows, problem);
+  // The layout written: the best for the region's objective (or the first one searched).
+  const bool listed = std::find(objectives.begin(), objectives.end(), own) != objectives.end();
+  const std::string wanted = listed ? own : objectives.front();
+  const SearchRow* best = nullptr;
+  for (const SearchRow& row : rows) {
+    if (!row.refused && row.objective == wanted &&
+        (best == nullptr || est::betterScore(row.result.score, best->result.score))) {
+      best = &row;
+    }
+  }
+  problem.region.objective = est::parsePlacementObjective(wanted, "--objective");
+  char how[200];
+  std::snprintf(how, sizeof(how), "%s search, %s of sqrt(trace CRLB) = %.4f m",
+                best->method.c_str(), wanted.c_str(), best->result.score.objective);
+  return {problem, best->result.best, how};
+}
+
+/// --limit (Tables 5.2 and 5.3): the fewest sensors reaching the limit, one row per run.
+Chosen limitTable(const est::PlacementProblem& problem, const OptimiseOptions& o) {
+  const bool greedy = o.methods.front() == "greedy";
+  rf::require(o.methods.size() == 1 && o.methods.front() != "exhaustive", "--method",
+              o.methods.front(), "greedy or random with --limit");
+  std::printf(
+      "\n| run | seed | grow | modules | boards | total | reached | mean (m) | p90 (m) | max (m) "
+      "| evaluations | time (ms) | sensors "
+      "|\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::optional<Chosen> chosen;
+  Chosen last;
+  int fewest = 0;
+  double best_objective = 0.0;
+  for (int run = 0; run < o.runs; ++run) {
+    const std::uint64_t seed = o.seed + static_cast<std::uint64_t>(run);
+    const auto start = std::chrono::steady_clock::now();
+    const est::MinimumSensorsResult r =
+        est::minimumSensors(problem.region, problem.advisor, *o.limit, o.grow, greedy,
+                            greedy ? o.restarts : o.samples, seed);
+    const double ms =
+        1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    est::MountingRegion region = problem.region;
+    region.twr_count = r.modules;
+    region.aoa_count = r.boards;
+    const est::PlacementProblem sized = est::buildPlacementProblem(region, problem.advisor);
+    const auto& s = r.search.score;
+    std::printf("| %d | %llu | %s | %d | %d | %d | %s | %s | %s | %s | %zu | %.1f | %s |\n",
+                run + 1, static_cast<unsigned long long>(seed), o.grow_text.c_str(), r.modules,
+                r.boards, r.modules + r.boards, r.reached ? "yes" : "no", cell(s.mean).c_str(),
+                cell(s.p90).c_str(), cell(s.max).c_str(), r.evaluations, ms,
+                sensorList(sized, r.search.best).c_str());
+    const int total = r.modules + r.boards;
+    last = Chosen{
+        sized, r.search.best,
+        "limit not reached: " + est::toString(region.objective) + " = " + cell(s.objective) + " m"};
+    if (r.reached &&
+        (!chosen || total < fewest || (total == fewest && s.objective < best_objective))) {
+      char how[200];
+      std::snprintf(how, sizeof(how),
+                    "fewest sensors with %s <= %.3f m: %s of sqrt(trace CRLB) = %.4f m",
+                    est::toString(region.objective).c_str(), *o.limit,
+                    est::toString(region.objective).c_str(), s.objective);
+      chosen = Chosen{sized, r.search.best, how};
+      fewest = total;
+      best_objective = s.objective;
+    }
+  }
+  std::printf("\n");
+  if (!chosen) {
+    // Still a layout to map: the last run's, with the header saying the limit was missed.
+    std::printf("== no run reached the limit: the layout written is the last run's\n");
+    chosen = last;
+  }
+  return *chosen;
+}
+
+/// --optimise: runs the searches, prints them, writes the best layout and returns its path.
+std::string optimise(Options& opt, const fs::path& out) {
+  const OptimiseOptions& o = *opt.optimise;
+  est::MountingRegion region = est::loadMountingRegionFile(o.region);
+  region.twr_count = o.modules.value_or(region.twr_count);
+  region.aoa_count = o.boards.value_or(region.aoa_count);
+  if (o.objectives.size() == 1) {
+    region.objective = est::parsePlacementObjective(o.objectives.front(), "--objective");
+  }
+  rf::require(!o.limit || o.objectives.size() <= 1, "--objective", std::string("all"),
+              "one objective with --limit");
+  opt.config.target_height = region.target.height;  // the maps show the searched height
+  const est::PlacementProblem problem = est::buildPlacementProblem(region, opt.config);
+  std::printf(
+      "== optimise %s: %d TWR modules among %zu candidates, %d AoA boards among %zu, "
+      "%zu target points (%s bound), %.4g combinations\n",
+      region.name.c_str(), region.twr_count, problem.modules.size(), region.aoa_count,
+      problem.boards.size(), problem.targets.size(), opt.config.planar ? "2D" : "3D",
+      est::combinationCount(problem));
+  const Chosen chosen = o.limit ? limitTable(problem, o) : searchTable(problem, o);
+  const rf::Layout layout = est::placementLayout(chosen.problem, chosen.placement);
+  const fs::path path = out / (region.name + "_optimised.yaml");
+  std::ofstream file(path);
+  file << rf::writeLayout(
+      layout, {"Written by placement_advisor --optimise " + o.region + ":",
+               chosen.how + " over " + std::to_string(problem.targets.size()) +
+                   " target points (doc/placement_advisor.md).",
+               "Module IDs 0001.. are placeholders for your modules' IDs; the calibrations are",
+               "identity until calibrate_layout fits them (doc/calibration.md)."});
+  if (!file) {
+    throw std::runtime_error("cannot write " + path.string());
+  }
+  std::printf("== wrote %s\n", path.string().c_str());
+  return path.string();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -239,6 +546,9 @@ int main(int argc, char** argv) {
   try {
     const fs::path out(opt.out);
     fs::create_directories(out);
+    if (opt.optimise) {
+      opt.layout = optimise(opt, out);
+    }
     const Evaluated first = evaluate(opt.layout, opt, out);
     std::string plot_args = "'" + (out / (first.name + "_summary.json")).string() + "'";
     std::string png = first.name;

@@ -5,6 +5,9 @@
 
 #include <set>
 #include <string>
+#include <vector>
+
+#include "radio_follow/common/param_error.hpp"
 
 namespace radio_follow {
 
@@ -28,5 +31,29 @@ YAML::Node loadConfigYaml(const std::string& text, const std::string& name,
 /// A YAML value as a ParamError message shows it: in flow style (`[1, 2]`, `{a: 1}`), or
 /// "(missing)" for an absent or null node.
 std::string yamlValueString(const YAML::Node& node);
+
+/// The scalar `parent[key]` as a T. Throws ParamError(`path` + key, value, `expected`) when
+/// it is of the wrong type, or when it is absent and no `fallback` is given.
+template <typename T>
+T yamlScalar(const YAML::Node& parent, const std::string& key, const std::string& path,
+             const std::string& expected, const T* fallback = nullptr) {
+  const YAML::Node node = parent[key];
+  if (!node.IsDefined() || node.IsNull()) {
+    if (fallback != nullptr) {
+      return *fallback;
+    }
+    throw ParamError(path + key, "(missing)", expected);
+  }
+  try {
+    return node.as<T>();
+  } catch (const YAML::Exception&) {
+    throw ParamError(path + key, yamlValueString(node), expected);
+  }
+}
+
+/// The sequence `node` as finite numbers; throws ParamError(`name`, value, `expected`) when
+/// it is absent, not a sequence, or holds anything else.
+std::vector<double> yamlNumbers(const YAML::Node& node, const std::string& name,
+                                const std::string& expected);
 
 }  // namespace radio_follow

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "radio_follow/config/layout.hpp"
+
 namespace radio_follow {
 
 /// What a calibration changes in a layout; every other field stays as it was.
@@ -31,5 +33,13 @@ Eigen::Vector3d rpyWithYawOffset(const Eigen::Vector3d& rpy_deg, double yaw_offs
 std::string writeCalibratedLayout(const std::string& yaml_text, const std::string& origin,
                                   const LayoutCalibrationUpdate& update,
                                   const std::vector<std::string>& header_comment);
+
+/// [roll, pitch, yaw] in degrees of a rotation, the layout's convention R = Rz Ry Rx.
+Eigen::Vector3d rpyDegrees(const Eigen::Matrix3d& rotation);
+
+/// A whole layout as YAML the locator loads (parseLayout), one sensor per flow-style line
+/// like the shipped config/layouts/*.yaml; `header_comment` lines first, each prefixed "# ".
+/// Numbers to six significant digits. The result is checked with parseLayout.
+std::string writeLayout(const Layout& layout, const std::vector<std::string>& header_comment);
 
 }  // namespace radio_follow
