@@ -7,24 +7,16 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 #include <string>
 #include <vector>
 
+#include "../support/read_lines.hpp"
 #include "controller_test_utils.hpp"
 #include "radio_follow/FollowerStatus.h"
 
 namespace {
 
-std::vector<std::string> readLines(const std::string& path) {
-  std::vector<std::string> lines;
-  std::ifstream in(path);
-  std::string line;
-  while (std::getline(in, line)) {
-    lines.push_back(line);
-  }
-  return lines;
-}
+using radio_follow::test::readLines;
 
 TEST(Announcer, SpeaksOneAtATimeAndRateLimitsRepeats) {
   ros::NodeHandle nh;

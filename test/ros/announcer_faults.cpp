@@ -6,11 +6,11 @@
 #include <ros/ros.h>
 
 #include <algorithm>
-#include <fstream>
 #include <string>
 #include <vector>
 
 #include "../support/fake_dwm1001.hpp"
+#include "../support/read_lines.hpp"
 #include "../support/spin_until.hpp"
 
 namespace radio_follow {
@@ -18,15 +18,7 @@ namespace {
 
 using radio_follow::test::spinUntil;
 
-std::vector<std::string> readLines(const std::string& path) {
-  std::vector<std::string> lines;
-  std::ifstream in(path);
-  std::string line;
-  while (std::getline(in, line)) {
-    lines.push_back(line);
-  }
-  return lines;
-}
+using radio_follow::test::readLines;
 
 /// Whether "start <text>" is in the log at or after line `from`.
 bool saidSince(const std::string& log, const std::string& text, std::size_t from = 0) {
