@@ -162,6 +162,10 @@ void Layout::validate() const {
   }
   require(tdoa_anchors.empty() || tdoa_anchors.size() >= 2, "tdoa_anchors", tdoa_anchors.size(),
           "none, or at least 2 anchors (a difference needs two)");
+  require(tdoa_anchors.empty() || !target_tdoa_tag_id.empty(), "target.tdoa_tag_id",
+          target_tdoa_tag_id,
+          "the target's TDoA tag ID (or target.uwb_anchor_id) when tdoa_anchors exist: without "
+          "it every tag's blinks, the robot's own modules' too, would be taken for the person");
 }
 
 const TwrModule* Layout::findTwrModule(const std::string& id_or_frame) const {
@@ -180,6 +184,10 @@ const AoaBoard* Layout::findAoaBoard(const std::string& id_or_frame) const {
     }
   }
   return nullptr;
+}
+
+bool Layout::isTargetTdoaTag(const std::string& tag_id) const {
+  return !target_tdoa_tag_id.empty() && normalizeId(tag_id) == target_tdoa_tag_id;
 }
 
 const TdoaAnchor* Layout::findTdoaAnchor(const std::string& id) const {
@@ -206,12 +214,14 @@ Layout parseLayout(const std::string& yaml_text, const std::string& origin) {
       yamlScalar<std::string>(root, "fixed_frame", "", "a TF frame name", &default_frame);
   const YAML::Node target = root["target"];
   if (target.IsDefined() && !target.IsNull()) {
-    requireYamlKeys(target, {"uwb_anchor_id", "aoa_tag_id"}, "target.");
+    requireYamlKeys(target, {"uwb_anchor_id", "aoa_tag_id", "tdoa_tag_id"}, "target.");
     const std::string empty;
     layout.target_anchor_id = normalizeId(
         yamlScalar<std::string>(target, "uwb_anchor_id", "target.", "an anchor ID", &empty));
     layout.target_tag_id =
         normalizeId(yamlScalar<std::string>(target, "aoa_tag_id", "target.", "a tag ID", &empty));
+    layout.target_tdoa_tag_id = normalizeId(yamlScalar<std::string>(
+        target, "tdoa_tag_id", "target.", "a tag ID", &layout.target_anchor_id));
   }
 
   const YAML::Node twr = root["twr_modules"];

@@ -114,6 +114,10 @@ std::string writeLayout(const Layout& layout, const std::vector<std::string>& he
   out << YAML::Key << "uwb_anchor_id" << YAML::Value << YAML::DoubleQuoted
       << layout.target_anchor_id;
   out << YAML::Key << "aoa_tag_id" << YAML::Value << YAML::DoubleQuoted << layout.target_tag_id;
+  if (layout.target_tdoa_tag_id != layout.target_anchor_id) {
+    out << YAML::Key << "tdoa_tag_id" << YAML::Value << YAML::DoubleQuoted
+        << layout.target_tdoa_tag_id;
+  }
   out << YAML::EndMap;
   // Empty lists are left out (the keys are optional): yaml-cpp writes them as a lone "[]".
   if (!layout.twr_modules.empty()) {

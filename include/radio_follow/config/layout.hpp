@@ -55,6 +55,10 @@ struct Layout {
   std::string target_anchor_id;
   /// Bluetooth tag ID the target carries (AoaBearing.tag_id); empty = any tag.
   std::string target_tag_id;
+  /// ID the target's UWB device blinks with to TDoA anchors (TdoaMeasurements.tag_id):
+  /// `target.tdoa_tag_id`, by default `target.uwb_anchor_id`. Only its measurements are
+  /// the person's; other tags (the robot's own modules among them) are not.
+  std::string target_tdoa_tag_id;
   std::vector<TwrModule> twr_modules;
   std::vector<AoaBoard> aoa_boards;
   std::vector<TdoaAnchor> tdoa_anchors;
@@ -65,6 +69,8 @@ struct Layout {
   const TwrModule* findTwrModule(const std::string& id_or_frame) const;
   const AoaBoard* findAoaBoard(const std::string& id_or_frame) const;
   const TdoaAnchor* findTdoaAnchor(const std::string& id) const;
+  /// Whether TDoA measurements of `tag_id` (any case) are the target's.
+  bool isTargetTdoaTag(const std::string& tag_id) const;
 };
 
 /// Reads a layout from YAML text (see config/layouts/*.yaml for the format) and

@@ -55,6 +55,10 @@ std::size_t LocatorInputs::add(const AoaBearing& msg) {
 }
 
 std::size_t LocatorInputs::add(const TdoaMeasurements& msg) {
+  if (!locator_.layout().isTargetTdoaTag(msg.tag_id)) {
+    ++other_tdoa_tags_[normalizeId(msg.tag_id)];  // not the person: never fused
+    return 0;
+  }
   std::size_t refused = 0;
   std::optional<Pose2> pose;
   if (!poseFor(msg.header.stamp, &pose)) {

@@ -364,6 +364,11 @@ void LocatorNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) 
   }
   status.add("ranges to the target anchor", inputs_->targetRanges());
   status.add("ranges to other anchors", other);
+  std::size_t other_tdoa = 0;
+  for (const auto& entry : inputs_->otherTdoaTags()) {
+    other_tdoa += entry.second;
+  }
+  status.add("TDoA messages of other tags (not fused)", other_tdoa);
   status.add("solve time mean (us)",
              solves_seen_ > 0 ? 1e6 * solve_seconds_sum_ / static_cast<double>(solves_seen_) : 0.0);
   status.add("solve time max (us)", 1e6 * solve_seconds_max_);

@@ -211,7 +211,7 @@ void SimulatorNode::publishTdoa(const sim::StepEvents& events) {
     TdoaMeasurements msg;
     msg.header.stamp = stampOf(e.t);
     msg.header.frame_id = layout_.fixed_frame;
-    msg.tag_id = layout_.target_anchor_id;
+    msg.tag_id = layout_.target_tdoa_tag_id;
     const std::size_t ref = params_.world.tdoa_reference;
     std::size_t k = 0;
     for (std::size_t i = 0; i < layout_.tdoa_anchors.size(); ++i) {

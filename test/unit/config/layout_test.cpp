@@ -9,6 +9,7 @@
 
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/config/layout_writer.hpp"
 
 namespace radio_follow {
 namespace {
@@ -105,6 +106,28 @@ TEST(Layout, MisspeltKeysAreRefused) {
   expectRejected("target: {uwb_anchor_id: X, aoa_tag: Y}\ntwr_modules: []", "target.aoa_tag");
   expectRejected("aoa_boards: [{id: b, position: [0, 0, 0], fov_deg: 60}]",
                  "aoa_boards[0].fov_deg");
+}
+
+TEST(Layout, TdoaMeasurementsAreTheTargetsOnlyFromItsTag) {
+  // By default the person's UWB device blinks with its own ID.
+  const Layout by_default = parseLayout(kMinimal, "test");
+  EXPECT_EQ(by_default.target_tdoa_tag_id, "DA12");
+  EXPECT_TRUE(by_default.isTargetTdoaTag("da12"));
+  EXPECT_FALSE(by_default.isTargetTdoaTag("5722"));  // the robot's own module
+  EXPECT_FALSE(by_default.isTargetTdoaTag(""));
+  const Layout own = parseLayout(R"(
+target: {uwb_anchor_id: "DA12", tdoa_tag_id: "0c1f"}
+tdoa_anchors:
+  - {id: A, position: [1, 0, 0]}
+  - {id: B, position: [0, 1, 0]}
+)",
+                                 "test");
+  EXPECT_TRUE(own.isTargetTdoaTag("0C1F"));
+  EXPECT_FALSE(own.isTargetTdoaTag("DA12"));
+  EXPECT_EQ(parseLayout(writeLayout(own, {"test"}), "test").target_tdoa_tag_id, "0C1F");
+  // TDoA anchors and no way to tell the person's blinks from anyone else's: refused.
+  expectRejected("tdoa_anchors: [{id: A, position: [1, 0, 0]}, {id: B, position: [0, 1, 0]}]",
+                 "target.tdoa_tag_id");
 }
 
 TEST(Layout, IdsAreNormalisedAtParseTime) {

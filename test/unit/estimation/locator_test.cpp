@@ -139,6 +139,7 @@ TEST(Locator, BearingOnlyIsHeadingOnly) {
 
 TEST(Locator, TdoaOnlyIsHeadingOnly) {
   const Layout layout = parseLayout(R"(
+target: {tdoa_tag_id: "T1"}
 tdoa_anchors:
   - {id: a, position: [0.3, 0.3, 0.5]}
   - {id: b, position: [-0.3, 0.3, 0.5]}

@@ -46,6 +46,9 @@ class LocatorInputs {
   /// Ranges to other anchors so far, by normalised anchor ID: with none to the target,
   /// the layout's target.uwb_anchor_id is probably wrong (the node warns).
   const std::map<std::string, std::size_t>& otherAnchors() const { return other_anchors_; }
+  /// TDoA messages of tags that are not the target's (Layout::isTargetTdoaTag), by
+  /// normalised tag ID: the robot's own modules' blinks, other people's tags. Not fused.
+  const std::map<std::string, std::size_t>& otherTdoaTags() const { return other_tdoa_tags_; }
   const estimation::OdometryPlacement& placement() const { return placement_; }
 
  private:
@@ -60,6 +63,7 @@ class LocatorInputs {
   estimation::OdometryPlacement placement_;
   std::size_t target_ranges_ = 0;
   std::map<std::string, std::size_t> other_anchors_;
+  std::map<std::string, std::size_t> other_tdoa_tags_;
 };
 
 }  // namespace radio_follow

@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// LocatorInputs with TDoA anchors (issue 15: "the locator takes TDoA messages of ANY tag:
+// the robot's own modules' blinks would be fused as the person"). The messages are the
+// tdoa_driver's (radio_follow/TdoaMeasurements); the estimator is the node's.
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+
+#include <string>
+
+#include "radio_follow/TdoaMeasurements.h"
+#include "radio_follow/config/layout.hpp"
+#include "radio_follow/estimation/locator.hpp"
+#include "radio_follow/ros/locator/locator_inputs.hpp"
+
+namespace radio_follow {
+namespace {
+
+const char* const kLayout = R"(
+target: {uwb_anchor_id: "DA12"}
+twr_modules:
+  - {id: "5722", position: [0.2, 0.0, 0.3]}
+tdoa_anchors:
+  - {id: a, position: [0.3, 0.3, 0.5]}
+  - {id: b, position: [-0.3, 0.3, 0.5]}
+  - {id: c, position: [-0.3, -0.3, 0.5]}
+  - {id: d, position: [0.3, -0.3, 0.5]}
+)";
+
+/// The differences the anchors measure for a tag at `at`, against anchor a.
+TdoaMeasurements blink(const Layout& layout, const std::string& tag, const Eigen::Vector3d& at,
+                       double t) {
+  TdoaMeasurements msg;
+  msg.header.stamp = ros::Time(t);
+  msg.header.frame_id = "base_link";
+  msg.tag_id = tag;
+  for (std::size_t i = 1; i < layout.tdoa_anchors.size(); ++i) {
+    TdoaDifference d;
+    d.anchor_a = layout.tdoa_anchors[i].id;
+    d.anchor_b = layout.tdoa_anchors[0].id;
+    d.distance_difference = (at - layout.tdoa_anchors[i].position).norm() -
+                            (at - layout.tdoa_anchors[0].position).norm();
+    d.variance = 0.0004;
+    msg.differences.push_back(d);
+  }
+  return msg;
+}
+
+TEST(LocatorTdoaTags, OnlyTheTargetsTagIsFused) {
+  const Layout layout = parseLayout(kLayout, "test");
+  estimation::LocatorConfig config;
+  config.estimator = estimation::Estimator::kSolver;
+  estimation::Locator locator(layout, config);
+  LocatorInputs inputs(locator);
+  // The robot's own module (5722, on the robot: its blinks point into the robot) and
+  // someone else's tag, for two seconds: nothing reaches the estimator.
+  for (int k = 0; k < 20; ++k) {
+    EXPECT_EQ(inputs.add(blink(layout, "5722", layout.twr_modules[0].position, 0.1 * k)), 0u);
+    EXPECT_EQ(inputs.add(blink(layout, "0c1f", Eigen::Vector3d(2.0, 3.0, 1.0), 0.1 * k)), 0u);
+  }
+  EXPECT_EQ(inputs.otherTdoaTags().at("5722"), 20u);
+  EXPECT_EQ(inputs.otherTdoaTags().at("0C1F"), 20u);
+  EXPECT_EQ(locator.update(2.0).status, estimation::TargetStatus::kLost);
+  // The person's device (the layout's uwb_anchor_id, in any case): fused.
+  const Eigen::Vector3d person(-4.0, -2.0, config.height);
+  EXPECT_EQ(inputs.add(blink(layout, "da12", person, 2.05)), 0u);
+  const estimation::LocatorEstimate e = locator.update(2.05);
+  EXPECT_EQ(e.status, estimation::TargetStatus::kHeadingOnly);
+  EXPECT_EQ(e.sources, estimation::kSourceTdoa);
+  EXPECT_EQ(inputs.otherTdoaTags().count("DA12"), 0u);
+}
+
+}  // namespace
+}  // namespace radio_follow
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "locator_tdoa_tags_rostest");
+  return RUN_ALL_TESTS();
+}
