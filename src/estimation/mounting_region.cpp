@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "radio_follow/common/geometry.hpp"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/common/param_keys.hpp"
 #include "radio_follow/common/yaml_keys.hpp"
@@ -24,13 +25,6 @@ double signedArea(const Polygon& polygon) {
     area += a.x() * b.y() - b.x() * a.y();
   }
   return 0.5 * area;
-}
-
-double distanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
-                         const Eigen::Vector2d& b) {
-  const Eigen::Vector2d ab = b - a;
-  const double t = std::clamp((p - a).dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
-  return (a + t * ab - p).norm();
 }
 
 bool inKeepOut(const MountingRegion& region, const Eigen::Vector2d& p) {

@@ -39,9 +39,6 @@ HomingResult runHomingTrial(const HomingStep& controller, double target_x, doubl
   const bool obstacles = !config.obstacles.empty();
   result.min_clearance = std::numeric_limits<double>::infinity();
   std::normal_distribution<double> scan_noise(0.0, config.scan.sigma);
-  const double increment = config.scan.beams > 1 ? (config.scan.angle_max - config.scan.angle_min) /
-                                                       (config.scan.beams - 1)
-                                                 : 0.0;
   double t = 0.0;
   for (; t <= config.time_limit; t += dt) {
     const Pose2& pose = robot.pose();
@@ -69,15 +66,11 @@ HomingResult runHomingTrial(const HomingStep& controller, double target_x, doubl
     }
     control::VelocityCommand cmd{command.linear, command.angular};
     if (obstacles && config.use_scan) {
-      // The scan as the pipeline gets it: noisy ranges, no return beyond range_max.
-      std::vector<float> ranges;
-      for (const double r : sim::scanRanges(config.obstacles, config.scan, pose)) {
-        ranges.push_back(static_cast<float>(std::isfinite(r) ? r + scan_noise(rng) : r));
-      }
       cmd = control::avoidObstacles(
           cmd,
-          control::scanSectors(ranges, config.scan.angle_min, increment, config.scan.range_min,
-                               config.scan.range_max),
+          control::scanSectors(sim::noisyScan(config.obstacles, config.scan, pose, scan_noise, rng),
+                               config.scan.angle_min, config.scan.angleIncrement(),
+                               config.scan.range_min, config.scan.range_max),
           config.avoidance);
     }
     robot.step(cmd.linear, cmd.angular, dt);

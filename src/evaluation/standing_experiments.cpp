@@ -145,9 +145,10 @@ std::vector<DirectionSector> bySector(const std::vector<StaticPoint>& points, in
   std::vector<DirectionSector> out = emptySectors(sectors);
   std::vector<double> usable_sum(out.size(), 0.0);
   for (const StaticPoint& p : points) {
-    DirectionSector& s = out[sectorOf(p.direction, sectors)];
+    const std::size_t k = sectorOf(p.direction, sectors);
+    DirectionSector& s = out[k];
     ++s.count;
-    usable_sum[sectorOf(p.direction, sectors)] += p.usable;
+    usable_sum[k] += p.usable;
     // A point without any estimate is the worst a sector can have.
     s.max_mean_error = std::isfinite(p.mean_error) ? std::max(s.max_mean_error, p.mean_error)
                                                    : std::numeric_limits<double>::infinity();

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "radio_follow/common/angles.hpp"
+#include "radio_follow/common/geometry.hpp"
 #include "radio_follow/common/param_error.hpp"
 
 namespace radio_follow {
@@ -91,10 +92,20 @@ double castRay(const Obstacles& obstacles, double x, double y, double angle) {
 std::vector<double> scanRanges(const Obstacles& obstacles, const ScanConfig& config,
                                const Pose2& pose) {
   std::vector<double> ranges(static_cast<std::size_t>(config.beams));
-  const double step = (config.angle_max - config.angle_min) / (config.beams - 1);
+  const double step = config.angleIncrement();
   for (int i = 0; i < config.beams; ++i) {
     const double r = castRay(obstacles, pose.x, pose.y, pose.yaw + config.angle_min + i * step);
     ranges[static_cast<std::size_t>(i)] = r <= config.range_max ? r : kInf;
+  }
+  return ranges;
+}
+
+std::vector<float> noisyScan(const Obstacles& obstacles, const ScanConfig& config,
+                             const Pose2& pose, std::normal_distribution<double>& noise,
+                             std::mt19937_64& rng) {
+  std::vector<float> ranges;
+  for (const double r : scanRanges(obstacles, config, pose)) {
+    ranges.push_back(static_cast<float>(std::isfinite(r) ? std::max(0.0, r + noise(rng)) : r));
   }
   return ranges;
 }
@@ -105,12 +116,7 @@ double clearance(const Obstacles& obstacles, double x, double y) {
     best = std::min(best, std::hypot(x - c.x, y - c.y) - c.radius);
   }
   for (const auto& w : obstacles.walls) {
-    const double ex = w.x2 - w.x1;
-    const double ey = w.y2 - w.y1;
-    const double len2 = ex * ex + ey * ey;
-    const double u =
-        len2 > 0.0 ? std::clamp(((x - w.x1) * ex + (y - w.y1) * ey) / len2, 0.0, 1.0) : 0.0;
-    best = std::min(best, std::hypot(x - (w.x1 + u * ex), y - (w.y1 + u * ey)));
+    best = std::min(best, distanceToSegment({x, y}, {w.x1, w.y1}, {w.x2, w.y2}));
   }
   return best;
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <random>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,8 @@ struct ScanConfig {
   /// `scan/range_min`, `scan/range_max`, `scan/sigma` (config/simulator.yaml).
   void load(const ParamSource& source);
   void validate() const;
+  /// Angle between neighbouring beams, rad.
+  double angleIncrement() const { return (angle_max - angle_min) / (beams - 1); }
 };
 
 /// Distance along the ray from (x, y) in direction `angle` (world) to the first obstacle,
@@ -53,6 +56,13 @@ double castRay(const Obstacles& obstacles, double x, double y, double angle);
 /// +infinity, as REP-117 asks for "no return").
 std::vector<double> scanRanges(const Obstacles& obstacles, const ScanConfig& config,
                                const Pose2& pose);
+
+/// What the scanner reports at `pose`: scanRanges plus a draw of `noise` (normal, sd
+/// `config.sigma`; the caller keeps it, so its state carries over as the caller decides)
+/// on every return, never below 0; no return stays +infinity.
+std::vector<float> noisyScan(const Obstacles& obstacles, const ScanConfig& config,
+                             const Pose2& pose, std::normal_distribution<double>& noise,
+                             std::mt19937_64& rng);
 
 /// Distance from (x, y) to the nearest obstacle surface (negative inside a circle).
 double clearance(const Obstacles& obstacles, double x, double y);

@@ -162,16 +162,12 @@ void SimulatorNode::publishScan(const ros::Time& stamp) {
   scan.header.frame_id = layout_.fixed_frame;
   scan.angle_min = static_cast<float>(params_.scan.angle_min);
   scan.angle_max = static_cast<float>(params_.scan.angle_max);
-  scan.angle_increment = static_cast<float>((params_.scan.angle_max - params_.scan.angle_min) /
-                                            (params_.scan.beams - 1));
+  scan.angle_increment = static_cast<float>(params_.scan.angleIncrement());
   scan.scan_time = static_cast<float>(1.0 / params_.scan.rate);
   scan.range_min = static_cast<float>(params_.scan.range_min);
   scan.range_max = static_cast<float>(params_.scan.range_max);
   std::normal_distribution<double> noise(0.0, params_.scan.sigma);
-  for (double r : sim::scanRanges(obstacles, params_.scan, pose)) {
-    scan.ranges.push_back(
-        static_cast<float>(std::isfinite(r) ? std::max(0.0, r + noise(scan_rng_)) : r));
-  }
+  scan.ranges = sim::noisyScan(obstacles, params_.scan, pose, noise, scan_rng_);
   scan_pub_.publish(scan);
 }
 
