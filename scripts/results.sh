@@ -302,11 +302,16 @@ if wanted standing; then
   heading "Thesis Experiments 1-2, the robot standing (doc/standing_experiments.md)"
   t0=$(now)
   for experiment in static walk; do
-    for layout in spot tracked cube; do
+    for layout in spot tracked cube spot_tdoa; do
       shown "\"\$RF_WS\"/devel/lib/radio_follow/standing_experiments --experiment $experiment --layout $layout"
       "$bin/standing_experiments" --experiment "$experiment" --layout "$layout"
       echo
     done
+  done
+  # The TDoA heading mode on eight simulated robots: the whole-walk line of each.
+  for robot in 2 3 4 5 6 7 8; do
+    shown "\"\$RF_WS\"/devel/lib/radio_follow/standing_experiments --experiment walk --layout spot_tdoa --robot $robot | tail -1"
+    "$bin/standing_experiments" --experiment walk --layout spot_tdoa --robot "$robot" | tail -1
   done
   echo "(standing: $(elapsed "$t0") s; deterministic)"
 fi

@@ -121,6 +121,7 @@ Locator::Locator(const Layout& layout, const LocatorConfig& config)
       filter_(kalmanConfig(config_)),
       tracker_(layout, trackerConfig(config_)),
       rss_(layout.aoa_boards),
+      tdoa_calibration_(layout, config_.tdoa_calibration),
       ranges_(layout.twr_modules.size()),
       bearings_(layout.aoa_boards.size()) {
   init_config_.planar = config.planar;
@@ -147,6 +148,7 @@ bool Locator::setConfig(const LocatorConfig& config) {
   init_config_.height = config_.height;
   init_config_.default_range = config_.default_range;
   tracker_.setConfig(trackerConfig(config_));
+  tdoa_calibration_.setConfig(config_.tdoa_calibration);
   if (estimator_changed) {
     tracker_.reset();
     filter_.reset();
@@ -220,6 +222,22 @@ bool Locator::addBearing(const std::string& board_id, double azimuth, double ele
   return true;
 }
 
+bool Locator::addTdoaCalibration(const std::string& module_id, const std::string& anchor_a,
+                                 const std::string& anchor_b, double difference, double t) {
+  const TdoaAnchor* a = layout_.findTdoaAnchor(anchor_a);
+  const TdoaAnchor* b = layout_.findTdoaAnchor(anchor_b);
+  const std::optional<std::size_t> module = tdoa_calibration_.moduleOf(module_id);
+  if (a == nullptr || b == nullptr || !module || std::abs(difference) > kMaxPlausibleRange ||
+      !tdoa_calibration_.add(*module, static_cast<std::size_t>(a - layout_.tdoa_anchors.data()),
+                             static_cast<std::size_t>(b - layout_.tdoa_anchors.data()),
+                             difference, t)) {
+    ++stats_.invalid_measurements;
+    return false;
+  }
+  ++stats_.tdoa_calibration_blinks;
+  return true;
+}
+
 bool Locator::addTdoa(const std::string& anchor_a, const std::string& anchor_b, double difference,
                       double variance, double t, const std::optional<Pose2>& pose) {
   const TdoaAnchor* a = layout_.findTdoaAnchor(anchor_a);
@@ -231,6 +249,14 @@ bool Locator::addTdoa(const std::string& anchor_a, const std::string& anchor_b, 
   }
   const std::size_t ia = static_cast<std::size_t>(a - layout_.tdoa_anchors.data());
   const std::size_t ib = static_cast<std::size_t>(b - layout_.tdoa_anchors.data());
+  if (tdoa_calibration_.active()) {
+    const std::optional<double> offset = tdoa_calibration_.offset(ia, ib);
+    if (!offset) {
+      ++stats_.tdoa_uncalibrated;  // an uncorrected offset would turn the heading
+      return true;
+    }
+    difference -= *offset;
+  }
   TdoaSlot* slot = nullptr;
   for (auto& s : tdoas_) {
     if (s.a == ia && s.b == ib)

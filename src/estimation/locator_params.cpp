@@ -50,6 +50,21 @@ const ParamTable<AoaSelectorConfig>& aoaTable() {
   return t;
 }
 
+const ParamTable<TdoaCalibrationConfig>& tdoaCalibrationTable() {
+  static const ParamTable<TdoaCalibrationConfig> t =
+      ParamTable<TdoaCalibrationConfig>()
+          .add("tdoa_calibration", &TdoaCalibrationConfig::enabled, "",
+               "Learn the TDoA anchors' offsets from the robot's own modules' blinks and fuse "
+               "a pair's differences only once it has one.")
+          .add("tdoa_calibration_window", &TdoaCalibrationConfig::window, "s",
+               "Seconds of module blinks each pair's offset is the median of.",
+               Range::aboveUpTo(0.0, 600.0))
+          .add("tdoa_calibration_min_blinks", &TdoaCalibrationConfig::min_blinks, "",
+               "Module differences a pair needs in its window before its offset is used.",
+               Range::closed(1, 100000));
+  return t;
+}
+
 }  // namespace
 
 const ParamTable<LocatorConfig>& LocatorConfig::table() {
@@ -80,6 +95,7 @@ const ParamTable<LocatorConfig>& LocatorConfig::table() {
           .include(lossTable(), &C::bearing_loss, "bearing_loss")
           .add("max_age", &C::max_age, "s", "Older measurements are dropped.", Range::above(0.0))
           .include(aoaTable(), &C::aoa)
+          .include(tdoaCalibrationTable(), &C::tdoa_calibration)
           .addChoice("motion_model", &C::motion_model,
                      named({MotionModel::kConstantPosition, MotionModel::kConstantVelocity}),
                      "The Kalman filter's motion model.")

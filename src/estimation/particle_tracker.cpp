@@ -67,6 +67,7 @@ ParticleTracker::ParticleTracker(const Layout& layout, const ParticleTrackerConf
       main_(config.filter),
       mirror_(mirrorConfig(config.filter)),
       rss_pairs_(opposedBoardPairs(layout.aoa_boards)) {
+  accumulates_ = layout.twr_modules.size() <= 1 && layout.aoa_boards.empty();
   std::vector<Eigen::Vector3d> modules;
   for (const auto& m : layout.twr_modules) {
     modules.push_back(m.position);
@@ -469,9 +470,14 @@ TrackerOutput ParticleTracker::update(double now) {
   // whose mean is near the robot, or a track that fell apart.
   const double lost_limit =
       std::max(config_.lost_sigma, 2.0 * config_.max_relative_sigma * distance);
-  if (!fresh || !position.allFinite() || !covariance.allFinite() ||
-      (ranged && sigma > lost_limit)) {
+  if (!fresh || !position.allFinite() || !covariance.allFinite()) {
     reset();
+    return out;
+  }
+  if (ranged && sigma > lost_limit) {
+    if (!accumulates_) {
+      reset();
+    }
     return out;
   }
   for (std::size_t k = 0; k < 4; ++k) {

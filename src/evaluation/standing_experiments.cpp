@@ -113,6 +113,10 @@ std::vector<WalkSample> runWalkAround(const Layout& layout, sim::WorldConfig wor
     s.distance = truth.head<2>().norm();
     s.usable = hasPosition(e.status);
     s.error = s.usable ? (e.position - truth).head<2>().norm() : std::nan("");
+    const bool directed = s.usable || e.status == estimation::TargetStatus::kHeadingOnly;
+    s.heading_error = directed
+                          ? std::abs(wrapAngle(std::atan2(e.position.y(), e.position.x()) - s.direction))
+                          : std::nan("");
     samples.push_back(s);
   }
   return samples;
@@ -164,12 +168,16 @@ std::vector<DirectionSector> bySector(const std::vector<StaticPoint>& points, in
 std::vector<DirectionSector> bySector(const std::vector<WalkSample>& samples, int sectors) {
   std::vector<DirectionSector> out = emptySectors(sectors);
   std::vector<std::vector<double>> errors(out.size());
+  std::vector<std::vector<double>> headings(out.size());
   std::vector<std::size_t> seen(out.size(), 0);
   for (const WalkSample& w : samples) {
     const std::size_t k = sectorOf(w.direction, sectors);
     ++seen[k];
     if (w.usable) {
       errors[k].push_back(w.error);
+    }
+    if (std::isfinite(w.heading_error)) {
+      headings[k].push_back(rad2deg(w.heading_error));
     }
   }
   for (std::size_t k = 0; k < out.size(); ++k) {
@@ -181,6 +189,8 @@ std::vector<DirectionSector> bySector(const std::vector<WalkSample>& samples, in
       out[k].p95_error = quantile(errors[k], 0.95);
       out[k].max_mean_error = *std::max_element(errors[k].begin(), errors[k].end());
     }
+    out[k].heading_median_deg = headings[k].empty() ? std::nan("") : quantile(headings[k], 0.5);
+    out[k].heading_p95_deg = headings[k].empty() ? std::nan("") : quantile(headings[k], 0.95);
   }
   return out;
 }

@@ -18,9 +18,14 @@ StandingRobotSensors::StandingRobotSensors(const Layout& layout, const sim::Worl
   for (const auto& b : layout.aoa_boards) {
     mounted_.push_back(sim::mountedAoaBoard(b, hardware_seed));
   }
+  const bool tdoa = layout.tdoa_anchors.size() >= 2;
+  if (tdoa && realistic_) {
+    tdoa_.emplace(layout.tdoa_anchors, hardware_seed);
+  }
   // Free-running sensors: each its own phase.
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  next_.resize(layout.twr_modules.size() + layout.aoa_boards.size());
+  next_.resize(layout.twr_modules.size() + layout.aoa_boards.size() +
+               (tdoa ? 1 + layout.twr_modules.size() : 0));
   for (double& t : next_) {
     t = kPeriod * unit(rng);
   }
@@ -44,6 +49,8 @@ void StandingRobotSensors::feed(estimation::Locator& locator, double now,
         if (range) {
           locator.addRange(m.id, *range, t);
         }
+      } else if (s >= modules + layout_.aoa_boards.size()) {
+        blink(locator, s - modules - layout_.aoa_boards.size(), at, t, rng);
       } else {
         const std::size_t b = s - modules;
         const std::optional<sim::AoaSample> sample =
@@ -54,6 +61,32 @@ void StandingRobotSensors::feed(estimation::Locator& locator, double now,
                              sample->rssi, t);
         }
       }
+    }
+  }
+}
+
+void StandingRobotSensors::blink(estimation::Locator& locator, std::size_t source,
+                                 const Eigen::Vector3d& target, double t, sim::Rng& rng) {
+  // Source 0 is the target's device, 1.. the robot's modules at their known positions.
+  const Eigen::Vector3d from = source == 0 ? target : layout_.twr_modules[source - 1].position;
+  const std::size_t ref = world_.tdoa_reference;
+  const std::vector<double> differences =
+      tdoa_ ? tdoa_->simulate(layout_.tdoa_anchors, ref, world_.tdoa_sigma, from, t, rng)
+            : sim::simulateTdoa(layout_.tdoa_anchors, ref, world_.tdoa_sigma, from, rng);
+  if (differences.empty()) {
+    return;  // missed
+  }
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < layout_.tdoa_anchors.size(); ++i) {
+    if (i == ref) {
+      continue;
+    }
+    const std::string& a = layout_.tdoa_anchors[i].id;
+    const std::string& r = layout_.tdoa_anchors[ref].id;
+    if (source == 0) {
+      locator.addTdoa(a, r, differences[k++], world_.tdoa_sigma * world_.tdoa_sigma, t);
+    } else {
+      locator.addTdoaCalibration(layout_.twr_modules[source - 1].id, a, r, differences[k++], t);
     }
   }
 }

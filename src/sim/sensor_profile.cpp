@@ -151,7 +151,8 @@ std::optional<AoaSample> simulateRealisticAoa(const AoaBoard& mounted, const Aoa
 }
 
 TdoaHardware::TdoaHardware(const std::vector<TdoaAnchor>& anchors, std::uint64_t hardware_seed,
-                           const RealisticFigures& f) {
+                           const RealisticFigures& f)
+    : figures_(f) {
   for (const TdoaAnchor& anchor : anchors) {
     Rng rng = hardwareRng(hardware_seed, "tdoa:" + anchor.id);
     offsets_.push_back(uniform(rng, -f.tdoa_offset_max, f.tdoa_offset_max));
@@ -166,9 +167,20 @@ std::vector<double> TdoaHardware::simulate(const std::vector<TdoaAnchor>& anchor
   if (differences.empty()) {
     return differences;
   }
+  const RealisticFigures& f = figures_;
+  // A reflection lasts 1 / (1 - continue) TWR epochs on average: that share of blinks.
+  const double outlier = f.twr_outlier_start / (1.0 - f.twr_outlier_continue);
   std::vector<double> error(anchors.size());
   for (std::size_t i = 0; i < anchors.size(); ++i) {
     error[i] = offsets_[i] + drift_[i].sample(t, rng);
+    if (chance(outlier, rng)) {
+      const double excess =
+          std::exponential_distribution<double>(1.0 / f.twr_outlier_mean_excess)(rng);
+      error[i] += std::min(f.twr_outlier_max, f.twr_outlier_min + excess);
+    }
+  }
+  if (chance(f.twr_dropout, rng)) {
+    return {};  // the reference (or too many anchors) missed it: the driver drops it
   }
   std::size_t k = 0;
   for (std::size_t i = 0; i < anchors.size(); ++i) {

@@ -89,6 +89,14 @@ World::World(const Layout& layout, const Scenario& scenario, const WorldConfig& 
   }
   tdoa_schedule_ =
       Schedule{1.0 / config_.rates.tdoa_hz, uniform(rng_, 1.0 / config_.rates.tdoa_hz)};
+  if (layout_.tdoa_anchors.size() >= 2) {
+    // Each module's polls reach the anchors as blinks of its own, as often as the
+    // person's device's replies.
+    for (std::size_t i = 0; i < layout_.twr_modules.size(); ++i) {
+      const double period = 1.0 / config_.rates.tdoa_hz;
+      module_blink_schedule_.push_back(Schedule{period, uniform(rng_, period)});
+    }
+  }
   if (config_.profile == SensorProfile::kRealistic) {
     for (const TwrModule& m : layout_.twr_modules) {
       twr_hardware_.push_back(
@@ -150,13 +158,25 @@ StepEvents World::step(double cmd_linear, double cmd_angular, double dt) {
     }
   }
   if (layout_.tdoa_anchors.size() >= 2) {
-    const auto& anchors = layout_.tdoa_anchors;
+    const auto blink = [&](const Eigen::Vector3d& from, double t) {
+      return realistic ? tdoa_hardware_->simulate(layout_.tdoa_anchors, config_.tdoa_reference,
+                                                  config_.tdoa_sigma, from, t, rng_)
+                       : simulateTdoa(layout_.tdoa_anchors, config_.tdoa_reference,
+                                      config_.tdoa_sigma, from, rng_);
+    };
+    const auto add = [&](std::vector<double> differences, double t,
+                         std::optional<std::size_t> module) {
+      if (!differences.empty()) {
+        events.tdoa.push_back(TdoaEvent{t, std::move(differences), module});
+      }
+    };
     for (Schedule& s = tdoa_schedule_; s.next <= t_; s.next += s.period) {
-      events.tdoa.push_back(TdoaEvent{
-          s.next, realistic ? tdoa_hardware_->simulate(anchors, config_.tdoa_reference,
-                                                       config_.tdoa_sigma, target, s.next, rng_)
-                            : simulateTdoa(anchors, config_.tdoa_reference, config_.tdoa_sigma,
-                                           target, rng_)});
+      add(blink(target, s.next), s.next, std::nullopt);
+    }
+    for (std::size_t i = 0; i < module_blink_schedule_.size(); ++i) {
+      for (Schedule& s = module_blink_schedule_[i]; s.next <= t_; s.next += s.period) {
+        add(blink(layout_.twr_modules[i].position, s.next), s.next, i);
+      }
     }
   }
   return events;

@@ -3,7 +3,9 @@
 // shipped config/locator.yaml and config/simulator.yaml: the robot stands; the person
 // stands at points around it for a minute each (static), or walks round it (walk). Prints
 // the thesis's figures by direction as Markdown, for the layout as shipped and, where it
-// has three or more TWR modules and AoA boards, for its TWR modules alone.
+// has three or more TWR modules and AoA boards, for its TWR modules alone. A layout with
+// TDoA anchors (the TDoA heading mode) also runs without their auto-calibration, and the
+// walk adds the heading error.
 //   standing_experiments --experiment static|walk [--layout spot] [--sensor-profile realistic]
 //                        [--duration 60] [--sectors 8] [--robot 1] [--seed 1]
 //                        [--scenario walk_around] [--config-dir DIR]
@@ -18,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/common/tool_options.hpp"
 #include "radio_follow/evaluation/closed_loop.hpp"
@@ -36,15 +39,37 @@ int usage(const std::string& problem) {
   return 2;
 }
 
+struct Configuration {
+  std::string name;
+  rf::Layout layout;
+  rf::estimation::LocatorConfig locator;
+};
+
 /// The configurations the thesis compares on one robot: its sensors as mounted, and
-/// (with three or more modules and some boards) the TWR modules alone.
-std::vector<std::pair<std::string, rf::Layout>> configurations(const rf::Layout& layout) {
-  std::vector<std::pair<std::string, rf::Layout>> out{
-      {layout.aoa_boards.empty() ? "TWR" : "TWR + AoA", layout}};
+/// (with three or more modules and some boards) the TWR modules alone. With TDoA anchors:
+/// also without the anchors' auto-calibration (what it buys).
+std::vector<Configuration> configurations(const rf::Layout& layout,
+                                          const rf::estimation::LocatorConfig& locator) {
+  const bool tdoa = !layout.tdoa_anchors.empty();
+  std::vector<Configuration> out{
+      {std::string(layout.aoa_boards.empty() ? "TWR" : "TWR + AoA") + (tdoa ? " + TDoA" : ""),
+       layout, locator}};
   if (!layout.aoa_boards.empty() && layout.twr_modules.size() >= 3) {
-    out.emplace_back("TWR only", rf::evaluation::twrOnly(layout));
+    out.push_back({"TWR only", rf::evaluation::twrOnly(layout), locator});
+  }
+  if (tdoa && locator.tdoa_calibration.enabled) {
+    Configuration uncalibrated = out.front();
+    uncalibrated.name += ", uncalibrated";
+    uncalibrated.locator.tdoa_calibration.enabled = false;
+    out.push_back(uncalibrated);
   }
   return out;
+}
+
+std::string degrees(double v) {
+  char text[32];
+  std::snprintf(text, sizeof(text), std::isfinite(v) ? "%.1f" : "none", v);
+  return text;
 }
 
 std::string metres(double v) {
@@ -85,7 +110,9 @@ int main(int argc, char** argv) {
     const rf::evaluation::ClosedLoopConfig c = rf::evaluation::loadClosedLoopConfig(
         options["--config-dir"], options["--layout"], "outdoor_loop",
         rf::evaluation::FollowController::kVelocity, static_cast<int>(seed), "", "", profile);
-    const auto configs = configurations(c.layout);
+    const auto configs = configurations(c.layout, c.locator);
+    // The TDoA heading mode: the direction is the anchors' alone, so show its error.
+    const bool headings = !c.layout.tdoa_anchors.empty();
 
     if (experiment == "static") {
       rf::evaluation::StaticAccuracyParams params;
@@ -106,7 +133,7 @@ int main(int argc, char** argv) {
       std::string rule = "| --- |";
       for (const auto& config : configs) {
         const auto points =
-            rf::evaluation::runStaticAccuracy(config.second, c.world, c.locator, params);
+            rf::evaluation::runStaticAccuracy(config.layout, c.world, config.locator, params);
         tables.push_back(rf::evaluation::bySector(points, sectors));
         rows.push_back(rf::evaluation::byDistance(points, params.distances));
         double sum = 0.0;
@@ -114,7 +141,7 @@ int main(int argc, char** argv) {
           sum += p.usable;
         }
         usable.push_back(sum / static_cast<double>(points.size()));
-        header += " " + config.first + ": error | " + config.first + ": spread |";
+        header += " " + config.name + ": error | " + config.name + ": spread |";
         rule += " --- | --- |";
       }
       std::printf("%s\n%s\n", header.c_str(), rule.c_str());
@@ -131,7 +158,7 @@ int main(int argc, char** argv) {
           "directions, the largest spread, m\n\n| distance (m) |",
           params.directions);
       for (const auto& config : configs) {
-        std::printf(" %s: median error | max error | max spread |", config.first.c_str());
+        std::printf(" %s: median error | max error | max spread |", config.name.c_str());
       }
       std::printf("\n| --- |");
       for (std::size_t i = 0; i < configs.size(); ++i) {
@@ -148,7 +175,7 @@ int main(int argc, char** argv) {
       }
       std::printf("\nShare of updates with a position (OK or DEGRADED):");
       for (std::size_t i = 0; i < configs.size(); ++i) {
-        std::printf(" %s %.3f;", configs[i].first.c_str(), usable[i]);
+        std::printf(" %s %.3f;", configs[i].name.c_str(), usable[i]);
       }
       std::printf("\n");
       return 0;
@@ -175,11 +202,15 @@ int main(int argc, char** argv) {
     std::string header = "| direction (deg) |";
     std::string rule = "| --- |";
     for (const auto& config : configs) {
-      runs.push_back(rf::evaluation::runWalkAround(config.second, c.world, c.locator,
+      runs.push_back(rf::evaluation::runWalkAround(config.layout, c.world, config.locator,
                                                    scenario.target, scenario.duration, params));
       tables.push_back(rf::evaluation::bySector(runs.back(), sectors));
-      header += " " + config.first + ": median | p95 | usable |";
+      header += " " + config.name + ": median | p95 | usable |";
       rule += " --- | --- | --- |";
+      if (headings) {
+        header += " heading median (deg) | heading p95 (deg) |";
+        rule += " --- | --- |";
+      }
     }
     std::printf("%s\n%s\n", header.c_str(), rule.c_str());
     for (int k = 0; k < sectors; ++k) {
@@ -188,6 +219,10 @@ int main(int argc, char** argv) {
         const auto& s = table[static_cast<std::size_t>(k)];
         std::printf(" %s | %s | %.2f |", s.count ? metres(s.median_error).c_str() : "none",
                     s.count ? metres(s.p95_error).c_str() : "none", s.usable);
+        if (headings) {
+          std::printf(" %s | %s |", degrees(s.heading_median_deg).c_str(),
+                      degrees(s.heading_p95_deg).c_str());
+        }
       }
       std::printf("\n");
     }
@@ -199,12 +234,23 @@ int main(int argc, char** argv) {
           errors.push_back(w.error);
         }
       }
-      std::printf(" %s median %s m, p95 %s m, usable %.3f;", configs[i].first.c_str(),
+      std::printf(" %s median %s m, p95 %s m, usable %.3f;", configs[i].name.c_str(),
                   metres(rf::evaluation::quantile(errors, 0.5)).c_str(),
                   metres(rf::evaluation::quantile(errors, 0.95)).c_str(),
                   runs[i].empty()
                       ? 0.0
                       : static_cast<double>(errors.size()) / static_cast<double>(runs[i].size()));
+      if (headings) {
+        std::vector<double> heading;
+        for (const auto& w : runs[i]) {
+          if (std::isfinite(w.heading_error)) {
+            heading.push_back(rf::rad2deg(w.heading_error));
+          }
+        }
+        std::printf(" heading median %s deg, p95 %s deg;",
+                    degrees(rf::evaluation::quantile(heading, 0.5)).c_str(),
+                    degrees(rf::evaluation::quantile(heading, 0.95)).c_str());
+      }
     }
     std::printf("\n");
     return 0;

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // LocatorInputs with TDoA anchors (issue 15: "the locator takes TDoA messages of ANY tag:
-// the robot's own modules' blinks would be fused as the person"). The messages are the
-// tdoa_driver's (radio_follow/TdoaMeasurements); the estimator is the node's.
+// the robot's own modules' blinks would be fused as the person"; they calibrate the
+// anchors instead). The messages are the tdoa_driver's (radio_follow/TdoaMeasurements);
+// the estimator is the node's.
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 
@@ -52,18 +53,25 @@ TEST(LocatorTdoaTags, OnlyTheTargetsTagIsFused) {
   estimation::Locator locator(layout, config);
   LocatorInputs inputs(locator);
   // The robot's own module (5722, on the robot: its blinks point into the robot) and
-  // someone else's tag, for two seconds: nothing reaches the estimator.
-  for (int k = 0; k < 20; ++k) {
+  // someone else's tag, for five seconds: nothing reaches the estimate; the module's
+  // blinks calibrate the anchors (min_blinks, 50, per pair), the stranger's are counted.
+  for (int k = 0; k < 50; ++k) {
     EXPECT_EQ(inputs.add(blink(layout, "5722", layout.twr_modules[0].position, 0.1 * k)), 0u);
     EXPECT_EQ(inputs.add(blink(layout, "0c1f", Eigen::Vector3d(2.0, 3.0, 1.0), 0.1 * k)), 0u);
   }
-  EXPECT_EQ(inputs.otherTdoaTags().at("5722"), 20u);
-  EXPECT_EQ(inputs.otherTdoaTags().at("0C1F"), 20u);
-  EXPECT_EQ(locator.update(2.0).status, estimation::TargetStatus::kLost);
+  EXPECT_EQ(inputs.calibrationBlinks(), 50u);
+  EXPECT_EQ(inputs.otherTdoaTags().count("5722"), 0u);
+  EXPECT_EQ(inputs.otherTdoaTags().at("0C1F"), 50u);
+  EXPECT_EQ(locator.stats().tdoa_calibration_blinks, 150u);  // three differences each
+  EXPECT_EQ(locator.update(5.0).status, estimation::TargetStatus::kLost);
+  for (const auto& pair : locator.tdoaCalibration().pairs()) {
+    ASSERT_TRUE(pair.offset);
+    EXPECT_NEAR(*pair.offset, 0.0, 1e-9);  // exact differences: no offset
+  }
   // The person's device (the layout's uwb_anchor_id, in any case): fused.
   const Eigen::Vector3d person(-4.0, -2.0, config.height);
-  EXPECT_EQ(inputs.add(blink(layout, "da12", person, 2.05)), 0u);
-  const estimation::LocatorEstimate e = locator.update(2.05);
+  EXPECT_EQ(inputs.add(blink(layout, "da12", person, 5.05)), 0u);
+  const estimation::LocatorEstimate e = locator.update(5.05);
   EXPECT_EQ(e.status, estimation::TargetStatus::kHeadingOnly);
   EXPECT_EQ(e.sources, estimation::kSourceTdoa);
   EXPECT_EQ(inputs.otherTdoaTags().count("DA12"), 0u);

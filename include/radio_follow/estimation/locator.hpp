@@ -22,6 +22,7 @@
 #include "radio_follow/estimation/position_solver.hpp"
 #include "radio_follow/estimation/rss_direction.hpp"
 #include "radio_follow/estimation/target_status.hpp"
+#include "radio_follow/estimation/tdoa_calibration.hpp"
 
 namespace radio_follow {
 namespace estimation {
@@ -100,6 +101,8 @@ struct LocatorConfig {
   double rss_direction_gain = 6.0;
   /// Standard deviation of a pair's difference, dB.
   double rss_direction_sigma = 8.0;
+  /// The TDoA anchors' offsets, learnt from the robot's own modules' blinks.
+  TdoaCalibrationConfig tdoa_calibration;
 
   /// Reads the fields from their parameters (the locator node's names, e.g. `range_sigma`,
   /// `azimuth_sigma_deg`, `measurement_covariance`); absent keys keep their value.
@@ -155,6 +158,9 @@ struct LocatorStats {
   std::size_t bearings_rejected_fov = 0;
   std::size_t lost = 0;
   std::size_t ambiguous = 0;  ///< epochs reported AMBIGUOUS (mirror test)
+  /// Target TDoA differences held back: their pair had no learnt offset yet.
+  std::size_t tdoa_uncalibrated = 0;
+  std::size_t tdoa_calibration_blinks = 0;  ///< module differences fed to the calibration
   double last_solve_seconds = 0.0;
 };
 
@@ -175,8 +181,16 @@ class Locator {
   bool addBearing(const std::string& board_id, double azimuth, double elevation, double rssi,
                   double t, const std::optional<Pose2>& pose = std::nullopt);
   /// Distance difference |p - a| - |p - b| of anchors a and b; variance <= 0 uses tdoa_sigma.
+  /// With TDoA auto-calibration active (TdoaCalibration::active) the pair's learnt offset
+  /// is subtracted first; until the pair has one the difference is held back (counted in
+  /// LocatorStats::tdoa_uncalibrated, not refused).
   bool addTdoa(const std::string& anchor_a, const std::string& anchor_b, double difference,
                double variance, double t, const std::optional<Pose2>& pose = std::nullopt);
+  /// A difference |m - a| - |m - b| of one of the robot's own TWR modules' blinks (module
+  /// by its ID, any case): feeds the anchors' offsets (TdoaCalibration), never the
+  /// estimate. False for an unknown module or anchor or a value that is not finite.
+  bool addTdoaCalibration(const std::string& module_id, const std::string& anchor_a,
+                          const std::string& anchor_b, double difference, double t);
 
   /// Applies new tuning without a restart (live tuning). Throws ParamError and keeps the
   /// old tuning when `config` is invalid or changes `mode` (2d/3d: the state's size).
@@ -194,6 +208,7 @@ class Locator {
   const ParticleTracker& tracker() const { return tracker_; }
   const Layout& layout() const { return layout_; }
   const LocatorConfig& config() const { return config_; }
+  const TdoaCalibration& tdoaCalibration() const { return tdoa_calibration_; }
 
  private:
   struct Stamped {
@@ -232,6 +247,7 @@ class Locator {
   KalmanFilter filter_;
   ParticleTracker tracker_;
   RssDifferencer rss_;  ///< opposed boards' RSSI differences (rss_direction only)
+  TdoaCalibration tdoa_calibration_;
   std::vector<RangeSlot> ranges_;
   std::vector<BearingSlot> bearings_;
   std::vector<TdoaSlot> tdoas_;

@@ -149,6 +149,11 @@ class ParticleTracker {
   double evidence_time_ = 0.0;  ///< stamp of the newest measurement in evidence_
   /// The modules' main axis in the robot frame, when they are nearly collinear.
   std::optional<MirrorAxis> axis_;
+  /// One epoch cannot place the target (at most one TWR module and no AoA board: one
+  /// ring, plus TDoA hyperbolae that only give a direction): a cloud too wide to report
+  /// is kept converging (reported LOST) instead of restarting from the newest epoch,
+  /// which would throw the evidence away each time.
+  bool accumulates_ = false;
   /// The layout's opposed board pairs (kRssDirection's `sensor` indexes them).
   std::vector<RssPair> rss_pairs_;
   std::vector<TrackedMeasurement> queue_;

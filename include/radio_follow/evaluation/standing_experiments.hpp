@@ -60,6 +60,9 @@ struct WalkSample {
   double distance = 0.0;   ///< of the true position, m
   bool usable = false;     ///< OK or DEGRADED
   double error = 0.0;      ///< |estimate - truth| in the plane when usable, m
+  /// |direction of the estimate - direction of the truth| when the estimate has one
+  /// (usable or HEADING_ONLY: the TDoA heading mode), rad; NaN otherwise.
+  double heading_error = 0.0;
 };
 
 std::vector<WalkSample> runWalkAround(const Layout& layout, sim::WorldConfig world,
@@ -77,6 +80,9 @@ struct DirectionSector {
   double median_error = 0.0;  ///< Experiment 2
   double p95_error = 0.0;     ///< Experiment 2
   double usable = 0.0;        ///< share
+  /// Experiment 2: heading error of the samples with a direction, deg (NaN without).
+  double heading_median_deg = 0.0;
+  double heading_p95_deg = 0.0;
 };
 
 /// Index of the sector of `direction` (rad) among `sectors`.

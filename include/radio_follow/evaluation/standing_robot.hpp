@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "radio_follow/config/layout.hpp"
@@ -18,9 +19,11 @@ namespace evaluation {
 /// The sensors of one simulated robot that stands still, feeding a locator: every TWR
 /// module and AoA board of `layout` reports at 10 Hz on its own phase, with the realistic
 /// profile's hardware of robot `hardware_seed` (per-pair range bias and scale, mounting
-/// errors) and time-correlated noise state, or the ideal profile's white noise. Used by
-/// the cold starts and the thesis's Experiments 1-2, where the robot does not move and
-/// the robot frame is the world frame.
+/// errors, TDoA anchor offsets) and time-correlated noise state, or the ideal profile's
+/// white noise. With TDoA anchors the target and every module blink at 10 Hz too (the
+/// modules' blinks calibrate the anchors, Locator::addTdoaCalibration). Used by the cold
+/// starts and the thesis's Experiments 1-2, where the robot does not move and the robot
+/// frame is the world frame.
 class StandingRobotSensors {
  public:
   /// Sensor report period, s.
@@ -37,13 +40,20 @@ class StandingRobotSensors {
             const std::function<Eigen::Vector3d(double)>& target, sim::Rng& rng);
 
  private:
+  /// One TDoA blink of `source` (0: the target at `target`; k: module k - 1).
+  void blink(estimation::Locator& locator, std::size_t source, const Eigen::Vector3d& target,
+             double t, sim::Rng& rng);
+
   const Layout& layout_;
   const sim::WorldConfig& world_;
   bool realistic_;
   std::vector<sim::TwrNoiseState> states_;
   std::vector<sim::TwrHardware> hardware_;
   std::vector<AoaBoard> mounted_;
-  std::vector<double> next_;  // next report time per sensor: modules, then boards
+  std::optional<sim::TdoaHardware> tdoa_;
+  /// Next report time per sensor: modules, boards, then with TDoA anchors the target's
+  /// blinks and each module's.
+  std::vector<double> next_;
 };
 
 }  // namespace evaluation

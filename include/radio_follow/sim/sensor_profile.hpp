@@ -115,17 +115,22 @@ std::optional<AoaSample> simulateRealisticAoa(const AoaBoard& mounted, const Aoa
                                               const Eigen::Vector3d& target, Rng& rng,
                                               const RealisticFigures& figures = {});
 
-/// The realistic TDoA errors: a constant offset per anchor and a slow per-anchor drift
-/// added to simulateTdoa's white noise.
+/// The realistic TDoA errors added to simulateTdoa's white noise: a constant offset per
+/// anchor and a slow per-anchor drift (common to every tag the anchors hear), long
+/// reflections on one anchor's path and blinks missed, both as often as the same radio's
+/// TWR ranges show them (twr_outlier_*, twr_dropout: the stationary share of outlier
+/// epochs, one blink each).
 class TdoaHardware {
  public:
   TdoaHardware(const std::vector<TdoaAnchor>& anchors, std::uint64_t hardware_seed,
                const RealisticFigures& figures = {});
-  /// The differences vs anchor `reference` with the anchors' errors added.
+  /// The differences vs anchor `reference` with the anchors' errors added; empty when
+  /// the blink was missed.
   std::vector<double> simulate(const std::vector<TdoaAnchor>& anchors, std::size_t reference,
                                double sigma, const Eigen::Vector3d& target, double t, Rng& rng);
 
  private:
+  RealisticFigures figures_;
   std::vector<double> offsets_;
   std::vector<GaussMarkov> drift_;
 };

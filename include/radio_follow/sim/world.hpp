@@ -56,6 +56,9 @@ struct AoaEvent {
 struct TdoaEvent {
   double t;
   std::vector<double> differences;  ///< vs the reference anchor, in anchor order
+  /// Whose blink: the target's (nothing) or one of the robot's own TWR modules (index into
+  /// Layout::twr_modules), which the anchors hear as well (TDoA auto-calibration).
+  std::optional<std::size_t> module;
 };
 
 struct StepEvents {
@@ -103,6 +106,7 @@ class World {
   std::vector<Schedule> twr_schedule_;
   std::vector<Schedule> aoa_schedule_;
   Schedule tdoa_schedule_{0.0, 0.0};
+  std::vector<Schedule> module_blink_schedule_;  ///< per TWR module, with TDoA anchors
   // The realistic profile's hardware and per-sensor noise state (unused when ideal).
   std::vector<TwrHardware> twr_hardware_;
   std::vector<TwrNoiseState> twr_state_;

@@ -56,6 +56,16 @@ std::size_t LocatorInputs::add(const AoaBearing& msg) {
 
 std::size_t LocatorInputs::add(const TdoaMeasurements& msg) {
   if (!locator_.layout().isTargetTdoaTag(msg.tag_id)) {
+    if (locator_.tdoaCalibration().moduleOf(msg.tag_id)) {
+      // One of the robot's own modules, at a known position: the anchors' offsets.
+      std::size_t refused = 0;
+      for (const auto& d : msg.differences) {
+        refused += !locator_.addTdoaCalibration(msg.tag_id, d.anchor_a, d.anchor_b,
+                                                d.distance_difference, msg.header.stamp.toSec());
+      }
+      ++calibration_blinks_;
+      return refused;
+    }
     ++other_tdoa_tags_[normalizeId(msg.tag_id)];  // not the person: never fused
     return 0;
   }

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 #include "radio_follow/ros/common/wiring_debug.hpp"
@@ -369,6 +370,19 @@ void LocatorNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) 
     other_tdoa += entry.second;
   }
   status.add("TDoA messages of other tags (not fused)", other_tdoa);
+  status.add("TDoA calibration blinks (robot's modules)", inputs_->calibrationBlinks());
+  status.add("TDoA differences awaiting calibration", s.tdoa_uncalibrated);
+  for (const auto& pair : locator_->tdoaCalibration().pairs()) {
+    const std::string name = "TDoA offset " + layout_.tdoa_anchors[pair.a].id + "-" +
+                             layout_.tdoa_anchors[pair.b].id + " (m)";
+    char value[64];
+    if (pair.offset) {
+      std::snprintf(value, sizeof(value), "%.3f (%zu blinks)", *pair.offset, pair.samples);
+    } else {
+      std::snprintf(value, sizeof(value), "learning (%zu blinks)", pair.samples);
+    }
+    status.add(name, std::string(value));
+  }
   status.add("solve time mean (us)",
              solves_seen_ > 0 ? 1e6 * solve_seconds_sum_ / static_cast<double>(solves_seen_) : 0.0);
   status.add("solve time max (us)", 1e6 * solve_seconds_max_);

@@ -207,7 +207,8 @@ void SimulatorNode::publishTdoa(const sim::StepEvents& events) {
     TdoaMeasurements msg;
     msg.header.stamp = stampOf(e.t);
     msg.header.frame_id = layout_.fixed_frame;
-    msg.tag_id = layout_.target_tdoa_tag_id;
+    // The person's device, or one of the robot's own modules heard by the anchors.
+    msg.tag_id = e.module ? layout_.twr_modules[*e.module].id : layout_.target_tdoa_tag_id;
     const std::size_t ref = params_.world.tdoa_reference;
     std::size_t k = 0;
     for (std::size_t i = 0; i < layout_.tdoa_anchors.size(); ++i) {

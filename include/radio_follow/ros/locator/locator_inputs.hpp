@@ -19,8 +19,9 @@ namespace radio_follow {
 
 /// Hands driver messages to a Locator the one way both the locator node and the offline
 /// evaluator do: only ranges to the target's anchor, only bearings of the target's tag
-/// (when the layout names one), a module named by its ID or else its frame, every value
-/// stamped with its message's header.
+/// (when the layout names one), only TDoA differences of the target's tag (the robot's own
+/// modules' blinks calibrate the anchors), a module named by its ID or else its frame,
+/// every value stamped with its message's header.
 class LocatorInputs {
  public:
   /// The robot's odometry pose at a stamp (TF odom -> fixed frame), or nothing.
@@ -46,9 +47,13 @@ class LocatorInputs {
   /// Ranges to other anchors so far, by normalised anchor ID: with none to the target,
   /// the layout's target.uwb_anchor_id is probably wrong (the node warns).
   const std::map<std::string, std::size_t>& otherAnchors() const { return other_anchors_; }
-  /// TDoA messages of tags that are not the target's (Layout::isTargetTdoaTag), by
-  /// normalised tag ID: the robot's own modules' blinks, other people's tags. Not fused.
+  /// TDoA messages of tags that are neither the target's (Layout::isTargetTdoaTag) nor
+  /// one of the robot's own TWR modules, by normalised tag ID (other people's tags).
+  /// Not fused.
   const std::map<std::string, std::size_t>& otherTdoaTags() const { return other_tdoa_tags_; }
+  /// TDoA messages of the robot's own TWR modules: they calibrate the anchors'
+  /// offsets (Locator::addTdoaCalibration), never the estimate.
+  std::size_t calibrationBlinks() const { return calibration_blinks_; }
   const estimation::OdometryPlacement& placement() const { return placement_; }
 
  private:
@@ -64,6 +69,7 @@ class LocatorInputs {
   std::size_t target_ranges_ = 0;
   std::map<std::string, std::size_t> other_anchors_;
   std::map<std::string, std::size_t> other_tdoa_tags_;
+  std::size_t calibration_blinks_ = 0;
 };
 
 }  // namespace radio_follow
