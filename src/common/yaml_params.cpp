@@ -59,6 +59,18 @@ YamlParams YamlParams::fromFiles(const std::vector<std::string>& paths) {
   return YamlParams(merged);
 }
 
+YamlParams YamlParams::mergedWith(const YAML::Node& over) const {
+  if (!over.IsDefined() || over.IsNull()) {
+    return *this;
+  }
+  if (!over.IsMap()) {
+    throw ParamError("parameter overrides", YAML::Dump(over), "a YAML mapping of parameters");
+  }
+  YAML::Node merged = YAML::Clone(root_);
+  mergeInto(merged, over);
+  return YamlParams(merged);
+}
+
 YamlParams YamlParams::fromFile(const std::string& path) {
   YAML::Node root;
   try {

@@ -9,6 +9,7 @@
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/common/yaml_params.hpp"
 #include "radio_follow/evaluation/calibration_run.hpp"
+#include "radio_follow/evaluation/simulated_scan.hpp"
 
 namespace radio_follow {
 namespace evaluation {
@@ -31,6 +32,9 @@ void ClosedLoopConfig::validate() const {
           step_rate, "a rate in [10, 10000] Hz");
   require(std::isfinite(cmd_timeout) && cmd_timeout > 0.0, "cmd_timeout", cmd_timeout,
           "seconds > 0");
+  scan.validate();
+  require(std::isfinite(robot_radius) && robot_radius >= 0.0, "robot_radius", robot_radius,
+          "a radius >= 0 in m");
   locator.validate();
   require(rateOk(locator_rate), "locator rate", locator_rate, "a rate in (0, 1000] Hz");
   pipeline.validate();
@@ -71,7 +75,8 @@ ClosedLoopConfig loadClosedLoopConfig(const std::string& dir, const std::string&
                                       const std::string& scenario, FollowController controller,
                                       int seed, const std::string& controller_params,
                                       const std::string& locator_overrides,
-                                      std::optional<sim::SensorProfile> profile) {
+                                      std::optional<sim::SensorProfile> profile,
+                                      const YAML::Node& controller_overrides) {
   require(seed >= 0, "seed", seed, "an integer >= 0");
   ClosedLoopConfig c;
   c.controller = controller;
@@ -90,9 +95,8 @@ ClosedLoopConfig loadClosedLoopConfig(const std::string& dir, const std::string&
   }
   simulator.param("step_rate", c.step_rate, c.step_rate);
   simulator.param("cmd_timeout", c.cmd_timeout, c.cmd_timeout);
-  // What only the ROS node uses (clock, frames, serial devices, the laser scan).
-  sim::ScanConfig scan;  // the laser scan of scenarios with obstacles: the ROS simulator's
-  scan.load(simulator);
+  c.scan.load(simulator);  // the laser scan of scenarios with obstacles
+  // What only the ROS node uses (clock, frames, serial devices).
   for (const char* key : {"seed", "time_factor", "shutdown_on_finish", "odom_frame", "output",
                           "serial_dir", "unplug"}) {
     simulator.allow(key);
@@ -131,7 +135,7 @@ ClosedLoopConfig loadClosedLoopConfig(const std::string& dir, const std::string&
   if (!controller_params.empty()) {
     files.push_back(controller_params);
   }
-  const YamlParams p = YamlParams::fromFiles(files);
+  const YamlParams p = YamlParams::fromFiles(files).mergedWith(controller_overrides);
   c.pipeline.load(p, &c.layout);
   p.param("rate", c.controller_rate, c.controller_rate);
   c.law = control::loadVelocityLawParams(p, c.pipeline);
@@ -187,7 +191,10 @@ ClosedLoop::ClosedLoop(const ClosedLoopConfig& config)
       metrics_(config_.metrics),
       locator_timer_{1.0 / config_.locator_rate, kClockStart + 1.0 / config_.locator_rate},
       controller_timer_{1.0 / config_.controller_rate, kClockStart + 1.0 / config_.controller_rate},
-      evaluator_timer_{1.0 / config_.evaluator_rate, kClockStart + 1.0 / config_.evaluator_rate} {
+      evaluator_timer_{1.0 / config_.evaluator_rate, kClockStart + 1.0 / config_.evaluator_rate},
+      // The ROS simulator scans on its first step, with a generator of its own.
+      scan_timer_{1.0 / config_.scan.rate, kClockStart},
+      scan_rng_(config_.world.seed + 1) {
   pipeline_.setEnabled(true);  // start_enabled, as the demo and the experiments run
   poses_.push_back(PoseAt{kClockStart, world_.robot().pose()});
 }
@@ -201,7 +208,7 @@ FollowReport ClosedLoop::run() {
 }
 
 bool ClosedLoop::step() {
-  if (world_.finished()) {
+  if (world_.finished() || collided_) {
     return false;
   }
   // The base stops by itself when its command stream stops.
@@ -218,6 +225,7 @@ bool ClosedLoop::step() {
     truth_.pop_front();
   }
   feedSensors(events, now);
+  watchObstacles(now);
   if (locator_timer_.due(now)) {
     runLocator(now);
   }
@@ -227,7 +235,26 @@ bool ClosedLoop::step() {
   if (evaluator_timer_.due(now)) {
     sample(now);
   }
-  return true;
+  // A collision ends the run: the simulated base has no contact model and would drive on
+  // through the obstacle.
+  return !collided_;
+}
+
+void ClosedLoop::watchObstacles(double now) {
+  const sim::Obstacles& obstacles = world_.scenario().obstacles;
+  if (obstacles.empty()) {
+    return;
+  }
+  const Pose2& pose = world_.robot().pose();
+  const double clearance = sim::clearance(obstacles, pose.x, pose.y) - config_.robot_radius;
+  metrics_.addClearance(now, clearance);
+  collided_ = clearance < 0.0;
+  if (scan_timer_.due(now)) {
+    // The controller's scan callback: sectors and the scan's stamp (its pipeline ignores
+    // them without use_scan, as the node then does not subscribe).
+    std::normal_distribution<double> noise(0.0, config_.scan.sigma);
+    pipeline_.onScan(simulatedScanSectors(obstacles, config_.scan, pose, noise, scan_rng_), now);
+  }
 }
 
 bool ClosedLoop::silent(const std::string& sensor, double t) const {

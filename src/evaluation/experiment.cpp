@@ -49,7 +49,10 @@ std::vector<Experiment> loadExperiments(const std::string& path) {
       continue;
     }
     const std::string where = path + ": " + e.name;
-    const YamlParams p(entry.second);
+    // The controller parameters are the nodes' (checked as they load them), not the entry's.
+    YAML::Node fields = YAML::Clone(entry.second);
+    fields.remove("controller_params");
+    const YamlParams p(fields);
     p.param("layout", e.layout, e.layout);
     p.param("scenario", e.scenario, e.scenario);
     std::string controller = "velocity_controller";
@@ -63,6 +66,12 @@ std::vector<Experiment> loadExperiments(const std::string& path) {
     std::string own_profile = sim::toString(profile);
     p.param("sensor_profile", own_profile, own_profile);
     e.sensor_profile = sim::parseSensorProfile(own_profile, where + ".sensor_profile");
+    const YAML::Node controller_params = entry.second["controller_params"];
+    if (controller_params.IsDefined()) {
+      require(controller_params.IsMap(), where + ".controller_params",
+              YAML::Dump(controller_params), "a mapping of controller parameters");
+      e.controller_params = YAML::Clone(controller_params);
+    }
     p.allow("outages");
     const YAML::Node outages = entry.second["outages"];
     for (std::size_t i = 0; outages && i < outages.size(); ++i) {
@@ -84,6 +93,7 @@ std::vector<Experiment> loadExperiments(const std::string& path) {
     c.max_path_deviation_beyond_estimate =
         optionalNumber(p, "check/max_path_deviation_beyond_estimate");
     c.resume_after = optionalNumber(p, "check/resume_after");
+    c.min_clearance = optionalNumber(p, "check/min_clearance");
     std::vector<double> window;
     p.param("check/stop_window", window, window);
     if (!window.empty()) {
@@ -141,6 +151,13 @@ std::vector<std::string> checkRun(const ExperimentCheck& check, const FollowRepo
           format("told to move at %.3f m/s in the stop window (from %.1f s)", worst, from));
     }
   }
+  if (check.min_clearance && !(r.min_clearance >= *check.min_clearance)) {
+    violations.push_back(
+        r.collided ? format("hit an obstacle at %.1f s (clearance %.3f m, at least %.2f)",
+                            r.collision_time, r.min_clearance, *check.min_clearance)
+                   : format("came %.3f m from an obstacle (at least %.2f)", r.min_clearance,
+                            *check.min_clearance));
+  }
   if (check.resume_after && !std::any_of(commands.begin(), commands.end(), [&](const CommandAt& c) {
         return c.t > *check.resume_after && c.linear > 0.1;
       })) {
@@ -149,11 +166,16 @@ std::vector<std::string> checkRun(const ExperimentCheck& check, const FollowRepo
   return violations;
 }
 
+bool keptFollowing(const FollowReport& report, const FollowSettings& settings) {
+  return !report.collided &&
+         std::abs(report.final_gap - settings.follow_distance) <= settings.gap_tolerance;
+}
+
 ExperimentResult runExperiment(const Experiment& experiment, const std::string& config_dir,
                                int seed) {
-  ClosedLoopConfig config =
-      loadClosedLoopConfig(config_dir, experiment.layout, experiment.scenario,
-                           experiment.controller, seed, "", "", experiment.sensor_profile);
+  ClosedLoopConfig config = loadClosedLoopConfig(
+      config_dir, experiment.layout, experiment.scenario, experiment.controller, seed, "", "",
+      experiment.sensor_profile, experiment.controller_params);
   config.outages = experiment.outages;
   ClosedLoop loop(config);
   ExperimentResult result;
@@ -165,6 +187,7 @@ ExperimentResult runExperiment(const Experiment& experiment, const std::string& 
   result.violations = checkRun(experiment.check, result.report, commands);
   result.violations.insert(result.violations.begin(), result.report.failures.begin(),
                            result.report.failures.end());
+  result.kept_following = keptFollowing(result.report, config.metrics);
   return result;
 }
 

@@ -82,6 +82,13 @@ void FollowMetrics::add(const FollowSample& sample) {
   samples_.push_back(sample);
 }
 
+void FollowMetrics::addClearance(double t, double clearance) {
+  min_clearance_ = std::min(min_clearance_, clearance);
+  if (clearance < 0.0 && std::isnan(collision_time_)) {
+    collision_time_ = t;
+  }
+}
+
 namespace {
 /// Below this the person counts as standing (the gap is only judged while they walk), m/s.
 constexpr double kStandingSpeed = 0.05;
@@ -91,6 +98,9 @@ FollowReport FollowMetrics::report() const {
   FollowReport r;
   r.min_gap = std::numeric_limits<double>::infinity();
   r.min_gap_while_moving = std::numeric_limits<double>::infinity();
+  r.min_clearance = min_clearance_;
+  r.collided = !std::isnan(collision_time_);
+  r.collision_time = collision_time_;
   if (samples_.empty()) {
     r.failures.push_back("nothing was sampled (no odometry, ground truth or estimate heard)");
     return r;
@@ -241,6 +251,9 @@ std::string FollowReport::toJson() const {
       << "  \"path_deviation_median_m\": " << jsonNumber(path_deviation_median) << ",\n"
       << "  \"path_deviation_max_m\": " << jsonNumber(path_deviation_max) << ",\n"
       << "  \"path_samples\": " << path_samples << ",\n"
+      << "  \"min_clearance_m\": " << jsonNumber(min_clearance) << ",\n"
+      << "  \"collided\": " << (collided ? "true" : "false") << ",\n"
+      << "  \"collision_time_s\": " << jsonNumber(collision_time) << ",\n"
       << "  \"passed\": " << (failures.empty() ? "true" : "false") << ",\n"
       << "  \"failures\": [";
   for (std::size_t i = 0; i < failures.size(); ++i) {

@@ -11,6 +11,7 @@
 #include "radio_follow/common/yaml_params.hpp"
 #include "radio_follow/control/command_pipeline.hpp"
 #include "radio_follow/control/obstacle_avoidance.hpp"
+#include "radio_follow/evaluation/simulated_scan.hpp"
 
 namespace radio_follow {
 namespace evaluation {
@@ -67,10 +68,7 @@ HomingResult runHomingTrial(const HomingStep& controller, double target_x, doubl
     control::VelocityCommand cmd{command.linear, command.angular};
     if (obstacles && config.use_scan) {
       cmd = control::avoidObstacles(
-          cmd,
-          control::scanSectors(sim::noisyScan(config.obstacles, config.scan, pose, scan_noise, rng),
-                               config.scan.angle_min, config.scan.angleIncrement(),
-                               config.scan.range_min, config.scan.range_max),
+          cmd, simulatedScanSectors(config.obstacles, config.scan, pose, scan_noise, rng),
           config.avoidance);
     }
     robot.step(cmd.linear, cmd.angular, dt);

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Runs the closed-loop experiments of test/experiments.yaml in the lockstep loop
 // (sim/closed_loop.hpp) with the shipped configuration over noise seeds 1..N and prints
-// the Markdown table of doc/experiments.md (ranges over the seeds), then one line per
+// the Markdown table of doc/experiments.md (ranges over the seeds); then, when some
+// experiments' scenarios have obstacles, their table of obstacle metrics (success: runs
+// that kept following without a collision, evaluation::keptFollowing); then one line per
 // broken threshold. Exit status 1 when any run broke one. Deterministic: the same
 // arguments print the same table.
 //   experiments [--seeds N] [--file test/experiments.yaml] [--config-dir DIR]
@@ -16,6 +18,8 @@
 #include <limits>
 #include <string>
 #include <vector>
+
+#include <yaml-cpp/yaml.h>
 
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/evaluation/experiment.hpp"
@@ -60,6 +64,23 @@ std::string range(const std::vector<double>& all, const char* format, double sca
   return (std::string(a) == b ? std::string(a) : std::string(a) + "-" + b) + missing;
 }
 
+/// One experiment's row of the obstacle table: its controller parameters, the share of
+/// runs that kept following without a collision, the collisions, the smallest clearance.
+std::string obstacleRow(const radio_follow::evaluation::Experiment& experiment, int runs,
+                        int kept_following, int collisions, double min_clearance) {
+  std::string params = "shipped";
+  if (experiment.controller_params.IsMap()) {
+    YAML::Emitter text;
+    text << YAML::Flow << experiment.controller_params;
+    params = text.c_str();
+  }
+  char row[300];
+  std::snprintf(row, sizeof(row), "| %s | %s | %.0f | %d of %d | %.2f |\n",
+                experiment.name.c_str(), params.c_str(), 100.0 * kept_following / runs,
+                collisions, runs, min_clearance);
+  return row;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -98,6 +119,7 @@ int main(int argc, char** argv) {
   }
   try {
     std::vector<std::string> broken;
+    std::string obstacle_rows;
     std::printf("| experiment |");
     for (const Column& c : kColumns) {
       std::printf(" %s |", c.title);
@@ -116,11 +138,17 @@ int main(int argc, char** argv) {
             radio_follow::sim::parseSensorProfile(profile, "--sensor-profile");
       }
       std::vector<std::vector<double>> values(std::size(kColumns));
+      int kept_following = 0;
+      int collisions = 0;
+      double min_clearance = std::numeric_limits<double>::infinity();  // no obstacles
       for (int seed = 1; seed <= seeds; ++seed) {
         const auto result = radio_follow::evaluation::runExperiment(experiment, config_dir, seed);
         for (std::size_t i = 0; i < std::size(kColumns); ++i) {
           values[i].push_back(kColumns[i].value(result.report));
         }
+        kept_following += result.kept_following;
+        collisions += result.report.collided;
+        min_clearance = std::min(min_clearance, result.report.min_clearance);
         for (const std::string& v : result.violations) {
           broken.push_back(experiment.name + ", seed " + std::to_string(seed) + ": " + v);
         }
@@ -130,6 +158,15 @@ int main(int argc, char** argv) {
         std::printf(" %s |", range(values[i], kColumns[i].format, kColumns[i].scale).c_str());
       }
       std::printf("\n");
+      if (std::isfinite(min_clearance)) {
+        obstacle_rows += obstacleRow(experiment, seeds, kept_following, collisions, min_clearance);
+      }
+    }
+    if (!obstacle_rows.empty()) {
+      std::printf(
+          "\n| experiment | controller parameters | success (%%) | collisions | min clearance "
+          "(m) |\n|---|---|---|---|---|\n%s",
+          obstacle_rows.c_str());
     }
     std::printf("\nseeds 1-%d; sensor profile %s; %zu threshold(s) broken\n", seeds,
                 profile.empty() ? "as in the file" : profile.c_str(), broken.size());

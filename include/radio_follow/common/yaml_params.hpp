@@ -23,6 +23,9 @@ class YamlParams : public TypedParamSource<YamlParams> {
   /// Loads several files into one namespace as `rosparam load` does one after the other:
   /// a later file's keys replace an earlier one's, mappings merge key by key.
   static YamlParams fromFiles(const std::vector<std::string>& paths);
+  /// These parameters with `over`'s keys merged on top, as one more `rosparam load` (a
+  /// mapping; an undefined or null node changes nothing).
+  YamlParams mergedWith(const YAML::Node& over) const;
 
   void allow(const std::string& name) const override { known_.insert(name); }
   /// Throws ParamError for the first key (nested keys as "a/b") that no param() read.

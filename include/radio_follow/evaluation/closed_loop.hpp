@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <yaml-cpp/yaml.h>
+
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/control/command_pipeline.hpp"
 #include "radio_follow/control/path_follower.hpp"
@@ -14,6 +16,7 @@
 #include "radio_follow/estimation/locator.hpp"
 #include "radio_follow/evaluation/follow_inputs.hpp"
 #include "radio_follow/evaluation/follow_metrics.hpp"
+#include "radio_follow/sim/obstacles.hpp"
 #include "radio_follow/sim/target_path.hpp"
 #include "radio_follow/sim/world.hpp"
 
@@ -45,6 +48,15 @@ struct ClosedLoopConfig {
   sim::WorldConfig world;
   double step_rate = 100.0;  ///< simulator physics steps per second
   double cmd_timeout = 0.5;  ///< s without a command before the base stops
+  /// The laser scanner of a scenario with obstacles (simulator.yaml's `scan/*`): scanned
+  /// at `scan.rate` as the ROS simulator publishes it and handed to the command pipeline,
+  /// which uses it with the controller's `use_scan` (the node subscribes only then).
+  sim::ScanConfig scan;
+  /// The robot's footprint, a circle around its origin, m: its clearance to the
+  /// scenario's obstacles is the origin's minus this, and below 0 is a collision, which
+  /// ends the run. 0.2 m as in the homing benchmark: the shipped avoidance thresholds
+  /// (seed 000's Table A1) fit a robot that size (config/controller_common.yaml).
+  double robot_radius = 0.2;
   estimation::LocatorConfig locator;
   double locator_rate = 20.0;  ///< Hz
   /// The locator node's odom_frame is set: measurements carry the robot's odometry pose
@@ -73,15 +85,18 @@ struct ClosedLoopConfig {
 /// files do: config/simulator.yaml, the layout and scenario by name, config/locator.yaml
 /// (then `locator_overrides` if not empty), config/controller_common.yaml,
 /// config/velocity_controller.yaml, config/path_follower.yaml for the path follower (then
-/// `controller_params` if not empty). Unknown keys in the controller files are refused
-/// as the nodes refuse them. `profile` replaces simulator.yaml's sensor_profile when
-/// given. The simulated hardware is the seed's (world.hardware_seed = seed), so runs over
-/// seeds are runs on as many robots. Throws ParamError.
+/// the file `controller_params` if not empty, as follower.launch's `controller_params`
+/// argument, then the mapping `controller_overrides` if given, e.g. `{use_scan: true}`).
+/// Unknown keys in the controller parameters are refused as the nodes refuse them.
+/// `profile` replaces simulator.yaml's sensor_profile when given. The simulated hardware
+/// is the seed's (world.hardware_seed = seed), so runs over seeds are runs on as many
+/// robots. Throws ParamError.
 ClosedLoopConfig loadClosedLoopConfig(const std::string& config_dir, const std::string& layout,
                                       const std::string& scenario, FollowController controller,
                                       int seed, const std::string& controller_params = "",
                                       const std::string& locator_overrides = "",
-                                      std::optional<sim::SensorProfile> profile = std::nullopt);
+                                      std::optional<sim::SensorProfile> profile = std::nullopt,
+                                      const YAML::Node& controller_overrides = YAML::Node());
 
 /// The whole follow loop in one process on simulated time: world and sensors (sim::World),
 /// the locator, the controller's law and the command pipeline (safety stop, limits), and
@@ -96,9 +111,11 @@ class ClosedLoop {
   ClosedLoop(const ClosedLoop&) = delete;
   ClosedLoop& operator=(const ClosedLoop&) = delete;
 
-  /// Runs the scenario to its end and returns the evaluator's report.
+  /// Runs the scenario to its end, or to the first collision with an obstacle, and
+  /// returns the evaluator's report.
   FollowReport run();
-  /// One physics step (1 / step_rate s); false once the scenario is over.
+  /// One physics step (1 / step_rate s); false once the scenario is over or the robot has
+  /// hit an obstacle.
   bool step();
 
   const FollowMetrics& metrics() const { return metrics_; }
@@ -128,6 +145,9 @@ class ClosedLoop {
 
   bool silent(const std::string& sensor, double t) const;
   void feedSensors(const sim::StepEvents& events, double now);
+  /// With obstacles: the footprint's clearance every step (a collision sets collided_),
+  /// the scan to the pipeline at its rate.
+  void watchObstacles(double now);
   void runLocator(double now);
   void runController(double now);
   void sample(double now);
@@ -147,6 +167,9 @@ class ClosedLoop {
   Timer locator_timer_;
   Timer controller_timer_;
   Timer evaluator_timer_;
+  Timer scan_timer_;
+  sim::Rng scan_rng_;  ///< the scan's noise, apart from the world's (as the ROS simulator's)
+  bool collided_ = false;
   std::optional<estimation::LocatorEstimate> estimate_;  ///< the newest one published
   double estimate_stamp_ = 0.0;
   control::VelocityCommand command_;

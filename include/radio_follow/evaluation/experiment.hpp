@@ -6,6 +6,8 @@
 #include <utility>
 #include <vector>
 
+#include <yaml-cpp/yaml.h>
+
 #include "radio_follow/evaluation/closed_loop.hpp"
 
 namespace radio_follow {
@@ -25,6 +27,8 @@ struct ExperimentCheck {
   std::optional<std::pair<double, double>> stop_window;
   /// A forward command above 0.1 m/s after this (simulator clock).
   std::optional<double> resume_after;
+  /// The robot's footprint never closer than this to an obstacle, m (0: no collision).
+  std::optional<double> min_clearance;
 };
 
 /// One closed-loop experiment: a scenario on a layout with a controller, sensor outages
@@ -35,6 +39,9 @@ struct Experiment {
   std::string scenario;
   FollowController controller = FollowController::kVelocity;
   std::vector<SensorOutage> outages;
+  /// Controller parameters over the shipped files (a mapping, e.g. `{use_scan: true}`;
+  /// null: none), as follower.launch's `controller_params` file would set them.
+  YAML::Node controller_params;
   /// The simulator's sensor profile: the entry's `sensor_profile`, else the file's.
   sim::SensorProfile sensor_profile = sim::SensorProfile::kIdeal;
   ExperimentCheck check;
@@ -56,9 +63,15 @@ struct CommandAt {
 std::vector<std::string> checkRun(const ExperimentCheck& check, const FollowReport& report,
                                   const std::vector<CommandAt>& commands);
 
+/// Whether a run still followed at its end: no collision, and the final gap within
+/// `gap_tolerance` of `follow_distance` (every scenario ends with the person standing
+/// for its settle time, long enough for a robot that kept up to arrive).
+bool keptFollowing(const FollowReport& report, const FollowSettings& settings);
+
 struct ExperimentResult {
   FollowReport report;
   std::vector<std::string> violations;  ///< checkRun's, plus the report's own failures
+  bool kept_following = false;          ///< keptFollowing(report, the run's settings)
 };
 
 /// Runs `experiment` in the lockstep closed loop with the configuration under

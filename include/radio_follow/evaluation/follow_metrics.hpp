@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -85,6 +86,15 @@ struct FollowReport {
   double path_deviation_median = 0.0;  ///< m, outside turns
   double path_deviation_max = 0.0;     ///< m, outside turns
   int path_samples = 0;
+  /// Obstacles (FollowMetrics::addClearance): the smallest distance between the robot's
+  /// footprint and an obstacle surface, m. +inf when the world has no obstacles (JSON:
+  /// null); negative after a collision.
+  double min_clearance = std::numeric_limits<double>::infinity();
+  /// The footprint touched an obstacle (clearance < 0). The lockstep loop ends the run
+  /// there: the simulated base has no contact model and would drive on through it.
+  bool collided = false;
+  /// When it first did, on the clock of the samples (simulator clock), s; NaN if never.
+  double collision_time = std::numeric_limits<double>::quiet_NaN();
   /// Why the run failed as a closed loop, one sentence each (empty: it passed): the robot
   /// never moved, the estimate was never usable. Not a quality threshold: a wiring check.
   std::vector<std::string> failures;
@@ -98,6 +108,10 @@ class FollowMetrics {
   explicit FollowMetrics(const FollowSettings& settings) : settings_(settings) {}
 
   void add(const FollowSample& sample);
+  /// The robot footprint's clearance to the nearest obstacle at time t (clock of the
+  /// samples), m; negative = touching. Called as often as the world steps, not only at the
+  /// sample rate: a collision between two samples still counts. Never called: no obstacles.
+  void addClearance(double t, double clearance);
   FollowReport report() const;
   const std::vector<FollowSample>& samples() const { return samples_; }
   /// The samples as CSV with a header row (for plots and offline analysis).
@@ -106,6 +120,8 @@ class FollowMetrics {
  private:
   FollowSettings settings_;
   std::vector<FollowSample> samples_;
+  double min_clearance_ = std::numeric_limits<double>::infinity();
+  double collision_time_ = std::numeric_limits<double>::quiet_NaN();
 };
 
 }  // namespace evaluation

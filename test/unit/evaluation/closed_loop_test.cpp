@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The lockstep closed loop (sim/closed_loop.hpp) on the shipped configuration: every
 // experiment of test/experiments.yaml (the thesis's Experiment 3 analogues and the fault
-// runs) meets its thresholds on several noise seeds, and a run is deterministic.
+// runs, following among obstacles) meets its thresholds on several noise seeds, a run is
+// deterministic, and the simulated scan reaches the command pipeline.
 #include "radio_follow/evaluation/closed_loop.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -34,6 +36,65 @@ TEST(ClosedLoop, SameSeedGivesBitIdenticalMetrics) {
   EXPECT_EQ(a.metrics().toCsv(), b.metrics().toCsv());
   ClosedLoop other(config("spot", "outdoor_loop", FollowController::kVelocity, 4));
   EXPECT_NE(first, other.run().toJson()) << "the seed must change the noise";
+}
+
+/// obstacle_walk (a wall's corner, a post inside a turn, a gate) with the shipped
+/// controller files and `overrides` on top.
+ClosedLoopConfig obstacleWalk(FollowController controller, const std::string& overrides) {
+  return loadClosedLoopConfig(RF_CONFIG_DIR, "spot", "obstacle_walk", controller, 1, "", "",
+                              std::nullopt, YAML::Load(overrides));
+}
+
+TEST(ClosedLoop, TheBlindFollowerHitsAnObstacleAndTheScanningOneDoesNot) {
+  for (const FollowController controller :
+       {FollowController::kVelocity, FollowController::kPathFollower}) {
+    ClosedLoopConfig c = obstacleWalk(controller, "{use_scan: true}");
+    ASSERT_TRUE(c.pipeline.use_scan);
+    ClosedLoop scanning(c);
+    const FollowReport seen = scanning.run();
+    EXPECT_FALSE(seen.collided) << "clearance " << seen.min_clearance << " m";
+    EXPECT_GE(seen.min_clearance, 0.0);
+    EXPECT_LT(seen.min_clearance, 1.0) << "the robot passed the obstacles";
+    EXPECT_GT(seen.robot_distance, 5.0) << "it drove among them";
+  }
+  // Straight at the person, it cuts the building's corner. The run ends at the collision.
+  ClosedLoop blind(obstacleWalk(FollowController::kVelocity, "{}"));
+  const FollowReport hit = blind.run();
+  EXPECT_TRUE(hit.collided);
+  EXPECT_LT(hit.min_clearance, 0.0);
+  EXPECT_GT(hit.min_clearance, -0.05) << "stopped at the first touch, 1 cm of travel a step";
+  EXPECT_FALSE(blind.step()) << "nothing after a collision";
+  EXPECT_NEAR(blind.world().time() + 1.0, hit.collision_time, 1e-9);
+  EXPECT_LT(blind.world().time(), blind.world().scenario().duration);
+}
+
+TEST(ClosedLoop, UseScanWithoutObstaclesHasNoScanAndDoesNotDrive) {
+  // The simulators scan only scenarios with obstacles, as the ROS simulator publishes
+  // `scan`; a controller with use_scan and no scan blocks forward motion.
+  ClosedLoopConfig c =
+      loadClosedLoopConfig(RF_CONFIG_DIR, "spot", "straight_walk", FollowController::kVelocity,
+                           1, "", "", std::nullopt, YAML::Load("{use_scan: true}"));
+  ClosedLoop loop(c);
+  const FollowReport r = loop.run();
+  EXPECT_TRUE(std::isinf(r.min_clearance));
+  EXPECT_FALSE(r.collided);
+  EXPECT_LT(r.robot_distance, 0.1);
+  for (const auto& command : loop.commands()) {
+    ASSERT_LE(command.command.linear, 0.0) << "at " << command.t << " s";
+  }
+}
+
+TEST(ClosedLoopConfigTest, ControllerOverridesAreStrict) {
+  EXPECT_THROW(obstacleWalk(FollowController::kVelocity, "{use_scna: true}"), ParamError);
+  EXPECT_THROW(obstacleWalk(FollowController::kVelocity, "{use_scan: 3.5}"), ParamError);
+  EXPECT_THROW(obstacleWalk(FollowController::kVelocity, "[use_scan]"), ParamError);
+  EXPECT_FALSE(obstacleWalk(FollowController::kVelocity, "{}").pipeline.use_scan)
+      << "the shipped default";
+  ClosedLoopConfig c = obstacleWalk(FollowController::kVelocity, "{avoidance: {turn_rate: 0.4}}");
+  EXPECT_DOUBLE_EQ(c.pipeline.avoidance.turn_rate, 0.4);
+  EXPECT_DOUBLE_EQ(c.pipeline.avoidance.stop_threshold, 0.35) << "merged key by key";
+  c.robot_radius = -0.1;
+  EXPECT_THROW(ClosedLoop{c}, ParamError);
 }
 
 TEST(ClosedLoop, EveryExperimentMeetsItsThresholdsOnEverySeed) {
@@ -99,6 +160,16 @@ TEST(ClosedLoop, ThresholdsCanFail) {
   EXPECT_EQ(checkRun(stop, r, {{11.0, 0.2}, {13.0, 0.05}}).size(), 2u);
   EXPECT_EQ(checkRun(stop, r, {}).size(), 2u) << "no command in the window is a failure too";
 
+  ExperimentCheck clear;
+  clear.min_clearance = 0.0;
+  FollowReport near = r;
+  near.min_clearance = 0.01;
+  EXPECT_TRUE(checkRun(clear, near, {}).empty());
+  near.min_clearance = -0.01;
+  near.collided = true;
+  EXPECT_EQ(checkRun(clear, near, {}).size(), 1u) << "a collision";
+  EXPECT_TRUE(checkRun(clear, r, {}).empty()) << "no obstacles: infinite clearance";
+
   ExperimentCheck path;
   path.max_path_deviation_beyond_estimate = 0.1;
   FollowReport wide = r;
@@ -142,6 +213,11 @@ TEST(ExperimentsFile, SensorProfileDefaultsToTheFilesAndEntriesMayOverride) {
   EXPECT_EQ(e[1].sensor_profile, sim::SensorProfile::kIdeal);
   write("a: {layout: spot, scenario: outdoor_loop}\n");
   EXPECT_EQ(loadExperiments(path).front().sensor_profile, sim::SensorProfile::kIdeal);
+  EXPECT_TRUE(loadExperiments(path).front().controller_params.IsNull());
+  write("a: {layout: spot, scenario: outdoor_loop, controller_params: {use_scan: true}}\n");
+  EXPECT_TRUE(loadExperiments(path).front().controller_params["use_scan"].as<bool>());
+  write("a: {layout: spot, scenario: outdoor_loop, controller_params: [use_scan]}\n");
+  EXPECT_THROW(loadExperiments(path), ParamError);
   write("a: {layout: spot, scenario: outdoor_loop, sensor_profile: rough}\n");
   try {
     loadExperiments(path);

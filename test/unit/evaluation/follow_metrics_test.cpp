@@ -181,6 +181,30 @@ TEST(FollowMetrics, FinalGapIsTheLastSamplesDistance) {
   EXPECT_NE(r.toJson().find("\"final_gap_m\": 0.2236"), std::string::npos);
 }
 
+TEST(FollowMetrics, ClearanceIsInfiniteWithoutObstaclesAndTheFirstTouchIsTheCollision) {
+  FollowMetrics metrics = straightRun(1.6, 0.0, 0.0);
+  FollowReport r = metrics.report();
+  EXPECT_TRUE(std::isinf(r.min_clearance) && r.min_clearance > 0.0) << "no obstacles";
+  EXPECT_FALSE(r.collided);
+  EXPECT_TRUE(std::isnan(r.collision_time));
+  EXPECT_NE(r.toJson().find("\"min_clearance_m\": null"), std::string::npos);
+  EXPECT_NE(r.toJson().find("\"collided\": false"), std::string::npos);
+
+  metrics.addClearance(1.0, 0.5);
+  metrics.addClearance(1.01, 0.02);
+  r = metrics.report();
+  EXPECT_DOUBLE_EQ(r.min_clearance, 0.02);
+  EXPECT_FALSE(r.collided) << "close is not touching";
+  metrics.addClearance(1.02, -0.01);
+  metrics.addClearance(1.03, -0.03);
+  r = metrics.report();
+  EXPECT_DOUBLE_EQ(r.min_clearance, -0.03);
+  EXPECT_TRUE(r.collided);
+  EXPECT_DOUBLE_EQ(r.collision_time, 1.02) << "the first touch";
+  EXPECT_NE(r.toJson().find("\"collided\": true"), std::string::npos);
+  EXPECT_NE(r.toJson().find("\"collision_time_s\": 1.02"), std::string::npos);
+}
+
 TEST(FollowMetrics, CsvHasAHeaderAndOneRowPerSample) {
   const FollowMetrics metrics = straightRun(1.6, 0.0, 0.0);
   const std::string csv = metrics.toCsv();
