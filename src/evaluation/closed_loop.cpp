@@ -10,6 +10,7 @@
 #include "radio_follow/common/yaml_params.hpp"
 #include "radio_follow/evaluation/calibration_run.hpp"
 #include "radio_follow/evaluation/simulated_scan.hpp"
+#include "radio_follow/evaluation/simulated_tdoa.hpp"
 
 namespace radio_follow {
 namespace evaluation {
@@ -287,25 +288,12 @@ void ClosedLoop::feedSensors(const sim::StepEvents& events, double now) {
                         odometryAt(stamp));
   }
   for (const sim::TdoaEvent& e : events.tdoa) {
-    const std::size_t ref = config_.world.tdoa_reference;
-    const double variance = config_.world.tdoa_sigma * config_.world.tdoa_sigma;
     const double stamp = kClockStart + e.t;
-    std::size_t k = 0;
-    for (std::size_t i = 0; i < layout.tdoa_anchors.size(); ++i) {
-      if (i == ref) {
-        continue;
-      }
-      const std::string& a = layout.tdoa_anchors[i].id;
-      const std::string& r = layout.tdoa_anchors[ref].id;
-      // As LocatorInputs routes the driver's messages: the robot's own modules' blinks
-      // calibrate the anchors, the target's are fused.
-      if (e.module) {
-        locator_.addTdoaCalibration(layout.twr_modules[*e.module].id, a, r, e.differences[k++],
-                                    stamp);
-      } else {
-        locator_.addTdoa(a, r, e.differences[k++], variance, stamp, odometryAt(stamp));
-      }
-    }
+    // As LocatorInputs routes the driver's messages: the robot's own modules' blinks
+    // calibrate the anchors, the target's are fused.
+    feedTdoaBlink(locator_, layout, config_.world.tdoa_reference, e.differences, e.module,
+                  config_.world.tdoa_sigma * config_.world.tdoa_sigma, stamp,
+                  e.module ? std::nullopt : odometryAt(stamp));
   }
 }
 

@@ -3,6 +3,8 @@
 
 #include <random>
 
+#include "radio_follow/evaluation/simulated_tdoa.hpp"
+
 namespace radio_follow {
 namespace evaluation {
 
@@ -76,19 +78,9 @@ void StandingRobotSensors::blink(estimation::Locator& locator, std::size_t sourc
   if (differences.empty()) {
     return;  // missed
   }
-  std::size_t k = 0;
-  for (std::size_t i = 0; i < layout_.tdoa_anchors.size(); ++i) {
-    if (i == ref) {
-      continue;
-    }
-    const std::string& a = layout_.tdoa_anchors[i].id;
-    const std::string& r = layout_.tdoa_anchors[ref].id;
-    if (source == 0) {
-      locator.addTdoa(a, r, differences[k++], world_.tdoa_sigma * world_.tdoa_sigma, t);
-    } else {
-      locator.addTdoaCalibration(layout_.twr_modules[source - 1].id, a, r, differences[k++], t);
-    }
-  }
+  feedTdoaBlink(locator, layout_, ref, differences,
+                source == 0 ? std::nullopt : std::optional<std::size_t>(source - 1),
+                world_.tdoa_sigma * world_.tdoa_sigma, t);
 }
 
 }  // namespace evaluation

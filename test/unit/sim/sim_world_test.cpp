@@ -46,6 +46,37 @@ TEST(World, EverySensorReportsAtItsRate) {
     EXPECT_NEAR(n, 200, 1);
 }
 
+// The anchors hear the person's device and, as often, every one of the robot's own modules
+// (at its layout position): those blinks are what the locator calibrates the anchors from.
+TEST(World, TdoaAnchorsHearThePersonAndTheRobotsOwnModules) {
+  const Layout layout = loadLayoutFile(std::string(RF_CONFIG_DIR) + "/layouts/spot_tdoa.yaml");
+  ASSERT_EQ(layout.tdoa_anchors.size(), 3u);
+  WorldConfig config;
+  config.profile = SensorProfile::kIdeal;
+  config.tdoa_sigma = 0.0;  // exact differences
+  World world(layout, standing(3.0, 2.0), config);
+  const auto difference = [&](const Eigen::Vector3d& p, std::size_t a) {
+    return (p - layout.tdoa_anchors[a].position).norm() -
+           (p - layout.tdoa_anchors[0].position).norm();
+  };
+  int person = 0;
+  int module = 0;
+  for (int i = 0; i < 1000; ++i) {  // 10 s
+    const StepEvents e = world.step(0.0, 0.0, 0.01);
+    for (const auto& ev : e.tdoa) {
+      ASSERT_EQ(ev.differences.size(), 2u);
+      const Eigen::Vector3d from =
+          ev.module ? layout.twr_modules[*ev.module].position : world.targetInRobot();
+      person += !ev.module;
+      module += ev.module.has_value();
+      EXPECT_NEAR(ev.differences[0], difference(from, 1), 1e-9);
+      EXPECT_NEAR(ev.differences[1], difference(from, 2), 1e-9);
+    }
+  }
+  EXPECT_NEAR(person, 100, 1);  // tdoa_rate 10 Hz
+  EXPECT_NEAR(module, 100, 1);  // one module, as often
+}
+
 TEST(World, TargetIsSeenInTheRobotFrame) {
   Scenario s = standing(3.0, 4.0);
   s.robot_start = Pose2{3.0, 0.0, kPi / 2.0};  // robot faces +y, target 4 m ahead
