@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "radio_follow/common/median.hpp"
 #include "radio_follow/common/param_error.hpp"
 
 namespace radio_follow {
@@ -64,17 +65,7 @@ std::optional<double> MovingMedian::update(double rssi) {
   if (!window_.push(rssi)) {
     return std::nullopt;
   }
-  std::vector<double> sorted(window_.values().begin(), window_.values().end());
-  const std::size_t mid = sorted.size() / 2;
-  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(mid),
-                   sorted.end());
-  const double upper = sorted[mid];
-  if (sorted.size() % 2 == 1) {
-    return upper;
-  }
-  const double lower =
-      *std::max_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(mid));
-  return 0.5 * (lower + upper);
+  return median(std::vector<double>(window_.values().begin(), window_.values().end()));
 }
 
 RssiKalman::RssiKalman(const RssiKalmanParams& params)

@@ -234,7 +234,7 @@ bool Locator::addTdoaCalibration(const std::string& module_id, const std::string
     ++stats_.invalid_measurements;
     return false;
   }
-  ++stats_.tdoa_calibration_blinks;
+  ++stats_.tdoa_calibration_differences;
   return true;
 }
 

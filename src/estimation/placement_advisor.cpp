@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "radio_follow/common/angles.hpp"
+#include "radio_follow/common/median.hpp"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/estimation/fisher.hpp"
 #include "radio_follow/models/sensor_tables.hpp"
@@ -34,18 +35,6 @@ bool inBoardFieldOfView(const AoaBoard& board, const Eigen::Vector3d& p) {
   }
   const Eigen::Vector3d boresight = board.orientation * Eigen::Vector3d::UnitX();
   return boresight.dot(v) / n >= std::cos(board.field_of_view);
-}
-
-double median(std::vector<double> values) {
-  if (values.empty()) {
-    return std::nan("");
-  }
-  const auto mid = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-  std::nth_element(values.begin(), mid, values.end());
-  if (values.size() % 2 == 1) {
-    return *mid;
-  }
-  return 0.5 * (*mid + *std::max_element(values.begin(), mid));
 }
 
 /// Singular values of the centred point cloud, largest first (dimension `dims`).

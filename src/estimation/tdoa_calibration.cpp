@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
+#include "radio_follow/common/median.hpp"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/common/param_keys.hpp"
 
@@ -83,7 +85,7 @@ std::optional<double> TdoaCalibration::offset(std::size_t a, std::size_t b) cons
 std::vector<TdoaCalibration::Pair> TdoaCalibration::pairs() const {
   std::vector<Pair> out;
   for (const Window& w : windows_) {
-    out.push_back(Pair{w.a, w.b, w.residuals.size(), w.offset, w.newest});
+    out.push_back(Pair{w.a, w.b, w.residuals.size(), w.offset});
   }
   return out;
 }
@@ -114,13 +116,7 @@ void TdoaCalibration::refresh(Window& w) const {
   for (const auto& r : w.residuals) {
     values.push_back(r.second);
   }
-  const std::size_t n = values.size();
-  std::nth_element(values.begin(), values.begin() + n / 2, values.end());
-  double median = values[n / 2];
-  if (n % 2 == 0) {
-    median = 0.5 * (median + *std::max_element(values.begin(), values.begin() + n / 2));
-  }
-  w.offset = median;
+  w.offset = median(std::move(values));
 }
 
 }  // namespace estimation

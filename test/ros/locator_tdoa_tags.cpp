@@ -62,7 +62,7 @@ TEST(LocatorTdoaTags, OnlyTheTargetsTagIsFused) {
   EXPECT_EQ(inputs.calibrationBlinks(), 50u);
   EXPECT_EQ(inputs.otherTdoaTags().count("5722"), 0u);
   EXPECT_EQ(inputs.otherTdoaTags().at("0C1F"), 50u);
-  EXPECT_EQ(locator.stats().tdoa_calibration_blinks, 150u);  // three differences each
+  EXPECT_EQ(locator.stats().tdoa_calibration_differences, 150u);  // three differences each
   EXPECT_EQ(locator.update(5.0).status, estimation::TargetStatus::kLost);
   for (const auto& pair : locator.tdoaCalibration().pairs()) {
     ASSERT_TRUE(pair.offset);

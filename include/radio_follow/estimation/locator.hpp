@@ -160,7 +160,7 @@ struct LocatorStats {
   std::size_t ambiguous = 0;  ///< epochs reported AMBIGUOUS (mirror test)
   /// Target TDoA differences held back: their pair had no learnt offset yet.
   std::size_t tdoa_uncalibrated = 0;
-  std::size_t tdoa_calibration_blinks = 0;  ///< module differences fed to the calibration
+  std::size_t tdoa_calibration_differences = 0;  ///< module differences fed to the calibration
   double last_solve_seconds = 0.0;
 };
 

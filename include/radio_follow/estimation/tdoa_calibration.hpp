@@ -48,9 +48,8 @@ class TdoaCalibration {
   struct Pair {
     std::size_t a = 0;  ///< index into Layout::tdoa_anchors
     std::size_t b = 0;
-    std::size_t samples = 0;  ///< residuals within the window
+    std::size_t samples = 0;       ///< residuals within the window
     std::optional<double> offset;  ///< m, once `samples` >= min_blinks
-    double last = 0.0;  ///< stamp of the newest residual, s
   };
 
   TdoaCalibration(const Layout& layout, const TdoaCalibrationConfig& config);

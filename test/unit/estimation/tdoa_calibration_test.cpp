@@ -154,7 +154,7 @@ TEST(TdoaCalibration, TheLocatorFusesTheTargetsDifferencesCorrected) {
     }
   }
   EXPECT_FALSE(locator.addTdoaCalibration("DA12", "2002", "2000", 0.1, 0.1));  // not a module
-  EXPECT_EQ(locator.stats().tdoa_calibration_blinks, 20u);
+  EXPECT_EQ(locator.stats().tdoa_calibration_differences, 20u);
   locator.addTdoa("2002", "2000", target(1), 0.0, 0.2);
   locator.addTdoa("2001", "2000", target(2), 0.0, 0.2);
   const LocatorEstimate e = locator.update(0.2);
