@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
@@ -130,6 +131,7 @@ void HomingParams::validate() const {
   require(min_parallax_angle > 0.0 && min_parallax_angle < kPi / 2.0, "~min_parallax_angle",
           min_parallax_angle, "an angle in (0, pi/2) rad");
   require(positive(error_threshold), "~error_threshold", error_threshold, "a ratio > 0");
+  require(range_step >= 0.0 && range_step <= 1.0, "~range_step", range_step, "a step in [0, 1]");
   require(positive(z_threshold), "~z_threshold", z_threshold, "a z value > 0");
   require(positive(arrival_distance), "~arrival_distance", arrival_distance, "metres > 0");
   require(positive(agreement_distance), "~agreement_distance", agreement_distance, "metres > 0");
@@ -137,6 +139,35 @@ void HomingParams::validate() const {
   require(positive(linear_gain), "~linear_gain", linear_gain, "a gain > 0 in 1/s");
   require(positive(angular_gain), "~angular_gain", angular_gain, "a gain > 0 in 1/s");
   require(positive(max_angular), "~max_angular", max_angular, "a yaw rate > 0 in rad/s");
+}
+
+Eigen::Vector2d rangeStep(const Eigen::Vector2d& goal, const Eigen::Vector2d& robot,
+                          double distance, double k) {
+  const Eigen::Vector2d rel = goal - robot;
+  const double d_p = rel.norm();
+  if (!(d_p > 1e-9) || !std::isfinite(distance)) {
+    return goal;  // on the robot: no line of sight to step along
+  }
+  return robot + rel * (1.0 + k * (distance - d_p) / d_p);
+}
+
+double distanceAlongBearing(const Eigen::Vector2d& sensor, double bearing,
+                            const Eigen::Vector2d& origin, double height_difference,
+                            double range) {
+  if (!std::isfinite(range) || range < 0.0) {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  // Horizontal radius of the range sphere at the target's height.
+  const double radius =
+      std::sqrt(std::max(0.0, range * range - height_difference * height_difference));
+  const Eigen::Vector2d u(std::cos(bearing), std::sin(bearing));
+  const Eigen::Vector2d offset = sensor - origin;
+  // |offset + t u| = radius: t^2 + 2 b t + |offset|^2 - radius^2 = 0.
+  const double b = offset.dot(u);
+  const double disc = b * b - offset.squaredNorm() + radius * radius;
+  // A circle that does not reach the ray (a short range): the ray's closest point to it.
+  const double t = disc > 0.0 ? -b + std::sqrt(disc) : -b;
+  return std::max(0.0, t);
 }
 
 HybridHoming::HybridHoming(const HomingParams& params)
@@ -164,8 +195,12 @@ void HybridHoming::update(const Eigen::Vector2d& robot, double bearing, double d
     vector_outlier = vector_.isOutlier(raw, params_.z_threshold);
     vector_.add(raw);
   }
-  const auto parallax = parallax_.update(robot, bearing);
+  auto parallax = parallax_.update(robot, bearing);
   const auto vector = vector_.estimate();
+  if (parallax && vector && params_.range_step > 0.0) {
+    parallax = rangeStep(*parallax, robot, (*vector - robot).norm(), params_.range_step);
+    parallax_.set(*parallax);
+  }
 
   if (!parallax) {
     goal_ = vector;

@@ -33,6 +33,9 @@ const ParamTable<HomingParams>& estimatorTable() {
           .add("min_parallax_angle", &H::min_parallax_angle, "rad", "Parallax angle needed.",
                Range::open(0.0, kPi / 2.0))
           .add("error_threshold", &H::error_threshold, "", "Eq 14 threshold.", Range::above(0.0))
+          .add("range_step", &H::range_step, "",
+               "Step of the parallax goal towards the vector goal's distance (0 = seed 000's law).",
+               Range::closed(0.0, 1.0))
           .add("z_threshold", &H::z_threshold, "", "One-sided z of the agreement test.",
                Range::above(0.0))
           .add("arrival_distance", &H::arrival_distance, "m", "Arrived within this.",
@@ -65,6 +68,8 @@ const ParamTable<HomingControllerParams>& HomingControllerParams::table() {
                Range::above(0.0))
           .add("search_speed", &P::search_speed, "m/s", "Forward speed while no goal exists.",
                Range::atLeast(0.0))
+          .add("target_height", &P::target_height, "m",
+               "Height of the target's UWB antenna in base_link (slant range to horizontal).")
           .include(rssiTable(), &P::rssi)
           .include(RssiFilterParams::table(), &P::rssi_filter, "rssi_filter/")
           .include(estimatorTable(), &P::homing);
@@ -89,6 +94,7 @@ void HomingController::reset() {
   robot_.reset();
   last_bearing_.reset();
   range_stamp_.reset();
+  range_antenna_.reset();
   rssi_filter_.reset();
   homing_ = HybridHoming(params_.homing);
 }
@@ -111,10 +117,12 @@ HomingController::OdometryResult HomingController::onOdometry(const Pose2& pose,
   return result;
 }
 
-void HomingController::onRange(double range, double stamp) {
-  if (std::isfinite(range) && range >= 0.0) {
+void HomingController::onRange(double range, double stamp,
+                               const std::optional<Eigen::Vector3d>& antenna) {
+  if (std::isfinite(range) && range >= 0.0 && (!antenna || antenna->allFinite())) {
     range_ = range;
     range_stamp_ = stamp;
+    range_antenna_ = antenna;
   }
 }
 
@@ -147,7 +155,14 @@ HomingController::BearingResult HomingController::onBearing(double azimuth, doub
   const Eigen::Vector2d sensor(robot_->x + c * params_.board_x - s * params_.board_y,
                                robot_->y + s * params_.board_x + c * params_.board_y);
   const double bearing = wrapAngle(robot_->yaw + params_.board_yaw + azimuth);
-  homing_.update(sensor, bearing, distanceAt(stamp, filtered));
+  double distance = distanceAt(stamp, filtered);
+  if (params_.usesUwb() && range_antenna_ && std::isfinite(distance)) {
+    const Eigen::Vector2d antenna(robot_->x + c * range_antenna_->x() - s * range_antenna_->y(),
+                                  robot_->y + s * range_antenna_->x() + c * range_antenna_->y());
+    distance = distanceAlongBearing(sensor, bearing, antenna,
+                                    params_.target_height - range_antenna_->z(), distance);
+  }
+  homing_.update(sensor, bearing, distance);
   last_bearing_ = bearing;
   return BearingResult::kUsed;
 }

@@ -81,6 +81,7 @@ struct HomingParams {
   double min_baseline = 0.2;         ///< m
   double min_parallax_angle = 0.05;  ///< rad
   double error_threshold = 0.3;      ///< eq 14
+  double range_step = 0.5;           ///< along the line of sight, per reading (rangeStep)
   double z_threshold = 1.645;        ///< 90 % one-sided
   double arrival_distance = 0.3;     ///< m
   double agreement_distance = 0.3;   ///< m, parallax vs vector at arrival
@@ -124,6 +125,25 @@ class HybridHoming {
   HomingSource source_ = HomingSource::kNone;
   std::size_t refused_ = 0;
 };
+
+/// The Kohonen step's counterpart along the line of sight (not in seed 000): moves
+/// `goal` along the robot-goal line by `k` times the difference between `distance` (the
+/// vector goal's distance from the robot) and the goal's own. Bearings from a robot that
+/// drives straight at the target all run along its path, so eqs 10-13 never correct the
+/// parallax goal's error along it; the range does (doc/control/homing.md, "Range step").
+Eigen::Vector2d rangeStep(const Eigen::Vector2d& goal, const Eigen::Vector2d& robot,
+                          double distance, double k);
+
+/// Where a range puts the target along a bearing ray (the vector estimate's distance,
+/// eqs 1-2, from a range taken somewhere else): the distance t >= 0 from `sensor` along
+/// `bearing` to the point whose slant range from an antenna at horizontal position
+/// `origin`, `height_difference` below or above the target, is `range`. A UWB module
+/// measures from its own antenna and in 3-D, not from the AoA board on the plane; near
+/// the target both differences are a large share of the distance. A range too short to
+/// reach the ray gives the ray's closest point to the antenna; NaN for a bad range.
+double distanceAlongBearing(const Eigen::Vector2d& sensor, double bearing,
+                            const Eigen::Vector2d& origin, double height_difference,
+                            double range);
 
 /// Eq 14: distance between the parallax and vector goals over the mean of their
 /// distances to the robot.

@@ -32,6 +32,9 @@ struct HomingControllerParams {
   double odom_timeout = 0.5;
   /// Forward speed while no goal exists yet (building the parallax baseline), m/s.
   double search_speed = 0.15;
+  /// Height of the target's UWB antenna in base_link, m: turns a UWB range whose
+  /// antenna position is known (onRange's `antenna`) into a horizontal distance.
+  double target_height = 1.0;
   RssiModel rssi;
   /// Smoother of the RSSI before `rssi` turns it into a distance (`rssi_filter/...`).
   RssiFilterParams rssi_filter;
@@ -75,9 +78,14 @@ class HomingController {
   /// would otherwise enter every later goal through the parallax estimate.
   OdometryResult onOdometry(const Pose2& pose, double stamp, double now);
 
-  /// A range to the target, m (used with distance_source "uwb"). Non-finite or negative
-  /// ranges are ignored.
-  void onRange(double range, double stamp);
+  /// A range to the target, m (used with distance_source "uwb"), measured by an antenna
+  /// at `antenna` in base_link (the layout's module position): the vector estimate then
+  /// takes the point on the bearing ray at that slant range from the antenna, with the
+  /// target at target_height (distanceAlongBearing). Without `antenna` the range counts
+  /// as a horizontal distance from the AoA board. Non-finite or negative ranges are
+  /// ignored.
+  void onRange(double range, double stamp,
+               const std::optional<Eigen::Vector3d>& antenna = std::nullopt);
 
   enum class BearingResult {
     kUsed,
@@ -120,6 +128,7 @@ class HomingController {
   std::optional<double> last_bearing_;  ///< odometry frame, rad
   std::optional<double> range_stamp_;
   double range_ = 0.0;
+  std::optional<Eigen::Vector3d> range_antenna_;  ///< base_link, of the newest range
   std::uint64_t odom_refused_ = 0;
 };
 

@@ -35,7 +35,7 @@ void ControllerCommonParams::load(const ParamReader& pnh) {
   pnh.param("rate", rate, rate);
   pnh.param("start_enabled", start_enabled, start_enabled);
   pnh.param("layout_file", layout_file, layout_file);
-  std::optional<Layout> layout;
+  layout.reset();
   if (!layout_file.empty()) {
     layout = loadLayoutFile(layout_file);
     range_topics = conventionalTopics(*layout).uwb;  // ~range_topics below still wins

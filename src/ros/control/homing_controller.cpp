@@ -5,6 +5,7 @@
 #include <tf2/utils.h>
 
 #include <cmath>
+#include <optional>
 
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/common/param_keys.hpp"
@@ -64,13 +65,24 @@ void HomingControllerNode::onDistanceRanges(const UwbRanges::ConstPtr& msg) {
   // With ~layout_file the module's calibration corrects the range, as for the safety stop
   // and the locator: a DWM1001 reads long by up to 0.3 m, which at homing distances is a
   // large share of the vector estimate's distance.
+  // The module's antenna position from the layout places the range (it is measured
+  // from there, in 3-D, not from the AoA board): HomingController::onRange.
   const auto& calibrated = common().calibrated_modules;
-  const auto module = calibrated.find(normalizeId(msg->tag_id));
+  const std::string module_id = normalizeId(msg->tag_id);
+  const auto module = calibrated.find(module_id);
+  std::optional<Eigen::Vector3d> antenna;
+  if (common().layout) {
+    for (const TwrModule& m : common().layout->twr_modules) {
+      if (m.id == module_id) {
+        antenna = m.position;
+      }
+    }
+  }
   for (const auto& r : msg->ranges) {
     if (common().target_anchor_id.empty() ||
         normalizeId(r.anchor_id) == common().target_anchor_id) {
       law_.onRange(module == calibrated.end() ? r.range : module->second.correctRange(r.range),
-                   stamp.toSec());
+                   stamp.toSec(), antenna);
     }
   }
 }

@@ -171,6 +171,37 @@ TEST(HomingControllerParams, RssiFilterLoadsFromItsMappingAndRefusesTyposAndBadV
   }
 }
 
+// The range comes from a module behind and below the board, the robot turned: the goal
+// is where that slant range from the module meets the bearing ray, not the range
+// measured off from the board (which would put it 0.3 m too far here).
+TEST(HomingController, UwbRangeIsPlacedFromItsModulesAntenna) {
+  HomingControllerParams params = uwbParams();
+  params.board_x = 0.1;
+  params.target_height = 0.9;
+  HomingController law(params);
+  const Pose2 robot = pose(1.0, 2.0, kPi / 2.0);  // facing +y; the board is at (1.0, 2.1)
+  const Eigen::Vector2d target(1.0, 5.1);         // 3 m ahead of the board
+  const Eigen::Vector3d module(-0.2, 0.0, 0.5);   // in base_link: at (1.0, 1.8), 0.4 m below
+  const double range = std::hypot(target.y() - 1.8, 0.9 - 0.5);
+  ASSERT_TRUE(law.onOdometry(robot, 0.0, 0.0).accepted);
+  law.onRange(range, 0.0, module);
+  ASSERT_EQ(law.onBearing(0.0, kNaN, 0.0), HomingController::BearingResult::kUsed);
+  ASSERT_TRUE(law.goal());
+  EXPECT_NEAR((*law.goal() - target).norm(), 0.0, 1e-9);
+  // Without the antenna the same range counts from the board: too far.
+  HomingController flat(params);
+  ASSERT_TRUE(flat.onOdometry(robot, 0.0, 0.0).accepted);
+  flat.onRange(range, 0.0);
+  ASSERT_EQ(flat.onBearing(0.0, kNaN, 0.0), HomingController::BearingResult::kUsed);
+  EXPECT_NEAR(flat.goal()->y(), 2.1 + range, 1e-9);
+  // A non-finite antenna position is refused with its range.
+  HomingController refused(params);
+  ASSERT_TRUE(refused.onOdometry(robot, 0.0, 0.0).accepted);
+  refused.onRange(range, 0.0, Eigen::Vector3d(kNaN, 0.0, 0.0));
+  refused.onBearing(0.0, kNaN, 0.0);
+  EXPECT_FALSE(refused.goal());
+}
+
 TEST(HomingController, StaleUwbRangeGivesNoDistance) {
   HomingControllerParams params = uwbParams();
   HomingController law(params);

@@ -105,13 +105,20 @@ TEST(HybridHoming, AgreeingEstimatesReportParallax) {
   EXPECT_NEAR((*homing.goal() - target).norm(), 0.0, 1e-6);
 }
 
+/// Seed 000's law as published: no step along the line of sight (HomingParams::range_step).
+HomingParams paperParams() {
+  HomingParams params;
+  params.range_step = 0.0;
+  return params;
+}
+
 TEST(HybridHoming, DisagreementWithConsistentVectorAverages) {
   // Distances are consistently 2 m short, so the vector goal sits 2 m before the true
   // target while parallax finds it: err > 0.3 and the vector goal is no outlier (the
   // robot sways sideways, its raw goals alternate) -> the average is reported and the
   // parallax goal is pulled to it.
   const Eigen::Vector2d target(6.0, 0.0);
-  HybridHoming homing{HomingParams()};
+  HybridHoming homing{paperParams()};
   bool saw_average = false;
   for (int i = 0; i < 8 && !saw_average; ++i) {
     const Eigen::Vector2d robot(0.0, i % 2 == 0 ? -0.5 : 0.5);
@@ -128,7 +135,7 @@ TEST(HybridHoming, DisagreementWithConsistentVectorAverages) {
 
 TEST(HybridHoming, OutlyingVectorKeepsParallax) {
   const Eigen::Vector2d target(6.0, 0.0);
-  HybridHoming homing{HomingParams()};
+  HybridHoming homing{paperParams()};
   std::mt19937 rng(7);
   std::normal_distribution<double> noise(0.0, 0.05);
   Eigen::Vector2d robot(0.0, 0.0);
@@ -171,7 +178,7 @@ TEST(HybridHoming, ConvergesWithNoisyReadingsAndArrives) {
 
 TEST(HybridHoming, ArrivalNeedsAgreementWhenBothEstimatesExist) {
   const Eigen::Vector2d target(3.0, 0.0);
-  HomingParams params;
+  HomingParams params = paperParams();
   // With a lower threshold the averaging step pulls the parallax goal onto the (wrong)
   // vector goal and the two agree: this test is about the arrival rule, not eq 14.
   params.error_threshold = 0.3;
@@ -189,11 +196,12 @@ TEST(HybridHoming, ArrivalNeedsAgreementWhenBothEstimatesExist) {
 /// A parallax goal 0.15 m short of the beacon, then the robot drives straight at it with
 /// exact readings: the bearing lines run along the path, so no Kohonen step can move the
 /// goal along it; only eq 14's averaging step can.
-Eigen::Vector2d goalAfterStraightApproach(double error_threshold) {
+Eigen::Vector2d goalAfterStraightApproach(double error_threshold, double range_step = 0.0) {
   const Eigen::Vector2d target(3.0, 0.0);
   const Eigen::Vector2d short_goal(2.85, 0.0);
   HomingParams params;
   params.error_threshold = error_threshold;
+  params.range_step = range_step;
   HybridHoming homing{params};
   for (const Eigen::Vector2d& robot : {Eigen::Vector2d(0.0, -0.5), Eigen::Vector2d(0.0, 0.5)}) {
     homing.update(robot, bearingTo(robot, short_goal), (target - robot).norm());
@@ -212,6 +220,61 @@ TEST(HybridHoming, LowThresholdCorrectsTheParallaxErrorAlongTheLineOfSight) {
   // 0.1: averaged towards the vector goal until the two agree to 0.1 of the distance
   // (0.07 m here).
   EXPECT_LT((goalAfterStraightApproach(0.1) - target).norm(), 0.05);
+}
+
+TEST(HybridHoming, RangeStepCorrectsTheParallaxErrorAlongTheLineOfSightAtTheNodesThreshold) {
+  const Eigen::Vector2d target(3.0, 0.0);
+  // With eq 14 at the paper's 0.3 the range step alone pulls the short goal in.
+  EXPECT_LT((goalAfterStraightApproach(0.3, 0.5) - target).norm(), 0.01);
+  EXPECT_LT((goalAfterStraightApproach(0.3, HomingParams().range_step) - target).norm(), 0.01);
+}
+
+TEST(RangeStep, MovesTheGoalAlongTheLineOfSightOnly) {
+  const Eigen::Vector2d robot(1.0, 1.0);
+  const Eigen::Vector2d goal(4.0, 5.0);  // 5 m away
+  const Eigen::Vector2d moved = rangeStep(goal, robot, 6.0, 0.5);
+  EXPECT_NEAR((moved - robot).norm(), 5.5, 1e-12);
+  // Still on the robot-goal line.
+  const Eigen::Vector2d a = goal - robot;
+  const Eigen::Vector2d b = moved - robot;
+  EXPECT_NEAR(a.x() * b.y() - a.y() * b.x(), 0.0, 1e-12);
+  EXPECT_EQ(rangeStep(goal, robot, 6.0, 0.0), goal);
+  EXPECT_NEAR((rangeStep(goal, robot, 6.0, 1.0) - robot).norm(), 6.0, 1e-12);
+  // A goal on the robot, or no distance: nothing to step along.
+  EXPECT_EQ(rangeStep(robot, robot, 2.0, 0.5), robot);
+  EXPECT_EQ(rangeStep(goal, robot, std::numeric_limits<double>::quiet_NaN(), 0.5), goal);
+}
+
+TEST(DistanceAlongBearing, PlacesASlantRangeFromAnotherAntennaOnTheBearingRay) {
+  // Board 0.065 m ahead of the module, target 3 m ahead of the board and 0.15 m above the
+  // module: the module's range is the 3-D distance from the module, not from the board.
+  const Eigen::Vector2d board(0.065, 0.0);
+  const Eigen::Vector2d module(0.0, 0.0);
+  const Eigen::Vector2d target(3.065, 0.0);
+  const double range = std::hypot((target - module).norm(), 0.15);
+  EXPECT_NEAR(distanceAlongBearing(board, 0.0, module, 0.15, range), 3.0, 1e-9);
+  // Sideways: the target 2 m to the board's left, the module 0.3 m behind it.
+  const Eigen::Vector2d side_target(0.065, 2.0);
+  const Eigen::Vector2d behind(-0.235, 0.0);
+  const double side_range = std::hypot((side_target - behind).norm(), -0.4);
+  EXPECT_NEAR(distanceAlongBearing(board, kPi / 2.0, behind, -0.4, side_range), 2.0, 1e-9);
+  // The same antenna, on the plane: the range itself.
+  EXPECT_NEAR(distanceAlongBearing(board, 1.0, board, 0.0, 2.5), 2.5, 1e-12);
+}
+
+TEST(DistanceAlongBearing, ShortOrBadRanges) {
+  const Eigen::Vector2d board(0.2, 0.0);
+  const Eigen::Vector2d module(0.0, 0.0);
+  // Shorter than the height difference: the horizontal distance is 0, the ray's closest
+  // point to the module is the board itself (the module is behind it).
+  EXPECT_NEAR(distanceAlongBearing(board, 0.0, module, 0.5, 0.3), 0.0, 1e-12);
+  // A module ahead of the board that the range circle around it does not let the ray
+  // reach: the ray's closest point to the module.
+  EXPECT_NEAR(distanceAlongBearing(board, kPi / 2.0, Eigen::Vector2d(0.5, 1.0), 0.0, 0.1), 1.0,
+              1e-12);
+  EXPECT_TRUE(std::isnan(distanceAlongBearing(board, 0.0, module, 0.0, -1.0)));
+  EXPECT_TRUE(std::isnan(
+      distanceAlongBearing(board, 0.0, module, 0.0, std::numeric_limits<double>::infinity())));
 }
 
 TEST(HybridHoming, BearingsOnlyArriveOnDistance) {

@@ -139,7 +139,9 @@ TEST(HomingTrial, ObstacleCourseBlocksTheDirectPathAndKeepsStartAndTargetClear) 
 
 // A wall across the way: blind, the law drives into it; with the scan (seed 000 Appendix
 // B's rules, the node's avoidance/* defaults, a robot of the 0.2 m radius they leave room
-// for) it goes round and arrives.
+// for) it goes round and arrives, in each of five noise seeds. The wall reaches 1.3 m to
+// one side of the straight line and 0.7 m to the other: a wall centred on it is a trap
+// for these reactive rules (no escape behaviour; doc/homing_experiment.md).
 TEST(HomingTrial, ScanAvoidanceGoesRoundAWallThatStopsABlindRobot) {
   const HomingNodeParams node = loadHomingNodeParams(RF_CONFIG_DIR);
   control::HomingControllerParams params = node.law;
@@ -148,19 +150,22 @@ TEST(HomingTrial, ScanAvoidanceGoesRoundAWallThatStopsABlindRobot) {
   HomingTrialConfig config;
   config.robot.max_linear = 1.0;
   config.avoidance = node.pipeline.avoidance;
-  config.obstacles.walls.push_back({3.0, -1.0, 3.0, 1.0});
+  config.obstacles.walls.push_back({3.0, -0.7, 3.0, 1.3});
   const HomingNoise noise = seed000NoiseConfigurations()[0];
-  const HomingResult blind =
-      runHomingTrial(homingControllerStep(params), 6.0, 0.0, noise, config, 1);
-  EXPECT_TRUE(blind.collided);
-  EXPECT_FALSE(blind.success);
-  config.use_scan = true;
-  const HomingResult seeing =
-      runHomingTrial(homingControllerStep(params), 6.0, 0.0, noise, config, 1);
-  EXPECT_FALSE(seeing.collided);
-  EXPECT_TRUE(seeing.success);
-  EXPECT_GT(seeing.min_clearance, 0.0);
-  EXPECT_LT(seeing.final_error, 0.5);
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    config.use_scan = false;
+    const HomingResult blind =
+        runHomingTrial(homingControllerStep(params), 6.0, 0.0, noise, config, seed);
+    EXPECT_TRUE(blind.collided) << "seed " << seed;
+    EXPECT_FALSE(blind.success) << "seed " << seed;
+    config.use_scan = true;
+    const HomingResult seeing =
+        runHomingTrial(homingControllerStep(params), 6.0, 0.0, noise, config, seed);
+    EXPECT_FALSE(seeing.collided) << "seed " << seed;
+    EXPECT_TRUE(seeing.success) << "seed " << seed;
+    EXPECT_GT(seeing.min_clearance, 0.0) << "seed " << seed;
+    EXPECT_LT(seeing.final_error, 0.5) << "seed " << seed;
+  }
 }
 
 }  // namespace

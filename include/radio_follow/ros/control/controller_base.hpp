@@ -42,6 +42,8 @@ struct ControllerCommonParams : control::CommandPipelineParams {
   /// Optional sensor layout: when set, `range_topics` and `target_anchor_id` default to
   /// the layout's conventional topics (`uwb/<module id>/ranges`) and target anchor.
   std::string layout_file;
+  /// The layout loaded from layout_file; nullopt without one.
+  std::optional<Layout> layout;
   /// UwbRanges topics whose raw ranges feed the safety stop.
   std::vector<std::string> range_topics{"uwb_ranges"};
 
