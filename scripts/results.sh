@@ -148,23 +148,31 @@ if wanted homing; then
   shown '"$RF_WS"/devel/lib/radio_follow/homing_experiment --obstacles 12 --robot-radius 0.3'
   "$bin/homing_experiment" --obstacles 12 --robot-radius 0.3
   echo
-  echo "A lower eq 14 threshold (doc/control/homing.md), on the benchmark:"
+  echo "Seed 000's law as published (range_step 0: no step along the line of sight), on the benchmark:"
   echo
-  printf 'error_threshold: 0.1\n' >"$tmp/threshold.yaml"
-  shown "printf 'error_threshold: 0.1\\n' > /tmp/threshold.yaml; \"\$RF_WS\"/devel/lib/radio_follow/homing_experiment --params /tmp/threshold.yaml"
+  printf 'range_step: 0.0\n' >"$tmp/paper_law.yaml"
+  shown "printf 'range_step: 0.0\\n' > /tmp/paper_law.yaml; \"\$RF_WS\"/devel/lib/radio_follow/homing_experiment --params /tmp/paper_law.yaml"
+  "$bin/homing_experiment" --params "$tmp/paper_law.yaml"
+  echo
+  echo "A lower eq 14 threshold (doc/control/homing.md) instead of the range step, on the benchmark:"
+  echo
+  printf 'range_step: 0.0\nerror_threshold: 0.1\n' >"$tmp/threshold.yaml"
+  shown "printf 'range_step: 0.0\\nerror_threshold: 0.1\\n' > /tmp/threshold.yaml; \"\$RF_WS\"/devel/lib/radio_follow/homing_experiment --params /tmp/threshold.yaml"
   "$bin/homing_experiment" --params "$tmp/threshold.yaml"
   echo
   echo "Through the ROS nodes against the simulator (4 x real time; ROS message timing varies),"
-  echo "with the node's error_threshold 0.3 and with 0.1:"
+  echo "with the node's law (range_step 0.5, error_threshold 0.3), the paper's (range_step 0) and"
+  echo "the paper's with error_threshold 0.1:"
   echo
-  shown 'RF_SEED=N rostest --text radio_follow homing_static_beacon.test [error_threshold:=0.1]   # N = 1, 2, 3'
-  echo "| seed | error_threshold | passed | first arrival logged (s, simulated) | final gap (m) | goal error (m) | wall (s) | simulated duration / 4 (s) | wall / ideal |"
-  echo "|---|---|---|---|---|---|---|---|---|"
-  for threshold in 0.3 0.1; do
+  shown 'RF_SEED=N rostest --text radio_follow homing_static_beacon.test [range_step:=0.0] [error_threshold:=0.1]   # N = 1, 2, 3'
+  echo "| seed | range_step | error_threshold | passed | first arrival logged (s, simulated) | final gap (m) | goal error (m) | wall (s) | simulated duration / 4 (s) | wall / ideal |"
+  echo "|---|---|---|---|---|---|---|---|---|---|"
+  for law in "0.5 0.3" "0.0 0.3" "0.0 0.1"; do
+    read -r step threshold <<<"$law"
     for seed in 1 2 3; do
       t0=$(now)
       passed=yes
-      RF_SEED=$seed rostest --text radio_follow homing_static_beacon.test error_threshold:=$threshold >"$tmp/homing_ros.log" 2>&1 || passed=no
+      RF_SEED=$seed rostest --text radio_follow homing_static_beacon.test range_step:=$step error_threshold:=$threshold >"$tmp/homing_ros.log" 2>&1 || passed=no
       grep -q '^OK$' "$tmp/homing_ros.log" || passed=no
       wall=$(elapsed "$t0")
       metrics="$ROS_HOME/radio_follow_experiments/homing_static_beacon/metrics.json"
@@ -172,8 +180,8 @@ if wanted homing; then
       arrival=$(grep -m1 'Arrived at the target' "$tmp/homing_ros.log" | sed -n 's/^[^[]*\[[^]]*\] \[[0-9.]*, \([0-9]*\.[0-9]\{0,2\}\).*/\1/p')
       goal=$(grep -m1 '^goal error:' "$tmp/homing_ros.log" | awk '{printf "%.3f", $3}')
       read -r gap duration < <(python3 -c 'import json,sys; m=json.load(open(sys.argv[1])); print("%.3f %.1f" % (m["final_gap_m"], m["duration_s"]))' "$metrics")
-      awk -v s="$seed" -v th="$threshold" -v p="$passed" -v a="${arrival:--}" -v g="$gap" -v e="${goal:--}" -v w="$wall" -v d="$duration" \
-        'BEGIN { printf "| %s | %s | %s | %s | %s | %s | %s | %.1f | %.2f |\n", s, th, p, a, g, e, w, d / 4, w / (d / 4) }'
+      awk -v s="$seed" -v k="$step" -v th="$threshold" -v p="$passed" -v a="${arrival:--}" -v g="$gap" -v e="${goal:--}" -v w="$wall" -v d="$duration" \
+        'BEGIN { printf "| %s | %s | %s | %s | %s | %s | %s | %s | %.1f | %.2f |\n", s, k, th, p, a, g, e, w, d / 4, w / (d / 4) }'
     done
   done
 fi

@@ -152,8 +152,7 @@ Eigen::Vector2d rangeStep(const Eigen::Vector2d& goal, const Eigen::Vector2d& ro
 }
 
 double distanceAlongBearing(const Eigen::Vector2d& sensor, double bearing,
-                            const Eigen::Vector2d& origin, double height_difference,
-                            double range) {
+                            const Eigen::Vector2d& origin, double height_difference, double range) {
   if (!std::isfinite(range) || range < 0.0) {
     return std::numeric_limits<double>::quiet_NaN();
   }

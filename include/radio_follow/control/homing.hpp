@@ -142,8 +142,7 @@ Eigen::Vector2d rangeStep(const Eigen::Vector2d& goal, const Eigen::Vector2d& ro
 /// the target both differences are a large share of the distance. A range too short to
 /// reach the ray gives the ray's closest point to the antenna; NaN for a bad range.
 double distanceAlongBearing(const Eigen::Vector2d& sensor, double bearing,
-                            const Eigen::Vector2d& origin, double height_difference,
-                            double range);
+                            const Eigen::Vector2d& origin, double height_difference, double range);
 
 /// Eq 14: distance between the parallax and vector goals over the mean of their
 /// distances to the robot.

@@ -163,8 +163,7 @@ TEST(HomingControllerParams, RssiFilterLoadsFromItsMappingAndRefusesTyposAndBadV
   HomingControllerParams().load(typo, limits);
   EXPECT_THROW(typo.requireAllKnown(), ParamError);
   try {
-    HomingControllerParams().load(YamlParams(YAML::Load("{rssi_filter: {type: kalmann}}")),
-                                  limits);
+    HomingControllerParams().load(YamlParams(YAML::Load("{rssi_filter: {type: kalmann}}")), limits);
     ADD_FAILURE() << "type kalmann accepted";
   } catch (const ParamError& e) {
     EXPECT_EQ(e.name(), "~rssi_filter/type") << e.what();
