@@ -150,16 +150,12 @@ HomingController::BearingResult HomingController::onBearing(double azimuth, doub
     return BearingResult::kNotFinite;
   }
   // The board's position and boresight in the odometry frame.
-  const double c = std::cos(robot_->yaw);
-  const double s = std::sin(robot_->yaw);
-  const Eigen::Vector2d sensor(robot_->x + c * params_.board_x - s * params_.board_y,
-                               robot_->y + s * params_.board_x + c * params_.board_y);
+  const Eigen::Vector2d sensor =
+      robot_->toFixed(Eigen::Vector3d(params_.board_x, params_.board_y, 0.0)).head<2>();
   const double bearing = wrapAngle(robot_->yaw + params_.board_yaw + azimuth);
   double distance = distanceAt(stamp, filtered);
   if (params_.usesUwb() && range_antenna_ && std::isfinite(distance)) {
-    const Eigen::Vector2d antenna(robot_->x + c * range_antenna_->x() - s * range_antenna_->y(),
-                                  robot_->y + s * range_antenna_->x() + c * range_antenna_->y());
-    distance = distanceAlongBearing(sensor, bearing, antenna,
+    distance = distanceAlongBearing(sensor, bearing, robot_->toFixed(*range_antenna_).head<2>(),
                                     params_.target_height - range_antenna_->z(), distance);
   }
   homing_.update(sensor, bearing, distance);

@@ -68,15 +68,11 @@ void HomingControllerNode::onDistanceRanges(const UwbRanges::ConstPtr& msg) {
   // The module's antenna position from the layout places the range (it is measured
   // from there, in 3-D, not from the AoA board): HomingController::onRange.
   const auto& calibrated = common().calibrated_modules;
-  const std::string module_id = normalizeId(msg->tag_id);
-  const auto module = calibrated.find(module_id);
+  const auto module = calibrated.find(normalizeId(msg->tag_id));
   std::optional<Eigen::Vector3d> antenna;
-  if (common().layout) {
-    for (const TwrModule& m : common().layout->twr_modules) {
-      if (m.id == module_id) {
-        antenna = m.position;
-      }
-    }
+  if (const TwrModule* m =
+          common().layout ? common().layout->findTwrModule(msg->tag_id) : nullptr) {
+    antenna = m->position;
   }
   for (const auto& r : msg->ranges) {
     if (common().target_anchor_id.empty() ||
