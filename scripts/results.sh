@@ -160,6 +160,11 @@ if wanted homing; then
   shown "printf 'range_step: 0.0\\nerror_threshold: 0.1\\n' > /tmp/threshold.yaml; \"\$RF_WS\"/devel/lib/radio_follow/homing_experiment --params /tmp/threshold.yaml"
   "$bin/homing_experiment" --params "$tmp/threshold.yaml"
   echo
+  echo "The law's parameters one at a time (configuration 5's goal error against the paper's 0.11 m):"
+  echo
+  shown 'bash scripts/homing_sweep.sh'
+  bash "$repo/scripts/homing_sweep.sh"
+  echo
   echo "Through the ROS nodes against the simulator (4 x real time; ROS message timing varies),"
   echo "with the node's law (range_step 0.5, error_threshold 0.3), the paper's (range_step 0) and"
   echo "the paper's with error_threshold 0.1:"

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
+# The homing law's parameters one at a time on seed 000's Table 2 benchmark at the 0.3 m
+# arrival radius: each row is the shipped config/homing_controller.yaml with one value
+# changed (homing_experiment --params). Prints a Markdown table: the goal error of
+# configurations 1-4 (lowest-highest) and configuration 5's goal error, final error,
+# success and time. Deterministic (fixed seed). Needs a built workspace.
+#   bash scripts/homing_sweep.sh
+set -euo pipefail
+repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+set +u
+# shellcheck disable=SC1091
+source "$repo/scripts/env.sh"
+set -u
+experiment="$RF_WS/devel/lib/radio_follow/homing_experiment"
+overlay="$(mktemp)"
+trap 'rm -f "$overlay"' EXIT
+
+echo "| changed (shipped: range_step 0.5, error_threshold 0.3, kohonen_k 0.8, agreement_distance 0.3, tau 5, window 20) | goal err. 1-4 (m) | goal err. 5 (m) | final err. 5 (m) | success 5 (%) | time 5 (s) |"
+echo "| --- | --- | --- | --- | --- | --- |"
+for change in "(none)" "range_step: 0.0" "range_step: 0.1" "range_step: 1.0" \
+  "error_threshold: 0.6" "error_threshold: 1.0" "kohonen_k: 0.5" "kohonen_k: 0.15" \
+  "agreement_distance: 0.1" "agreement_distance: 0.05" "tau: 10.0" "window: 40"; do
+  if [[ "$change" == "(none)" ]]; then : >"$overlay"; else echo "$change" >"$overlay"; fi
+  "$experiment" --params "$overlay" | awk -F' *[|] *' -v change="$change" '
+    /^[|] [1-4]:/ { g = $6 + 0; if (n++ == 0 || g < lo) lo = g; if (g > hi) hi = g }
+    /^[|] 5:/ { success = $3; time = $4; goal = $6; final = $7 }
+    END { printf "| %s | %.2f-%.2f | %s | %s | %s | %s |\n", change, lo, hi, goal, final, success, time }'
+done
