@@ -61,10 +61,14 @@ ColdStartResult runColdStarts(const Layout& layout, sim::WorldConfig world,
     const auto at_target = [&target](double) { return target; };
     double mirror_run = 0.0;
     double longest = 0.0;
+    double longest_start = 0.0;
     bool usable_seen = false;
     for (double now = kUpdatePeriod; now <= params.duration + 1e-9; now += kUpdatePeriod) {
       sensors.feed(estimator, now, at_target, rng);
       const estimation::LocatorEstimate e = estimator.update(now);
+      if (params.observer) {
+        params.observer(trial, now, e, target);
+      }
       ++result.updates;
       result.ambiguous_updates += e.status == estimation::TargetStatus::kAmbiguous;
       if (!hasPosition(e.status)) {
@@ -78,7 +82,10 @@ ColdStartResult runColdStarts(const Layout& layout, sim::WorldConfig world,
       const double to_target = (e.position - target).head<2>().norm();
       const bool on_mirror = has_mirror && (e.position - mirror).head<2>().norm() < to_target;
       mirror_run = on_mirror ? mirror_run + kUpdatePeriod : 0.0;
-      longest = std::max(longest, mirror_run);
+      if (mirror_run > longest) {
+        longest = mirror_run;
+        longest_start = now - mirror_run + kUpdatePeriod;
+      }
       if (now >= 1.0) {
         errors.push_back(to_target);
         if (const auto v =
@@ -89,7 +96,10 @@ ColdStartResult runColdStarts(const Layout& layout, sim::WorldConfig world,
     }
     ++result.trials;
     result.mirror_any += longest > 0.0;
-    result.mirror_locks_over_1s += longest > 1.0;
+    if (longest > 1.0) {
+      ++result.mirror_locks_over_1s;
+      result.locks.push_back(MirrorLock{trial, robot, target, longest_start, longest});
+    }
     result.longest_mirror_s = std::max(result.longest_mirror_s, longest);
   }
   result.usable = times_to_usable.size();

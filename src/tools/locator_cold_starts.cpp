@@ -3,13 +3,17 @@
 // nothing, many times, on a standing robot's simulated sensors with the shipped
 // config/locator.yaml; how often, and how long, a drivable estimate sits on the mirror image.
 //   locator_cold_starts [--layout spot] [--trials 10000] [--sensor-profile realistic]
-//                       [--locator-overrides FILE] [--config-dir DIR]
+//                       [--locator-overrides FILE] [--config-dir DIR] [--trace TRIAL]
+// Lists the trials that sat on the mirror for more than 1 s; --trace prints every update of
+// one trial (status, error, hypotheses) to see why.
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <map>
 #include <string>
 
+#include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/common/tool_options.hpp"
 #include "radio_follow/evaluation/closed_loop.hpp"
@@ -21,7 +25,7 @@ int usage(const std::string& problem) {
   std::fprintf(stderr,
                "locator_cold_starts: %s\nusage: locator_cold_starts [--layout L] [--trials N] "
                "[--sensor-profile ideal|realistic] [--locator-overrides FILE] "
-               "[--config-dir DIR]\n",
+               "[--config-dir DIR] [--trace TRIAL]\n",
                problem.c_str());
   return 2;
 }
@@ -34,7 +38,8 @@ int main(int argc, char** argv) {
                                              {"--trials", "10000"},
                                              {"--sensor-profile", "realistic"},
                                              {"--locator-overrides", ""},
-                                             {"--config-dir", RF_CONFIG_DIR}};
+                                             {"--config-dir", RF_CONFIG_DIR},
+                                             {"--trace", ""}};
   if (const auto problem = rf::readToolOptions(argc, argv, options)) {
     return usage(*problem);
   }
@@ -50,6 +55,27 @@ int main(int argc, char** argv) {
         profile);
     rf::evaluation::ColdStartParams params;
     params.trials = static_cast<std::size_t>(trials);
+    if (!options["--trace"].empty()) {
+      char* end = nullptr;
+      const long traced = std::strtol(options["--trace"].c_str(), &end, 10);
+      rf::require(*end == '\0' && traced >= 0 && traced < trials, "--trace", options["--trace"],
+                  "a trial index in [0, --trials)");
+      std::printf(
+          "trial %ld: t (s), status, estimate x y (m), error (m), hypotheses, "
+          "weight, alternative x y (m)\n",
+          traced);
+      params.observer = [traced](std::size_t trial, double now,
+                                 const rf::estimation::LocatorEstimate& e,
+                                 const Eigen::Vector3d& target) {
+        if (static_cast<long>(trial) != traced) {
+          return;
+        }
+        std::printf("%.2f %s %.3f %.3f %.3f %d %.3f %.3f %.3f\n", now,
+                    rf::estimation::toString(e.status), e.position.x(), e.position.y(),
+                    (e.position - target).head<2>().norm(), e.hypotheses, e.hypothesis_weight,
+                    e.alternative.x(), e.alternative.y());
+      };
+    }
     const rf::evaluation::ColdStartResult r =
         rf::evaluation::runColdStarts(c.layout, c.world, c.locator, params);
     std::printf(
@@ -60,6 +86,13 @@ int main(int argc, char** argv) {
         "mirror locks longer than 1 s: %zu; trials ever on the mirror while usable: %zu; "
         "longest %.2f s\n",
         r.mirror_locks_over_1s, r.mirror_any, r.longest_mirror_s);
+    for (const rf::evaluation::MirrorLock& lock : r.locks) {
+      std::printf(
+          "  trial %zu (robot %llu): person at %.2f m, %.0f deg; on the mirror %.2f s "
+          "from %.2f s\n",
+          lock.trial, static_cast<unsigned long long>(lock.robot), lock.target.head<2>().norm(),
+          rf::rad2deg(std::atan2(lock.target.y(), lock.target.x())), lock.longest_s, lock.start_s);
+    }
     std::printf(
         "usable (OK or DEGRADED) in %zu trials, median after %.2f s; AMBIGUOUS %.2f %% "
         "of updates\n",

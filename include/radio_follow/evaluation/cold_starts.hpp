@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <Eigen/Core>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "radio_follow/config/layout.hpp"
@@ -24,6 +26,20 @@ struct ColdStartParams {
   /// robot).
   int robots = 8;
   std::uint64_t seed = 1;
+  /// Called after every update of every trial (trial index, time, estimate, the person);
+  /// for tracing one trial. Empty: not called.
+  std::function<void(std::size_t, double, const estimation::LocatorEstimate&,
+                     const Eigen::Vector3d&)>
+      observer;
+};
+
+/// A trial whose usable estimate sat on the mirror side for more than 1 s in a row.
+struct MirrorLock {
+  std::size_t trial = 0;
+  std::uint64_t robot = 0;  ///< index into the robots (hardware seed - 1)
+  Eigen::Vector3d target = Eigen::Vector3d::Zero();
+  double start_s = 0.0;  ///< when its longest run on the mirror began, s into the trial
+  double longest_s = 0.0;
 };
 
 struct ColdStartResult {
@@ -34,6 +50,8 @@ struct ColdStartResult {
   /// ... for any time at all.
   std::size_t mirror_any = 0;
   double longest_mirror_s = 0.0;
+  /// Every trial counted in mirror_locks_over_1s.
+  std::vector<MirrorLock> locks;
   /// Trials that reached OK or DEGRADED within the duration; median time to it, s.
   std::size_t usable = 0;
   double median_time_to_usable = 0.0;

@@ -45,6 +45,39 @@ TEST(ColdStarts, TheSolverEstimatorIsMeasuredTheSameWay) {
   EXPECT_GT(r.updates, 20u * 59u);
 }
 
+TEST(ColdStarts, ListsEveryLockAndShowsEveryUpdateToTheObserver) {
+  // Ranges only from three nearly collinear modules and the solver estimator without its
+  // mirror test: the mirror is as good as the person, so some trials sit on it.
+  ClosedLoopConfig c =
+      loadClosedLoopConfig(RF_CONFIG_DIR, "spot_twr", "outdoor_loop", FollowController::kVelocity,
+                           1, "", "", sim::SensorProfile::kRealistic);
+  c.locator.estimator = estimation::Estimator::kSolver;
+  c.locator.ambiguity_margin = 0.0;
+  ColdStartParams params;
+  params.trials = 40;
+  params.robots = 1;
+  std::size_t observed = 0;
+  std::size_t last_trial = 0;
+  params.observer = [&](std::size_t trial, double now, const estimation::LocatorEstimate&,
+                        const Eigen::Vector3d& target) {
+    ++observed;
+    last_trial = trial;
+    EXPECT_GT(now, 0.0);
+    EXPECT_GE(target.head<2>().norm(), params.min_distance - 1e-9);
+  };
+  const ColdStartResult r = runColdStarts(c.layout, c.world, c.locator, params);
+  EXPECT_EQ(observed, r.updates);
+  EXPECT_EQ(last_trial, 39u);
+  ASSERT_GT(r.mirror_locks_over_1s, 0u);
+  ASSERT_EQ(r.locks.size(), r.mirror_locks_over_1s);
+  for (const MirrorLock& lock : r.locks) {
+    EXPECT_LT(lock.trial, 40u);
+    EXPECT_GT(lock.longest_s, 1.0);
+    EXPECT_LE(lock.start_s + lock.longest_s, params.duration + 0.05 + 1e-9);
+    EXPECT_LE(lock.longest_s, r.longest_mirror_s);
+  }
+}
+
 }  // namespace
 }  // namespace evaluation
 }  // namespace radio_follow
