@@ -16,7 +16,10 @@ experiment="$RF_WS/devel/lib/radio_follow/homing_experiment"
 overlay="$(mktemp)"
 trap 'rm -f "$overlay"' EXIT
 
-echo "| changed (shipped: range_step 0.5, error_threshold 0.3, kohonen_k 0.8, agreement_distance 0.3, tau 5, window 20) | goal err. 1-4 (m) | goal err. 5 (m) | final err. 5 (m) | success 5 (%) | time 5 (s) |"
+# The shipped values of the swept parameters, from the file itself (top-level keys only).
+shipped="$(awk -F': *' '/^(range_step|error_threshold|kohonen_k|agreement_distance|tau|window):/ {
+  sub(/ *#.*/, "", $2); printf "%s%s %s", sep, $1, $2; sep = ", " }' "$repo/config/homing_controller.yaml")"
+echo "| changed (shipped: $shipped) | goal err. 1-4 (m) | goal err. 5 (m) | final err. 5 (m) | success 5 (%) | time 5 (s) |"
 echo "| --- | --- | --- | --- | --- | --- |"
 for change in "(none)" "range_step: 0.0" "range_step: 0.1" "range_step: 1.0" \
   "error_threshold: 0.6" "error_threshold: 1.0" "kohonen_k: 0.5" "kohonen_k: 0.15" \
