@@ -189,7 +189,10 @@ void HybridHoming::update(const Eigen::Vector2d& robot, double bearing, double d
     return;
   }
   bool vector_outlier = true;
-  if (std::isfinite(distance) && distance > 0.0) {
+  // A zero distance is a reading like any other (the target at the sensor): a sensor that
+  // reports at least zero turns every short reading into one, and dropping them would
+  // leave only the long readings near the target (doc/control/homing.md, "Distance").
+  if (std::isfinite(distance) && distance >= 0.0) {
     const Eigen::Vector2d raw = VectorEstimator::rawGoal(robot, bearing, distance);
     vector_outlier = vector_.isOutlier(raw, params_.z_threshold);
     vector_.add(raw);

@@ -40,18 +40,23 @@ HomingResult runHomingTrial(const HomingStep& controller, double target_x, doubl
   const bool obstacles = !config.obstacles.empty();
   result.min_clearance = std::numeric_limits<double>::infinity();
   std::normal_distribution<double> scan_noise(0.0, config.scan.sigma);
-  double t = 0.0;
-  for (; t <= config.time_limit; t += dt) {
-    const Pose2& pose = robot.pose();
+  // False (and the run over) once the robot touches an obstacle.
+  auto clear = [&]() {
     if (obstacles) {
+      const Pose2& pose = robot.pose();
       result.min_clearance =
           std::min(result.min_clearance,
                    sim::clearance(config.obstacles, pose.x, pose.y) - config.robot_radius);
-      if (result.min_clearance < 0.0) {
-        result.collided = true;
-        break;
-      }
+      result.collided = result.min_clearance < 0.0;
     }
+    return !result.collided;
+  };
+  double t = 0.0;
+  for (; t <= config.time_limit; t += dt) {
+    if (!clear()) {
+      break;
+    }
+    const Pose2& pose = robot.pose();
     const double dx = target_x - pose.x;
     const double dy = target_y - pose.y;
     const double distance = std::hypot(dx, dy);
@@ -73,8 +78,19 @@ HomingResult runHomingTrial(const HomingStep& controller, double target_x, doubl
     }
     robot.step(cmd.linear, cmd.angular, dt);
   }
-  const Pose2& end = robot.pose();
   result.time = std::min(t, config.time_limit);
+  if (command.arrived) {
+    // The law now commands zero; the base brakes at its deceleration limit and comes to
+    // rest a little further on. The robot's final position is where it stands, as a tape
+    // measure would find it, not where the law decided to stop.
+    for (double braking = 0.0; (robot.linear() != 0.0 || robot.angular() != 0.0) &&
+                               braking < config.time_limit && clear();
+         braking += dt) {
+      robot.step(0.0, 0.0, dt);
+    }
+    clear();
+  }
+  const Pose2& end = robot.pose();
   result.final_error = std::hypot(target_x - end.x, target_y - end.y);
   result.success =
       !result.collided && command.arrived && result.final_error < config.success_radius;

@@ -102,7 +102,8 @@ class HybridHoming {
   explicit HybridHoming(const HomingParams& params);
 
   /// One reading at robot position `robot` with world bearing `bearing` and an
-  /// estimated distance (NaN when none: the vector estimate then skips this reading).
+  /// estimated distance >= 0 (NaN or negative when none: the vector estimate then skips
+  /// this reading; zero is kept, see update()'s comment).
   /// A non-finite position or bearing is refused (counted) and changes nothing.
   void update(const Eigen::Vector2d& robot, double bearing, double distance);
   std::size_t refused() const { return refused_; }

@@ -73,7 +73,7 @@ struct HomingResult {
   double time = 0.0;             ///< s until the controller said "arrived"
   double net_velocity = 0.0;     ///< straight start-end distance / time, m/s
   double goal_error = 0.0;       ///< final goal estimate vs beacon, m
-  double final_error = 0.0;      ///< final robot position vs beacon, m
+  double final_error = 0.0;      ///< robot at rest after arriving vs beacon, m
   double path_efficiency = 0.0;  ///< straight start-end distance / distance driven
   /// Smallest distance between the robot's footprint and an obstacle, m (+inf without
   /// obstacles); a collision ends the run.

@@ -320,6 +320,20 @@ namespace {
 
 // One NaN odometry pose used to enter the parallax estimate and make every later goal
 // NaN; a non-finite reading is now refused and the estimate recovers with good data.
+TEST(HybridHoming, AZeroDistanceIsAReadingANegativeOneIsNot) {
+  // A sensor that clamps at zero reports 0 for every reading the noise took below it;
+  // refusing those would keep only the long readings near the target.
+  const Eigen::Vector2d robot(1.0, 2.0);
+  HybridHoming zero{HomingParams()};
+  zero.update(robot, 0.3, 0.0);
+  ASSERT_TRUE(zero.vectorGoal().has_value());
+  EXPECT_NEAR((*zero.vectorGoal() - robot).norm(), 0.0, 1e-12);
+  HybridHoming negative{HomingParams()};
+  negative.update(robot, 0.3, -0.2);
+  EXPECT_FALSE(negative.vectorGoal().has_value());
+  EXPECT_EQ(negative.refused(), 0u);  // the bearing still counts
+}
+
 TEST(HybridHomingInput, NonFiniteReadingIsRefusedAndTheGoalStaysFinite) {
   HomingParams params;
   HybridHoming homing(params);

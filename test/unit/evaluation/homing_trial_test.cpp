@@ -38,6 +38,25 @@ TEST(HomingTrial, NoiseFreeStraightAheadIsEfficient) {
   EXPECT_LT(r.time, 30.0);
 }
 
+TEST(HomingTrial, TheFinalPositionIsWhereTheRobotComesToRest) {
+  // Full speed until "arrived" at 1 m short of the target: the base then brakes at its
+  // limit and stops v^2 / (2 a) further on, where the final error is measured.
+  HomingTrialConfig config;
+  config.robot.max_linear = 1.0;
+  config.robot.max_linear_decel = 2.0;
+  const HomingStep rush = [](const HomingMeasurement& m) {
+    HomingCommand c;
+    c.linear = 1.0;
+    c.arrived = m.distance < 1.0;
+    return c;
+  };
+  const HomingResult r = runHomingTrial(rush, 6.0, 0.0, HomingNoise{}, config, 1);
+  EXPECT_TRUE(r.success);
+  // Arrived between 0.9 and 1.0 m short (0.1 m per 10 Hz cycle), then 0.25 m of braking.
+  EXPECT_GT(r.final_error, 0.9 - 0.25 - 0.01);
+  EXPECT_LT(r.final_error, 1.0 - 0.25 + 0.01);
+}
+
 TEST(HomingTrial, TargetBehindNeedsATurnAndCostsEfficiencyNothingElse) {
   const HomingResult r = runHomingTrial(naive, -4.0, 1.0, HomingNoise{}, HomingTrialConfig{}, 1);
   EXPECT_TRUE(r.success);
