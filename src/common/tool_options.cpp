@@ -1,6 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/common/tool_options.hpp"
 
+#include <algorithm>
+#include <cctype>
+#include <limits>
+
+#include "radio_follow/common/param_error.hpp"
+
 namespace radio_follow {
 
 std::optional<std::string> readToolOptions(int argc, const char* const* argv,
@@ -13,6 +19,17 @@ std::optional<std::string> readToolOptions(int argc, const char* const* argv,
     option->second = argv[i + 1];
   }
   return std::nullopt;
+}
+
+std::size_t toolCount(const std::string& option, const std::string& value, std::size_t min) {
+  const std::string expected = "a whole number >= " + std::to_string(min);
+  const bool digits =
+      !value.empty() && value.size() <= 18 &&
+      std::all_of(value.begin(), value.end(), [](unsigned char c) { return std::isdigit(c); });
+  require(digits, option, value, expected);
+  const std::size_t count = static_cast<std::size_t>(std::stoull(value));
+  require(count >= min, option, value, expected);
+  return count;
 }
 
 }  // namespace radio_follow

@@ -27,6 +27,9 @@ constexpr double kMaxEvidence = 50.0;
 constexpr double kCollinearRatio = 0.15;
 /// Mirror and main closer than this (or 3 sigma) are one hypothesis, m.
 constexpr double kMinMirrorSeparation = 0.5;
+/// The main hypothesis moving farther than this (or 3 sigma) between two updates has
+/// jumped to another place: its mirror image is drawn again, m.
+constexpr double kMainJump = 1.0;
 /// Cold starts sample this many times the particle count, then keep the best N.
 constexpr std::size_t kColdStartFactor = 4;
 /// Velocity spread of a cold start, m/s per axis (a walking person).
@@ -84,6 +87,7 @@ void ParticleTracker::reset() {
   mirror_.reset();
   mirror_active_ = false;
   evidence_ = 0.0;
+  last_main_mean_.reset();
   last_position_fix_ = -1.0;
   std::fill(std::begin(last_kind_), std::end(last_kind_), -1.0);
 }
@@ -402,6 +406,20 @@ void ParticleTracker::maintainMirror() {
     main_.assign(positions, velocities, main_.time());
     evidence_ = -evidence_;
     ++stats_.mirror_swaps;
+    last_main_mean_ = main_.mean();  // a swap is not a jump
+  }
+  // A main hypothesis that jumped (a young cloud settling on one of the places its first
+  // epoch allowed) has left the mirror filter behind, an image of where it was: that
+  // filter would then have to walk to the new mirror image on process noise alone, and
+  // until it does nothing weighs the new place against its own image. Both are drawn
+  // again, and the evidence about the old pair is kept only as far as a cold start's.
+  const Eigen::Vector3d main_mean = main_.mean();
+  const bool jumped =
+      last_main_mean_ && (main_mean - *last_main_mean_).head<2>().norm() >
+                             std::max(kMainJump, 3.0 * worstSigma(main_.covariance()));
+  last_main_mean_ = main_mean;
+  if (jumped) {
+    ++stats_.mirror_redraws_after_jump;
   }
   // The mirror hypothesis follows its own data, so that it settles in the mirror's own
   // minimum (a few centimetres off the geometric mirror image when the modules are not
@@ -409,7 +427,7 @@ void ParticleTracker::maintainMirror() {
   // drift onto the main one's: then it is drawn again as the main one's mirror image,
   // keeping the evidence (near the modules' axis the two coincide and the evidence stops
   // changing: the side the data chose before is kept until data say otherwise).
-  if (!mirror_active_ || !mirrorDistinct()) {
+  if (!mirror_active_ || !mirrorDistinct() || jumped) {
     seedMirror();
   }
 }

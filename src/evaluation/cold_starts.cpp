@@ -43,12 +43,17 @@ ColdStartResult runColdStarts(const Layout& layout, sim::WorldConfig world,
     world.hardware_seed = static_cast<std::uint64_t>(r + 1);
     calibrated.push_back(locatorLayoutFor(layout, world));
   }
-  sim::Rng rng(params.seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::vector<double> times_to_usable;
   std::vector<double> errors;
   std::vector<double> nees;
-  for (std::size_t trial = 0; trial < params.trials; ++trial) {
+  for (std::size_t trial = params.first_trial; trial < params.first_trial + params.trials;
+       ++trial) {
+    std::seed_seq seeds{static_cast<std::uint32_t>(params.seed),
+                        static_cast<std::uint32_t>(params.seed >> 32),
+                        static_cast<std::uint32_t>(trial),
+                        static_cast<std::uint32_t>(static_cast<std::uint64_t>(trial) >> 32)};
+    sim::Rng rng(seeds);
     const auto robot = static_cast<std::uint64_t>(trial % static_cast<std::size_t>(params.robots));
     const double r = params.min_distance + (params.max_distance - params.min_distance) * unit(rng);
     const double a = (2.0 * unit(rng) - 1.0) * kPi;
@@ -97,7 +102,6 @@ ColdStartResult runColdStarts(const Layout& layout, sim::WorldConfig world,
     ++result.trials;
     result.mirror_any += longest > 0.0;
     if (longest > 1.0) {
-      ++result.mirror_locks_over_1s;
       result.locks.push_back(MirrorLock{trial, robot, target, longest_start, longest});
     }
     result.longest_mirror_s = std::max(result.longest_mirror_s, longest);

@@ -2,13 +2,14 @@
 // Issue 14's cold-start benchmark (evaluation/cold_starts.hpp): the locator started from
 // nothing, many times, on a standing robot's simulated sensors with the shipped
 // config/locator.yaml; how often, and how long, a drivable estimate sits on the mirror image.
-//   locator_cold_starts [--layout spot] [--trials 10000] [--sensor-profile realistic]
-//                       [--locator-overrides FILE] [--config-dir DIR] [--trace TRIAL]
+//   locator_cold_starts [--layout spot] [--trials 10000] [--first 0]
+//                       [--sensor-profile realistic] [--locator-overrides FILE]
+//                       [--config-dir DIR] [--trace TRIAL]
 // Lists the trials that sat on the mirror for more than 1 s; --trace prints every update of
-// one trial (status, error, hypotheses) to see why.
+// one trial (status, error, hypotheses) to see why. Each trial has its own random stream,
+// so `--first N --trials 1 --trace N` runs trial N alone.
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <exception>
 #include <map>
 #include <string>
@@ -22,11 +23,12 @@
 namespace {
 
 int usage(const std::string& problem) {
-  std::fprintf(stderr,
-               "locator_cold_starts: %s\nusage: locator_cold_starts [--layout L] [--trials N] "
-               "[--sensor-profile ideal|realistic] [--locator-overrides FILE] "
-               "[--config-dir DIR] [--trace TRIAL]\n",
-               problem.c_str());
+  std::fprintf(
+      stderr,
+      "locator_cold_starts: %s\nusage: locator_cold_starts [--layout L] [--trials N] [--first N] "
+      "[--sensor-profile ideal|realistic] [--locator-overrides FILE] "
+      "[--config-dir DIR] [--trace TRIAL]\n",
+      problem.c_str());
   return 2;
 }
 
@@ -36,6 +38,7 @@ int main(int argc, char** argv) {
   namespace rf = radio_follow;
   std::map<std::string, std::string> options{{"--layout", "spot"},
                                              {"--trials", "10000"},
+                                             {"--first", "0"},
                                              {"--sensor-profile", "realistic"},
                                              {"--locator-overrides", ""},
                                              {"--config-dir", RF_CONFIG_DIR},
@@ -44,8 +47,8 @@ int main(int argc, char** argv) {
     return usage(*problem);
   }
   try {
-    const int trials = std::atoi(options["--trials"].c_str());
-    rf::require(trials > 0, "--trials", options["--trials"], "a positive number of trials");
+    const std::size_t trials = rf::toolCount("--trials", options["--trials"], 1);
+    const std::size_t first = rf::toolCount("--first", options["--first"]);
     const rf::sim::SensorProfile profile =
         rf::sim::parseSensorProfile(options["--sensor-profile"], "--sensor-profile");
     // The lockstep loop's loader: the shipped simulator and locator files, as the robot runs.
@@ -54,20 +57,20 @@ int main(int argc, char** argv) {
         rf::evaluation::FollowController::kVelocity, 1, "", options["--locator-overrides"],
         profile);
     rf::evaluation::ColdStartParams params;
-    params.trials = static_cast<std::size_t>(trials);
+    params.trials = trials;
+    params.first_trial = first;
     if (!options["--trace"].empty()) {
-      char* end = nullptr;
-      const long traced = std::strtol(options["--trace"].c_str(), &end, 10);
-      rf::require(*end == '\0' && traced >= 0 && traced < trials, "--trace", options["--trace"],
-                  "a trial index in [0, --trials)");
+      const std::size_t traced = rf::toolCount("--trace", options["--trace"]);
+      rf::require(traced >= first && traced < first + trials, "--trace", options["--trace"],
+                  "a trial index in [--first, --first + --trials)");
       std::printf(
-          "trial %ld: t (s), status, estimate x y (m), error (m), hypotheses, "
+          "trial %zu: t (s), status, estimate x y (m), error (m), hypotheses, "
           "weight, alternative x y (m)\n",
           traced);
       params.observer = [traced](std::size_t trial, double now,
                                  const rf::estimation::LocatorEstimate& e,
                                  const Eigen::Vector3d& target) {
-        if (static_cast<long>(trial) != traced) {
+        if (trial != traced) {
           return;
         }
         std::printf("%.2f %s %.3f %.3f %.3f %d %.3f %.3f %.3f\n", now,
@@ -85,7 +88,7 @@ int main(int argc, char** argv) {
     std::printf(
         "mirror locks longer than 1 s: %zu; trials ever on the mirror while usable: %zu; "
         "longest %.2f s\n",
-        r.mirror_locks_over_1s, r.mirror_any, r.longest_mirror_s);
+        r.locks.size(), r.mirror_any, r.longest_mirror_s);
     for (const rf::evaluation::MirrorLock& lock : r.locks) {
       std::printf(
           "  trial %zu (robot %llu): person at %.2f m, %.0f deg; on the mirror %.2f s "

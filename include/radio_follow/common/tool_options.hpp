@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <cstddef>
 #include <map>
 #include <optional>
 #include <string>
@@ -13,5 +14,10 @@ namespace radio_follow {
 /// followed by a value; nullopt when every argument was read.
 std::optional<std::string> readToolOptions(int argc, const char* const* argv,
                                            std::map<std::string, std::string>& options);
+
+/// `value`, given for `option`, as a whole number of at least `min`: digits only, so
+/// "12x", "-1", "1e3" and "" are refused, not read as 12, a huge count, 1 or 0. Throws
+/// ParamError naming the option, its value and what is expected.
+std::size_t toolCount(const std::string& option, const std::string& value, std::size_t min = 0);
 
 }  // namespace radio_follow

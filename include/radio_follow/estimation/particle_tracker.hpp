@@ -81,7 +81,9 @@ struct TrackerStats {
   std::size_t cold_starts = 0;
   std::size_t frame_switches = 0;  ///< odometry appeared or vanished: track restarted
   std::size_t mirror_swaps = 0;    ///< the mirror hypothesis overtook the main one
-  std::size_t divergences = 0;     ///< the track stopped explaining its inputs: restarted
+  /// The main hypothesis jumped (> 1 m and 3 sigma in one update): mirror drawn again.
+  std::size_t mirror_redraws_after_jump = 0;
+  std::size_t divergences = 0;  ///< the track stopped explaining its inputs: restarted
   std::size_t resamples = 0;
 };
 
@@ -99,7 +101,8 @@ struct TrackerStats {
 ///     `ambiguity_margin` nats (D > margin): no lock on a wrong mirror;
 ///   - while neither is preferred by that margin, the status is AMBIGUOUS;
 ///   - when the mirror falls onto the main one (target on the modules' axis) it is
-///     re-seeded as the main one's mirror image.
+///     re-seeded as the main one's mirror image, and so it is when the main one jumps
+///     (a young cloud settling elsewhere) and leaves its old image behind.
 /// The report is the mixture of the two, weighted by the evidence: its covariance holds
 /// the spread between them (so a mirror a few decimetres away, a target near the
 /// modules' axis, is one wider estimate, not a reason to stop), plus the floor that
@@ -145,6 +148,8 @@ class ParticleTracker {
   ParticleFilter main_;
   ParticleFilter mirror_;
   bool mirror_active_ = false;
+  /// The main hypothesis's mean at the previous update (jumps re-draw the mirror).
+  std::optional<Eigen::Vector3d> last_main_mean_;
   double evidence_ = 0.0;
   double evidence_time_ = 0.0;  ///< stamp of the newest measurement in evidence_
   /// The modules' main axis in the robot frame, when they are nearly collinear.

@@ -18,6 +18,9 @@ namespace evaluation {
 /// the locator started from nothing on the simulator's sensors. How long does an estimate
 /// that the controllers would drive to (OK or DEGRADED) sit on the mirror image?
 struct ColdStartParams {
+  /// Trials first_trial .. first_trial + trials - 1. Each draws from its own generator,
+  /// seeded by (seed, its index), so one trial can be run again alone.
+  std::size_t first_trial = 0;
   std::size_t trials = 10000;
   double duration = 3.0;      ///< s of sensor data per trial
   double min_distance = 1.5;  ///< m, the person's distance from the robot, uniform
@@ -44,14 +47,13 @@ struct MirrorLock {
 
 struct ColdStartResult {
   std::size_t trials = 0;
-  /// Trials whose estimate was on the mirror side (closer to the mirror image than to the
-  /// person, the two more than 1 m apart) while OK or DEGRADED for more than 1 s in a row.
-  std::size_t mirror_locks_over_1s = 0;
-  /// ... for any time at all.
+  /// Every trial whose estimate was on the mirror side (closer to the mirror image than to
+  /// the person, the two more than 1 m apart) while OK or DEGRADED for more than 1 s in a
+  /// row: the mirror locks.
+  std::vector<MirrorLock> locks;
+  /// Trials on the mirror side for any time at all.
   std::size_t mirror_any = 0;
   double longest_mirror_s = 0.0;
-  /// Every trial counted in mirror_locks_over_1s.
-  std::vector<MirrorLock> locks;
   /// Trials that reached OK or DEGRADED within the duration; median time to it, s.
   std::size_t usable = 0;
   double median_time_to_usable = 0.0;

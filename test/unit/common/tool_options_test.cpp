@@ -3,6 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
+#include "radio_follow/common/param_error.hpp"
+
 namespace radio_follow {
 namespace {
 
@@ -24,6 +28,21 @@ TEST(ToolOptions, NamesAnUnknownOptionOrAMissingValue) {
   EXPECT_EQ(readToolOptions(5, unknown, options), "unknown option or no value: --trials");
   const char* missing[] = {"tool", "--runs"};
   EXPECT_EQ(readToolOptions(2, missing, options), "unknown option or no value: --runs");
+}
+
+TEST(ToolOptions, CountsAreWholeNumbersOrAnErrorNamingTheOption) {
+  EXPECT_EQ(toolCount("--trials", "10000"), 10000u);
+  EXPECT_EQ(toolCount("--first", "0"), 0u);
+  for (const char* bad : {"12x", "-1", "1e3", "", " 3", "0x10", "99999999999999999999"}) {
+    EXPECT_THROW(toolCount("--trials", bad), ParamError) << bad;
+  }
+  try {
+    toolCount("--trials", "0", 1);
+    FAIL() << "0 accepted where at least 1 is expected";
+  } catch (const ParamError& e) {
+    EXPECT_NE(std::string(e.what()).find("--trials"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(">= 1"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

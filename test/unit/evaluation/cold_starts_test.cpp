@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "radio_follow/evaluation/closed_loop.hpp"
 
@@ -24,7 +25,7 @@ TEST(ColdStarts, TheShippedLocatorFindsThePersonAndNeverSitsOnTheMirror) {
   const ColdStartResult r = run(sim::SensorProfile::kRealistic, 40);
   EXPECT_EQ(r.trials, 40u);
   EXPECT_EQ(r.usable, 40u);
-  EXPECT_EQ(r.mirror_locks_over_1s, 0u);
+  EXPECT_TRUE(r.locks.empty());
   EXPECT_LT(r.median_time_to_usable, 1.0);
   EXPECT_LT(r.error_median, 0.4);
   EXPECT_GT(r.nees_samples, 1000u);
@@ -68,13 +69,63 @@ TEST(ColdStarts, ListsEveryLockAndShowsEveryUpdateToTheObserver) {
   const ColdStartResult r = runColdStarts(c.layout, c.world, c.locator, params);
   EXPECT_EQ(observed, r.updates);
   EXPECT_EQ(last_trial, 39u);
-  ASSERT_GT(r.mirror_locks_over_1s, 0u);
-  ASSERT_EQ(r.locks.size(), r.mirror_locks_over_1s);
+  ASSERT_FALSE(r.locks.empty());
   for (const MirrorLock& lock : r.locks) {
     EXPECT_LT(lock.trial, 40u);
     EXPECT_GT(lock.longest_s, 1.0);
     EXPECT_LE(lock.start_s + lock.longest_s, params.duration + 0.05 + 1e-9);
     EXPECT_LE(lock.longest_s, r.longest_mirror_s);
+  }
+}
+
+TEST(ColdStarts, ATrialRunAloneIsTheSameTrialAsInTheSeries) {
+  const ClosedLoopConfig c =
+      loadClosedLoopConfig(RF_CONFIG_DIR, "spot", "outdoor_loop", FollowController::kVelocity, 1,
+                           "", "", sim::SensorProfile::kRealistic);
+  std::vector<Eigen::Vector3d> in_series;
+  std::vector<Eigen::Vector3d> alone;
+  ColdStartParams params;
+  params.trials = 6;
+  params.robots = 3;
+  params.observer = [&](std::size_t trial, double, const estimation::LocatorEstimate& e,
+                        const Eigen::Vector3d&) {
+    if (trial == 4) {
+      in_series.push_back(e.position);
+    }
+  };
+  runColdStarts(c.layout, c.world, c.locator, params);
+  params.first_trial = 4;
+  params.trials = 1;
+  params.observer = [&](std::size_t trial, double, const estimation::LocatorEstimate& e,
+                        const Eigen::Vector3d&) {
+    EXPECT_EQ(trial, 4u);
+    alone.push_back(e.position);
+  };
+  const ColdStartResult r = runColdStarts(c.layout, c.world, c.locator, params);
+  EXPECT_EQ(r.trials, 1u);
+  ASSERT_EQ(alone.size(), in_series.size());
+  ASSERT_FALSE(alone.empty());
+  for (std::size_t i = 0; i < alone.size(); ++i) {
+    EXPECT_EQ(alone[i], in_series[i]) << "update " << i;
+  }
+}
+
+// Trials 132 and 5758 of `locator_cold_starts --trials 10000` (doc/locator_accuracy.md,
+// "What the locks were"): the first epoch allows several places, the main cloud settles
+// on one of them a metre or more from where it started, and the mirror filter, drawn as
+// the image of the unsettled cloud, was left behind. Before the mirror was drawn again
+// after such a jump they sat on the mirror for 1.30 s and 2.55 s.
+TEST(ColdStarts, AMirrorLeftBehindByAJumpingMainHypothesisIsDrawnAgain) {
+  const ClosedLoopConfig c =
+      loadClosedLoopConfig(RF_CONFIG_DIR, "spot", "outdoor_loop", FollowController::kVelocity, 1,
+                           "", "", sim::SensorProfile::kRealistic);
+  for (const std::size_t trial : {132u, 5758u}) {
+    ColdStartParams params;
+    params.first_trial = trial;
+    params.trials = 1;
+    const ColdStartResult r = runColdStarts(c.layout, c.world, c.locator, params);
+    EXPECT_TRUE(r.locks.empty()) << "trial " << trial;
+    EXPECT_LT(r.longest_mirror_s, 0.5) << "trial " << trial;
   }
 }
 
