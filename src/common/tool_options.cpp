@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <limits>
 
 #include "radio_follow/common/param_error.hpp"
 
@@ -21,14 +20,16 @@ std::optional<std::string> readToolOptions(int argc, const char* const* argv,
   return std::nullopt;
 }
 
-std::size_t toolCount(const std::string& option, const std::string& value, std::size_t min) {
-  const std::string expected = "a whole number >= " + std::to_string(min);
+std::size_t toolCount(const std::string& option, const std::string& value, std::size_t min,
+                      std::size_t max) {
+  const std::string expected =
+      "a whole number in [" + std::to_string(min) + ", " + std::to_string(max) + "]";
   const bool digits =
       !value.empty() && value.size() <= 18 &&
       std::all_of(value.begin(), value.end(), [](unsigned char c) { return std::isdigit(c); });
   require(digits, option, value, expected);
   const std::size_t count = static_cast<std::size_t>(std::stoull(value));
-  require(count >= min, option, value, expected);
+  require(count >= min && count <= max, option, value, expected);
   return count;
 }
 

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "radio_follow/common/param_error.hpp"
 #include "radio_follow/common/tool_options.hpp"
 #include "radio_follow/control/homing_controller.hpp"
 #include "radio_follow/evaluation/homing_trial.hpp"
@@ -47,16 +48,18 @@ int main(int argc, char** argv) {
                  problem->c_str());
     return 2;
   }
-  const int per_quadrant = std::atoi(options["--per-quadrant"].c_str());
-  const unsigned long seed = std::strtoul(options["--seed"].c_str(), nullptr, 10);
+  int per_quadrant = 0;
+  unsigned long seed = 0;
+  int obstacles = 0;
   const double max_linear = std::atof(options["--max-linear"].c_str());
-  const int obstacles = std::atoi(options["--obstacles"].c_str());
-  if (per_quadrant < 1 || !(max_linear > 0.0) || obstacles < 0) {
-    std::fprintf(stderr, "--per-quadrant must be >= 1, --max-linear > 0 and --obstacles >= 0\n");
-    return 2;
-  }
   ev::HomingNodeParams node;
   try {
+    per_quadrant =
+        static_cast<int>(radio_follow::toolCount("--per-quadrant", options["--per-quadrant"], 1));
+    seed = radio_follow::toolCount("--seed", options["--seed"]);
+    obstacles = static_cast<int>(radio_follow::toolCount("--obstacles", options["--obstacles"]));
+    radio_follow::require(max_linear > 0.0, "--max-linear", options["--max-linear"],
+                          "a speed > 0 in m/s");
     // The node's shipped files, as a user starts it; only the benchmark's conditions
     // differ: the distance is a UWB range and the robot's top speed is the paper's.
     std::vector<std::string> overlays;

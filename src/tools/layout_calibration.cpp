@@ -44,11 +44,10 @@ int main(int argc, char** argv) {
   }
   const std::string layout_name = options["--layout"];
   const std::string config_dir = options["--config-dir"];
-  const int hardware_seed = std::atoi(options["--hardware-seed"].c_str());
-  const int seed = std::atoi(options["--seed"].c_str());
   try {
-    rf::require(hardware_seed >= 0, "--hardware-seed", hardware_seed, "an integer >= 0");
-    rf::require(seed >= 0, "--seed", seed, "an integer >= 0");
+    const auto hardware_seed =
+        static_cast<int>(rf::toolCount("--hardware-seed", options["--hardware-seed"]));
+    const auto seed = static_cast<int>(rf::toolCount("--seed", options["--seed"]));
     const std::string path = config_dir + "/layouts/" + layout_name + ".yaml";
     const rf::Layout layout = rf::loadLayoutFile(path);
     rf::sim::WorldConfig world;

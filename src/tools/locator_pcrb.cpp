@@ -8,7 +8,8 @@
 // many Monte Carlo runs. Deterministic: same seed, same table. Prints Markdown.
 // A --layouts item ending in .yaml is a layout file (e.g. placement_advisor --optimise's
 // output), run with the shipped simulator and locator files, named by its file's stem.
-//   locator_pcrb [--layouts spot,cube,tracked,FILE.yaml] [--paths straight,arc,model] [--runs 100] [--seed 1]
+//   locator_pcrb [--layouts spot,cube,tracked,FILE.yaml] [--paths straight,arc,model] [--runs 100]
+//   [--seed 1]
 //                [--locator-overrides FILE] [--config-dir DIR]
 #include <cstdio>
 #include <cstdlib>
@@ -30,11 +31,12 @@ namespace {
 namespace fs = std::filesystem;
 
 int usage(const std::string& problem) {
-  std::fprintf(stderr,
-               "locator_pcrb: %s\nusage: locator_pcrb [--layouts L1,FILE.yaml] [--paths P1,P2] [--runs N] "
-               "[--seed S] "
-               "[--locator-overrides FILE] [--config-dir DIR]\n",
-               problem.c_str());
+  std::fprintf(
+      stderr,
+      "locator_pcrb: %s\nusage: locator_pcrb [--layouts L1,FILE.yaml] [--paths P1,P2] [--runs N] "
+      "[--seed S] "
+      "[--locator-overrides FILE] [--config-dir DIR]\n",
+      problem.c_str());
   return 2;
 }
 
@@ -64,10 +66,8 @@ int main(int argc, char** argv) {
     return usage(*problem);
   }
   try {
-    const int runs = std::atoi(options["--runs"].c_str());
-    rf::require(runs > 0, "--runs", options["--runs"], "a positive number of runs");
-    const int seed = std::atoi(options["--seed"].c_str());
-    rf::require(seed > 0, "--seed", options["--seed"], "a positive integer");
+    const auto runs = static_cast<int>(rf::toolCount("--runs", options["--runs"], 1));
+    const auto seed = static_cast<int>(rf::toolCount("--seed", options["--seed"], 1));
     std::printf(
         "| layout | path | estimator | runs | samples (no position) | RMSE (m) | sqrt tr PCRB (m) "
         "| RMSE / PCRB | PCRB, FOV bearings only (m) | RMSE / that | along-track mean (m) | "
@@ -79,10 +79,10 @@ int main(int argc, char** argv) {
       const std::string layout = file ? fs::path(item).stem().string() : item;
       // The lockstep loop's loader: the shipped simulator and locator files; a layout file
       // replaces the layout they are loaded with (only the layout enters the benchmark).
-      ev::ClosedLoopConfig c = ev::loadClosedLoopConfig(
-          options["--config-dir"], file ? "spot" : item, "outdoor_loop",
-          ev::FollowController::kVelocity, 1, "", options["--locator-overrides"],
-          rf::sim::SensorProfile::kIdeal);
+      ev::ClosedLoopConfig c =
+          ev::loadClosedLoopConfig(options["--config-dir"], file ? "spot" : item, "outdoor_loop",
+                                   ev::FollowController::kVelocity, 1, "",
+                                   options["--locator-overrides"], rf::sim::SensorProfile::kIdeal);
       if (file) {
         c.layout = rf::loadLayoutFile(item);
       }

@@ -39,9 +39,10 @@ constexpr int kWarmUp = 50;
 /// Seed 002 Table 2, average distance error (m) for Kalman, mean, median at the distances
 /// it shares with kDistances (1.10, 1.40, 1.70, 2.00 m); NaN where it has no row.
 double paperAverage(double distance, Type type) {
-  const std::map<double, std::array<double, 3>> rows{
-      {1.1, {0.24, 0.24, 0.43}}, {1.4, {0.26, 0.26, 0.40}}, {1.7, {0.81, 0.81, 0.83}},
-      {2.0, {0.84, 0.86, 0.96}}};
+  const std::map<double, std::array<double, 3>> rows{{1.1, {0.24, 0.24, 0.43}},
+                                                     {1.4, {0.26, 0.26, 0.40}},
+                                                     {1.7, {0.81, 0.81, 0.83}},
+                                                     {2.0, {0.84, 0.86, 0.96}}};
   const auto row = rows.find(distance);
   if (row == rows.end() || type == Type::kNone) {
     return std::nan("");
@@ -192,8 +193,8 @@ void approachTable(const rf::control::RssiFilterParams& base, const rf::control:
     }
     std::printf("| %s | %d | %+.2f | %.2f | %.2f | %.2f | %.2f |\n", name(type), riseReadings(p),
                 rf::evaluation::mean(signed_error), rf::evaluation::quantile(error, 0.5),
-                rf::evaluation::mean(error),
-                rf::evaluation::quantile(error, 0.95), rf::evaluation::mean(near_error));
+                rf::evaluation::mean(error), rf::evaluation::quantile(error, 0.95),
+                rf::evaluation::mean(near_error));
   }
 }
 
@@ -201,22 +202,20 @@ void approachTable(const rf::control::RssiFilterParams& base, const rf::control:
 
 int main(int argc, char** argv) {
   std::map<std::string, std::string> options{
-      {"--seed", "1"},           {"--readings", "3000"},         {"--window", "10"},
-      {"--process-noise", "1"},  {"--measurement-noise", "25"},  {"--speed", "0.3"},
+      {"--seed", "1"},          {"--readings", "3000"},        {"--window", "10"},
+      {"--process-noise", "1"}, {"--measurement-noise", "25"}, {"--speed", "0.3"},
       {"--runs", "200"}};
   if (const auto problem = rf::readToolOptions(argc, argv, options)) {
     return usage(*problem);
   }
   try {
-    const unsigned long seed = std::strtoul(options["--seed"].c_str(), nullptr, 10);
-    const int readings = std::atoi(options["--readings"].c_str());
-    rf::require(readings > 0, "--readings", options["--readings"], "a positive count");
-    const int runs = std::atoi(options["--runs"].c_str());
-    rf::require(runs > 0, "--runs", options["--runs"], "a positive count");
+    const unsigned long seed = rf::toolCount("--seed", options["--seed"]);
+    const auto readings = static_cast<int>(rf::toolCount("--readings", options["--readings"], 1));
+    const auto runs = static_cast<int>(rf::toolCount("--runs", options["--runs"], 1));
     const double speed = std::atof(options["--speed"].c_str());
     rf::require(speed > 0.0, "--speed", options["--speed"], "a speed > 0 m/s");
     rf::control::RssiFilterParams filter;
-    filter.window.window = std::atoi(options["--window"].c_str());
+    filter.window.window = static_cast<int>(rf::toolCount("--window", options["--window"]));
     filter.kalman.process_noise = std::atof(options["--process-noise"].c_str());
     filter.kalman.measurement_noise = std::atof(options["--measurement-noise"].c_str());
     filter.validate();
@@ -237,7 +236,8 @@ int main(int argc, char** argv) {
         fit.model.rssi_at_1m, fit.model.exponent, fit.rms_residual_db);
     std::printf("Tag at a fixed distance, %d readings after %d of warm-up:\n\n", readings, kWarmUp);
     staticTable(filter, fit.model, readings, seed);
-    std::printf("\nRobot driving at the tag from 8 m to 1 m at %.2f m/s, %d runs:\n\n", speed, runs);
+    std::printf("\nRobot driving at the tag from 8 m to 1 m at %.2f m/s, %d runs:\n\n", speed,
+                runs);
     approachTable(filter, fit.model, speed, runs, seed);
     return 0;
   } catch (const std::exception& e) {

@@ -98,12 +98,9 @@ int main(int argc, char** argv) {
     return usage("--experiment must be static or walk");
   }
   try {
-    const int sectors = std::atoi(options["--sectors"].c_str());
-    rf::require(sectors >= 1 && sectors <= 36, "--sectors", options["--sectors"], "1 .. 36");
-    const long robot = std::atol(options["--robot"].c_str());
-    rf::require(robot >= 1, "--robot", options["--robot"], "a hardware seed >= 1");
-    const long seed = std::atol(options["--seed"].c_str());
-    rf::require(seed >= 0, "--seed", options["--seed"], "a seed >= 0");
+    const auto sectors = static_cast<int>(rf::toolCount("--sectors", options["--sectors"], 1, 36));
+    const auto robot = static_cast<long>(rf::toolCount("--robot", options["--robot"], 1));
+    const auto seed = static_cast<long>(rf::toolCount("--seed", options["--seed"]));
     const rf::sim::SensorProfile profile =
         rf::sim::parseSensorProfile(options["--sensor-profile"], "--sensor-profile");
     // The lockstep loop's loader: the shipped simulator and locator files, as the robot runs.

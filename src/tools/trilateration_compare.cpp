@@ -36,7 +36,7 @@ constexpr double kHeight = 1.0;  // the tag's plane (2D mode), m
 constexpr const char* kLayouts[] = {"spot_twr", "spot", "tracked", "cube"};
 
 using Solver = std::optional<Eigen::Vector3d> (*)(const std::vector<est::RangeObservation>&,
-                                                   const est::InitializerConfig&);
+                                                  const est::InitializerConfig&);
 
 int usage(const std::string& problem) {
   std::fprintf(stderr,
@@ -126,8 +126,7 @@ double microsPerCall(const Epochs& epochs, Solver solve, const est::InitializerC
       }
     }
     const double us =
-        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start)
-            .count();
+        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
     best = std::min(best, us / static_cast<double>(epochs.ranges.size()));
   }
   // Keeps the loop from being optimised away.
@@ -156,11 +155,9 @@ int main(int argc, char** argv) {
     return usage(*problem);
   }
   try {
-    const int trials = std::atoi(options["--trials"].c_str());
-    rf::require(trials > 0, "--trials", options["--trials"], "a positive count");
-    const int repeats = std::atoi(options["--repeats"].c_str());
-    rf::require(repeats > 0, "--repeats", options["--repeats"], "a positive count");
-    const unsigned long seed = std::strtoul(options["--seed"].c_str(), nullptr, 10);
+    const auto trials = static_cast<int>(rf::toolCount("--trials", options["--trials"], 1));
+    const auto repeats = static_cast<int>(rf::toolCount("--repeats", options["--repeats"], 1));
+    const unsigned long seed = rf::toolCount("--seed", options["--seed"]);
     est::InitializerConfig config;
     config.height = kHeight;
     std::printf(
@@ -170,8 +167,8 @@ int main(int argc, char** argv) {
     for (const char* name : kLayouts) {
       const rf::Layout layout = rf::loadLayoutFile(options["--layouts"] + "/" + name + ".yaml");
       if (layout.twr_modules.size() < 3) {
-        std::printf("| %s | %zu | - | (fewer than 3 modules: no trilateration) | | | | | | |\n", name,
-                    layout.twr_modules.size());
+        std::printf("| %s | %zu | - | (fewer than 3 modules: no trilateration) | | | | | | |\n",
+                    name, layout.twr_modules.size());
         continue;
       }
       const Epochs epochs = simulate(layout, trials, seed);
@@ -186,16 +183,17 @@ int main(int argc, char** argv) {
         const char* label;
         Solver solve;
         double us;
-      } methods[] = {{"first differences, normal equations (`trilaterate`, the locator's)",
-                      est::trilaterate, normal_us},
-                     {"consecutive differences, QR (`trilaterateQr`, seed 002)",
-                      est::trilaterateQr, qr_us}};
+      } methods[] = {
+          {"first differences, normal equations (`trilaterate`, the locator's)", est::trilaterate,
+           normal_us},
+          {"consecutive differences, QR (`trilaterateQr`, seed 002)", est::trilaterateQr, qr_us}};
       for (const auto& m : methods) {
         const Accuracy a = accuracy(epochs, m.solve, config);
         std::printf("| %s | %zu | %zu | %s | %d | %.3f | %.3f | %.3f | %.3f | %.2f |\n", name,
                     layout.twr_modules.size(), epochs.ranges.size(), m.label, a.failures,
-                    rf::evaluation::quantile(a.errors, 0.5), rf::evaluation::quantile(a.errors, 0.95),
-                    rmse(a.errors), m.us, m.us / normal_us);
+                    rf::evaluation::quantile(a.errors, 0.5),
+                    rf::evaluation::quantile(a.errors, 0.95), rmse(a.errors), m.us,
+                    m.us / normal_us);
       }
       std::fflush(stdout);
     }
