@@ -73,8 +73,7 @@ void StandingRobotSensors::blink(estimation::Locator& locator, std::size_t sourc
   const Eigen::Vector3d from = source == 0 ? target : layout_.twr_modules[source - 1].position;
   const std::size_t ref = world_.tdoa_reference;
   const std::vector<double> differences =
-      tdoa_ ? tdoa_->simulate(layout_.tdoa_anchors, ref, world_.tdoa_sigma, from, t, rng)
-            : sim::simulateTdoa(layout_.tdoa_anchors, ref, world_.tdoa_sigma, from, rng);
+      sim::simulateBlink(tdoa_, layout_.tdoa_anchors, ref, world_.tdoa_sigma, from, t, rng);
   if (differences.empty()) {
     return;  // missed
   }

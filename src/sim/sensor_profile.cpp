@@ -160,6 +160,13 @@ TdoaHardware::TdoaHardware(const std::vector<TdoaAnchor>& anchors, std::uint64_t
   }
 }
 
+std::vector<double> simulateBlink(std::optional<TdoaHardware>& hardware,
+                                  const std::vector<TdoaAnchor>& anchors, std::size_t reference,
+                                  double sigma, const Eigen::Vector3d& target, double t, Rng& rng) {
+  return hardware ? hardware->simulate(anchors, reference, sigma, target, t, rng)
+                  : simulateTdoa(anchors, reference, sigma, target, rng);
+}
+
 std::vector<double> TdoaHardware::simulate(const std::vector<TdoaAnchor>& anchors,
                                            std::size_t reference, double sigma,
                                            const Eigen::Vector3d& target, double t, Rng& rng) {

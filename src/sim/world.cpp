@@ -159,10 +159,8 @@ StepEvents World::step(double cmd_linear, double cmd_angular, double dt) {
   }
   if (layout_.tdoa_anchors.size() >= 2) {
     const auto blink = [&](const Eigen::Vector3d& from, double t) {
-      return realistic ? tdoa_hardware_->simulate(layout_.tdoa_anchors, config_.tdoa_reference,
-                                                  config_.tdoa_sigma, from, t, rng_)
-                       : simulateTdoa(layout_.tdoa_anchors, config_.tdoa_reference,
-                                      config_.tdoa_sigma, from, rng_);
+      return simulateBlink(tdoa_hardware_, layout_.tdoa_anchors, config_.tdoa_reference,
+                           config_.tdoa_sigma, from, t, rng_);
     };
     const auto add = [&](std::vector<double> differences, double t,
                          std::optional<std::size_t> module) {

@@ -135,5 +135,12 @@ class TdoaHardware {
   std::vector<GaussMarkov> drift_;
 };
 
+/// One blink's differences vs anchor `reference`, sent from `target`: with `hardware`
+/// (the realistic profile) its errors are added, without it (the ideal profile) only
+/// simulateTdoa's white noise. Empty when the blink was missed.
+std::vector<double> simulateBlink(std::optional<TdoaHardware>& hardware,
+                                  const std::vector<TdoaAnchor>& anchors, std::size_t reference,
+                                  double sigma, const Eigen::Vector3d& target, double t, Rng& rng);
+
 }  // namespace sim
 }  // namespace radio_follow

@@ -12,9 +12,9 @@
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/common/param_keys.hpp"
 #include "radio_follow/config/layout.hpp"
-#include "radio_follow/ros/control/controller_reconfigure.hpp"
 #include "radio_follow/ros/common/params.hpp"
 #include "radio_follow/ros/common/wiring_debug.hpp"
+#include "radio_follow/ros/control/controller_reconfigure.hpp"
 
 namespace radio_follow {
 namespace {
