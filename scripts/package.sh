@@ -157,7 +157,9 @@ done
 import json, sys
 m = json.load(open(sys.argv[1]))
 print(f"package: demo from the .deb: robot moved {m['robot_distance_m']:.2f} m, "
-      f"min gap {m['min_gap_m']:.2f} m, estimate available {m['estimate_availability']:.0%}")
+      f"min gap {m['min_gap_m']:.2f} m ({m.get('min_gap_while_moving_m') or float('nan'):.2f} m "
+      f"while moving), "
+      f"estimate available {m['estimate_availability']:.0%}")
 sys.exit(0 if m["robot_distance_m"] > 1.0 else 1)
 EOF
   rosrun radio_follow plot_report.py "$report" >/dev/null || fail "plot_report.py from the prefix"
