@@ -412,8 +412,8 @@ void ParticleTracker::maintainMirror() {
   // epoch allowed) has left the mirror filter behind, an image of where it was: that
   // filter would then have to walk to the new mirror image on process noise alone, and
   // until it does nothing weighs the new place against its own image. It is drawn again
-  // as the image of the new place; the evidence is kept (clamping it to a cold start's
-  // bound changed nothing in 10,000 cold starts: doc/locator_accuracy.md).
+  // as the image of the new place; the evidence is kept (the data that built it still
+  // weigh the two sides).
   const Eigen::Vector3d main_mean = main_.mean();
   const bool jumped =
       last_main_mean_ && (main_mean - *last_main_mean_).head<2>().norm() >

@@ -83,12 +83,14 @@ HomingResult runHomingTrial(const HomingStep& controller, double target_x, doubl
     // The law now commands zero; the base brakes at its deceleration limit and comes to
     // rest a little further on. The robot's final position is where it stands, as a tape
     // measure would find it, not where the law decided to stop.
-    for (double braking = 0.0; (robot.linear() != 0.0 || robot.angular() != 0.0) &&
-                               braking < config.time_limit && clear();
+    for (double braking = 0.0;
+         (robot.linear() != 0.0 || robot.angular() != 0.0) && braking < config.time_limit;
          braking += dt) {
       robot.step(0.0, 0.0, dt);
+      if (!clear()) {
+        break;
+      }
     }
-    clear();
   }
   const Pose2& end = robot.pose();
   result.final_error = std::hypot(target_x - end.x, target_y - end.y);

@@ -111,7 +111,7 @@ TEST(ColdStarts, ATrialRunAloneIsTheSameTrialAsInTheSeries) {
 }
 
 // Trials 132 and 5758 of `locator_cold_starts --trials 10000` (doc/locator_accuracy.md,
-// "What the locks were"): the first epoch allows several places, the main cloud settles
+// "What the locks are"): the first epoch allows several places, the main cloud settles
 // on one of them a metre or more from where it started, and the mirror filter, drawn as
 // the image of the unsettled cloud, was left behind. Before the mirror was drawn again
 // after such a jump they sat on the mirror for 1.30 s and 2.55 s.
