@@ -337,7 +337,7 @@ void ClosedLoop::runLocator(double now) {
   const double bearing = std::atan2(estimate.position.y(), estimate.position.x());
   // The controller's estimate callback: the safety layer first, then the odometry frame.
   pipeline_.onEstimate(estimate_stamp_, now, estimateQuality(estimate.status, range, bearing));
-  if (hasPosition(estimate.status)) {
+  if (track_gate_.accept(estimate.status)) {  // as TargetMotionTracker in the controller nodes
     if (const std::optional<Pose2> robot = poseAt(estimate_stamp_)) {
       const double c = std::cos(robot->yaw);
       const double s = std::sin(robot->yaw);

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Feeds the running path_follower a person walking ahead and to the left, checks the
-// stored path (nav_msgs/Path in odom), the forward command and status, then an
-// estimate in an unknown frame (no odometry transform) for the straight fallback.
+// Feeds the running path_follower a person walking ahead and to the left (after half a
+// second of a DEGRADED estimate behind the robot, as a cold start may give), checks the
+// stored path (nav_msgs/Path in odom, without the DEGRADED start), the forward command
+// and status, then an estimate in an unknown frame (no odometry transform) for the
+// straight fallback.
 #include <gtest/gtest.h>
 #include <nav_msgs/Path.h>
 #include <ros/ros.h>
@@ -50,6 +52,15 @@ class Feeder {
     e.range = std::hypot(e.position.x, e.position.y);
     e.bearing = std::atan2(e.position.y, e.position.x);
     e.status = radio_follow::TargetEstimate::STATUS_OK;
+    if (step_ <= 10) {
+      // First a young track's wide cloud, DEGRADED and behind the robot: it must never
+      // become a point of the path (evaluation::TrackGate).
+      e.position.x = -2.0;
+      e.position.y = 0.5;
+      e.range = std::hypot(e.position.x, e.position.y);
+      e.bearing = std::atan2(e.position.y, e.position.x);
+      e.status = radio_follow::TargetEstimate::STATUS_DEGRADED;
+    }
     estimate_pub_.publish(e);
     radio_follow::UwbRanges r;
     r.header.stamp = e.header.stamp;
@@ -104,6 +115,9 @@ TEST(PathFollower, StoresPathFollowsAndFallsBack) {
       const auto& a = last_path.poses[i - 1].pose.position;
       const auto& b = last_path.poses[i].pose.position;
       EXPECT_GE(std::hypot(b.x - a.x, b.y - a.y), 0.1 - 1e-9);
+    }
+    for (const auto& pose : last_path.poses) {
+      EXPECT_GT(pose.pose.position.x, 1.5) << "the young track's DEGRADED estimate is on the path";
     }
   }
 

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <yaml-cpp/yaml.h>
+
 #include <deque>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <yaml-cpp/yaml.h>
 
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/control/command_pipeline.hpp"
@@ -163,6 +163,7 @@ class ClosedLoop {
   control::VelocityLaw velocity_law_;
   control::PathFollowLaw path_law_;
   control::TargetTrack track_;
+  TrackGate track_gate_;  ///< which estimates extend track_ and the path law's path
   FollowMetrics metrics_;
   Timer locator_timer_;
   Timer controller_timer_;

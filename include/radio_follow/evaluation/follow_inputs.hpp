@@ -41,5 +41,26 @@ inline control::TargetPolar targetPolar(estimation::TargetStatus status, double 
   return t;
 }
 
+/// Which estimates become points of the target's track (the path follower's stored path,
+/// the target's speed): OK ones, and DEGRADED ones of a track that has been OK since it
+/// last had no position. A DEGRADED estimate before that is a young track's wide cloud:
+/// a cold start's first epochs, once 3.8 m off and behind the robot in a closed-loop run,
+/// where a path point turned the robot away from the person for the rest of the walk. A
+/// DEGRADED estimate of a confirmed track is that track gone wide for a while (far away,
+/// a sensor silent): still the best place known, and a path that ended before it would
+/// stall the robot.
+class TrackGate {
+ public:
+  /// Whether this estimate, the newest, is a track point.
+  bool accept(estimation::TargetStatus status) {
+    confirmed_ = status == estimation::TargetStatus::kOk ||
+                 (confirmed_ && status == estimation::TargetStatus::kDegraded);
+    return confirmed_;
+  }
+
+ private:
+  bool confirmed_ = false;
+};
+
 }  // namespace evaluation
 }  // namespace radio_follow

@@ -8,9 +8,9 @@
 #include <cmath>
 
 #include "radio_follow/common/param_error.hpp"
-#include "radio_follow/ros/control/controller_reconfigure.hpp"
 #include "radio_follow/ros/common/params.hpp"
 #include "radio_follow/ros/common/target_estimate.hpp"
+#include "radio_follow/ros/control/controller_reconfigure.hpp"
 #include "radio_follow/ros/control/velocity_controller.hpp"
 
 namespace radio_follow {
@@ -66,6 +66,9 @@ void PathFollowerNode::onEstimate(const TargetEstimate::ConstPtr& msg) {
     return;
   }
   const std::optional<Eigen::Vector2d> point = motion_.add(*msg);
+  if (!point && motion_.lastError().empty()) {
+    return;  // a young track's wide position (evaluation::TrackGate): not a path point
+  }
   path_mode_ = point.has_value();
   if (!point) {
     ROS_WARN_THROTTLE(5.0, "%s: no transform %s <- %s at the estimate's stamp (%s)",

@@ -17,9 +17,9 @@ TargetMotionTracker::TargetMotionTracker(const tf2_ros::Buffer& buffer, std::str
     : buffer_(buffer), odom_frame_(std::move(odom_frame)), tf_timeout_(tf_timeout) {}
 
 std::optional<Eigen::Vector2d> TargetMotionTracker::add(const TargetEstimate& estimate) {
-  if (!hasPosition(estimate)) {
+  if (!gate_.accept(static_cast<estimation::TargetStatus>(estimate.status))) {
     last_error_.clear();
-    return std::nullopt;  // a HEADING_ONLY position is a guess along the bearing
+    return std::nullopt;  // no position, or a young track's wide one (TrackGate)
   }
   try {
     // Never wait (timeout 0): this runs in a callback. The transform at the stamp when

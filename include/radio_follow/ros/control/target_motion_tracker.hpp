@@ -10,6 +10,7 @@
 
 #include "radio_follow/TargetEstimate.h"
 #include "radio_follow/control/target_motion.hpp"
+#include "radio_follow/evaluation/follow_inputs.hpp"
 
 namespace radio_follow {
 
@@ -20,10 +21,11 @@ class TargetMotionTracker {
  public:
   TargetMotionTracker(const tf2_ros::Buffer& buffer, std::string odom_frame, double tf_timeout);
 
-  /// Transforms an estimate with a position (OK or DEGRADED) into the odometry frame at
-  /// its stamp (or with the newest transform when that is within `tf_timeout` of the
-  /// stamp; it never waits for TF) and records it. Returns the target's odometry-frame position, or
-  /// nullopt (no position, or no transform: lastError() says why).
+  /// Transforms a track point (evaluation::TrackGate: OK, or DEGRADED in a confirmed
+  /// track) into the odometry frame at its stamp (or with the newest transform when that
+  /// is within `tf_timeout` of the stamp; it never waits for TF) and records it. Returns
+  /// the target's odometry-frame position, or nullopt (not a track point, lastError()
+  /// empty; or no transform, lastError() says why).
   std::optional<Eigen::Vector2d> add(const TargetEstimate& estimate);
 
   /// The target's ground speed, m/s, or nullopt without enough recent positions.
@@ -41,6 +43,7 @@ class TargetMotionTracker {
   std::string odom_frame_;
   ros::Duration tf_timeout_;
   control::TargetTrack track_;
+  evaluation::TrackGate gate_;
   std::string last_error_;
 };
 
