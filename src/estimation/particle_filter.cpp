@@ -35,17 +35,25 @@ RangeTerms rangeTerms(const RangeLikelihood& m) {
           1.0 / m.sigma, 1.0 / m.outlier_length};
 }
 
-/// The inlier (Gaussian) and outlier (tail and floor) parts of the likelihood.
-std::pair<Eigen::ArrayXd, Eigen::ArrayXd> rangeLikelihood(const Eigen::ArrayXd& error,
-                                                          const RangeLikelihood& m) {
+/// The inlier (Gaussian) and outlier (tail and floor) parts of the likelihood of every
+/// error in `error`, written into the two buffers (`inlier` may alias `error`).
+void rangeLikelihood(const Eigen::ArrayXf& error, const RangeLikelihood& m, Eigen::ArrayXf* inlier,
+                     Eigen::ArrayXf* outlier) {
   const RangeTerms k = rangeTerms(m);
-  const Eigen::ArrayXd z = error * k.inv_sigma;
-  Eigen::ArrayXd gauss = k.gauss * (-0.5 * z.square()).exp();
-  Eigen::ArrayXd tail =
-      m.one_sided
-          ? Eigen::ArrayXd((error > 0.0).select(k.tail * (-error * k.inv_length).exp(), 0.0))
-          : Eigen::ArrayXd(k.tail * (-error.abs() * k.inv_length).exp());
-  return {std::move(gauss), tail + k.floor};
+  const auto tail = static_cast<float>(k.tail);
+  const auto inv_length = static_cast<float>(k.inv_length);
+  const auto floor = static_cast<float>(k.floor);
+  // The exponentials are taken over whole arrays (vectorised); the one-sided tail's
+  // cut is applied after, as Eigen evaluates an expression containing a select element
+  // by element.
+  if (m.one_sided) {
+    *outlier = tail * (-error.max(0.0f) * inv_length).exp();
+    *outlier = (error > 0.0f).select(*outlier, 0.0f) + floor;
+  } else {
+    *outlier = tail * (-error.abs() * inv_length).exp() + floor;
+  }
+  *inlier = static_cast<float>(k.gauss) *
+            (-0.5f * (error * static_cast<float>(k.inv_sigma)).square()).exp();
 }
 
 }  // namespace
@@ -132,74 +140,108 @@ void ParticleFilter::predict(double t) {
   t_ = t;
 }
 
-MeasurementFit ParticleFilter::applyLikelihood(const Eigen::ArrayXd& inlier,
-                                               const Eigen::ArrayXd& outlier) {
-  scratch_ = w_ * inlier;
-  const double inlier_mass = scratch_.sum();
-  scratch_ += w_ * outlier;
-  const double evidence = scratch_.sum();
+MeasurementFit ParticleFilter::applyLikelihood(const Eigen::ArrayXf& inlier,
+                                               const Eigen::ArrayXf& outlier) {
+  const double inlier_mass = (w_ * inlier.cast<double>()).sum();
+  const double evidence = inlier_mass + (w_ * outlier.cast<double>()).sum();
   if (!(evidence > 0.0) || !std::isfinite(evidence)) {
     return {};  // weights unchanged: a measurement nothing can explain says nothing
   }
-  w_ = scratch_ / evidence;
+  w_ *= (inlier + outlier).cast<double>() * (1.0 / evidence);
+  return {evidence, inlier_mass / evidence};
+}
+
+MeasurementFit ParticleFilter::applyLikelihood(const Eigen::ArrayXf& inlier, double outlier) {
+  // The weights sum to one: the outlier part of the evidence is the constant itself.
+  const double inlier_mass = (w_ * inlier.cast<double>()).sum();
+  const double evidence = inlier_mass + outlier;
+  if (!(evidence > 0.0) || !std::isfinite(evidence)) {
+    return {};
+  }
+  w_ *= (inlier.cast<double>() + outlier) * (1.0 / evidence);
   return {evidence, inlier_mass / evidence};
 }
 
 MeasurementFit ParticleFilter::weightRange(const Eigen::Vector3d& module, double range,
                                            const RangeLikelihood& model) {
-  const Eigen::ArrayXd d =
-      ((x_ - module.x()).square() + (y_ - module.y()).square() + (z_ - module.z()).square()).sqrt();
-  const auto [inlier, outlier] = rangeLikelihood(range - d, model);
-  return applyLikelihood(inlier, outlier);
+  inlier_ = ((x_ - module.x()).square() + (y_ - module.y()).square() + (z_ - module.z()).square())
+                .cast<float>();  // squared distances
+  inlier_ = static_cast<float>(range) - inlier_.sqrt();
+  rangeLikelihood(inlier_, model, &inlier_, &outlier_);
+  return applyLikelihood(inlier_, outlier_);
 }
 
 MeasurementFit ParticleFilter::weightTdoa(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                                           double difference, const RangeLikelihood& model) {
-  const Eigen::ArrayXd da =
-      ((x_ - a.x()).square() + (y_ - a.y()).square() + (z_ - a.z()).square()).sqrt();
-  const Eigen::ArrayXd db =
-      ((x_ - b.x()).square() + (y_ - b.y()).square() + (z_ - b.z()).square()).sqrt();
-  const auto [inlier, outlier] = rangeLikelihood(difference - (da - db), model);
-  return applyLikelihood(inlier, outlier);
+  lx_ = ((x_ - a.x()).square() + (y_ - a.y()).square() + (z_ - a.z()).square()).cast<float>();
+  ly_ = ((x_ - b.x()).square() + (y_ - b.y()).square() + (z_ - b.z()).square()).cast<float>();
+  inlier_ = static_cast<float>(difference) - (lx_.sqrt() - ly_.sqrt());
+  rangeLikelihood(inlier_, model, &inlier_, &outlier_);
+  return applyLikelihood(inlier_, outlier_);
 }
 
 MeasurementFit ParticleFilter::weightBearing(const Eigen::Vector3d& board,
                                              const Eigen::Matrix3d& rotation, double azimuth,
                                              double elevation, const BearingLikelihood& m) {
-  // Board-frame offsets of every particle: v = R^T (p - board).
-  const Eigen::ArrayXd dx = x_ - board.x();
-  const Eigen::ArrayXd dy = y_ - board.y();
-  const Eigen::ArrayXd dz = z_ - board.z();
-  const Eigen::Matrix3d rt = rotation.transpose();
-  const Eigen::ArrayXd lx = rt(0, 0) * dx + rt(0, 1) * dy + rt(0, 2) * dz;
-  const Eigen::ArrayXd ly = rt(1, 0) * dx + rt(1, 1) * dy + rt(1, 2) * dz;
-  const Eigen::ArrayXd lz = rt(2, 0) * dx + rt(2, 1) * dy + rt(2, 2) * dz;
-  const Eigen::ArrayXd front = lx.abs();  // the array's front/back mirror
-  const Eigen::ArrayXd rho = (front.square() + ly.square()).sqrt().max(1e-9);
-  const Eigen::ArrayXd cos_az = (front * std::cos(azimuth) + ly * std::sin(azimuth)) / rho;
   // Sigma factor: a board whose field of view does not contain the cloud's mean (the
   // estimate) is worth less, for every particle alike. A factor that depended on each
   // particle's own angle would pull the cloud inside the field of view, and one from the
   // measured angle would trust the edge's biased angles that read as inside. Particles
-  // behind the board get the mirrored direction, at a lower weight.
+  // behind the board get the mirrored direction, at a lower weight. So there are two
+  // concentrations, in front and behind, each with its normalising constant.
+  const Eigen::Matrix3d rt = rotation.transpose();
   const Eigen::Vector3d centre = rt * (mean() - board);
   const double centre_cos = centre.x() / std::max(1e-9, centre.head<2>().norm());
-  const double estimate_factor = centre_cos < std::cos(m.field_of_view) ? m.edge_sigma_factor : 1.0;
-  const Eigen::ArrayXd factor = (lx < 0.0).select(
-      Eigen::ArrayXd::Constant(lx.size(), std::max(estimate_factor, m.behind_sigma_factor)),
-      Eigen::ArrayXd::Constant(lx.size(), estimate_factor));
-  const Eigen::ArrayXd kappa_az = 1.0 / (m.azimuth_sigma * factor).square();
-  Eigen::ArrayXd gauss = (kappa_az / (2.0 * kPi)).sqrt() * (kappa_az * (cos_az - 1.0)).exp();
+  const double front_factor = centre_cos < std::cos(m.field_of_view) ? m.edge_sigma_factor : 1.0;
+  const double behind_factor = std::max(front_factor, m.behind_sigma_factor);
+  const auto concentration = [](double sigma) { return 1.0 / (sigma * sigma); };
+  const double az_front = concentration(m.azimuth_sigma * front_factor);
+  const double az_behind = concentration(m.azimuth_sigma * behind_factor);
+  const double el_front = m.use_elevation ? concentration(m.elevation_sigma * front_factor) : 0.0;
+  const double el_behind = m.use_elevation ? concentration(m.elevation_sigma * behind_factor) : 0.0;
+  // (1 - eps) times the von Mises normalisers sqrt(kappa / 2 pi), azimuth and elevation.
+  const auto scale = [&m](double kappa_az, double kappa_el) {
+    return (1.0 - m.outlier_share) * std::sqrt(kappa_az / (2.0 * kPi)) *
+           (m.use_elevation ? std::sqrt(kappa_el / (2.0 * kPi)) : 1.0);
+  };
+  const double scale_front = scale(az_front, el_front);
+  const double scale_behind = scale(az_behind, el_behind);
+
+  // Board-frame offsets of every particle: (lx, ly, lz) = R^T (p - board), lz when needed.
+  lx_ = (rt(0, 0) * (x_ - board.x()) + rt(0, 1) * (y_ - board.y()) + rt(0, 2) * (z_ - board.z()))
+            .cast<float>();
+  ly_ = (rt(1, 0) * (x_ - board.x()) + rt(1, 1) * (y_ - board.y()) + rt(1, 2) * (z_ - board.z()))
+            .cast<float>();
+  // The per-particle constants are picked in a loop of their own, so that the
+  // expressions with square roots and exponentials stay vectorised (Eigen evaluates one
+  // that contains a select element by element).
+  const auto pick = [this](double behind, double front) {
+    pick_ = (lx_ < 0.0f)
+                .select(Eigen::ArrayXf::Constant(lx_.size(), static_cast<float>(behind)),
+                        static_cast<float>(front));
+  };
+  // |lx|: the array's front/back mirror. log of the von Mises density without its
+  // normaliser: kappa (cos(measured - predicted) - 1), as dot products of unit vectors.
+  rho_ = (lx_.square() + ly_.square()).sqrt().max(1e-9f);  // horizontal distance
+  pick(az_behind, az_front);
+  inlier_ = pick_ * ((lx_.abs() * std::cos(static_cast<float>(azimuth)) +
+                      ly_ * std::sin(static_cast<float>(azimuth))) /
+                         rho_ -
+                     1.0f);
   double uniform = 1.0 / (2.0 * kPi);
   if (m.use_elevation) {
-    const Eigen::ArrayXd norm = (rho.square() + lz.square()).sqrt().max(1e-9);
-    const Eigen::ArrayXd cos_el = (rho * std::cos(elevation) + lz * std::sin(elevation)) / norm;
-    const Eigen::ArrayXd kappa_el = 1.0 / (m.elevation_sigma * factor).square();
-    gauss *= (kappa_el / (2.0 * kPi)).sqrt() * (kappa_el * (cos_el - 1.0)).exp();
+    lz_ = (rt(2, 0) * (x_ - board.x()) + rt(2, 1) * (y_ - board.y()) + rt(2, 2) * (z_ - board.z()))
+              .cast<float>();
+    pick(el_behind, el_front);
+    inlier_ += pick_ * ((rho_ * std::cos(static_cast<float>(elevation)) +
+                         lz_ * std::sin(static_cast<float>(elevation))) /
+                            (rho_.square() + lz_.square()).sqrt().max(1e-9f) -
+                        1.0f);
     uniform /= kPi;
   }
-  return applyLikelihood((1.0 - m.outlier_share) * gauss,
-                         Eigen::ArrayXd::Constant(gauss.size(), m.outlier_share * uniform));
+  pick(scale_behind, scale_front);
+  inlier_ = pick_ * inlier_.exp();
+  return applyLikelihood(inlier_, m.outlier_share * uniform);
 }
 
 MeasurementFit ParticleFilter::weightRssDirection(const Eigen::Vector3d& midpoint, double axis_yaw,
@@ -211,9 +253,9 @@ MeasurementFit ParticleFilter::weightRssDirection(const Eigen::Vector3d& midpoin
   const Eigen::ArrayXd cos_offset = (dx * std::cos(axis_yaw) + dy * std::sin(axis_yaw)) /
                                     (dx.square() + dy.square()).sqrt().max(1e-9);
   const Eigen::ArrayXd z = (difference - m.gain * cos_offset) / m.sigma;
-  return applyLikelihood(
-      (1.0 - m.outlier_share) / (std::sqrt(2.0 * kPi) * m.sigma) * (-0.5 * z.square()).exp(),
-      Eigen::ArrayXd::Constant(z.size(), m.outlier_share / m.floor_width));
+  inlier_ = ((1.0 - m.outlier_share) / (std::sqrt(2.0 * kPi) * m.sigma) * (-0.5 * z.square()).exp())
+                .cast<float>();
+  return applyLikelihood(inlier_, m.outlier_share / m.floor_width);
 }
 
 double ParticleFilter::restrict(const std::function<bool(const Eigen::Vector3d&)>& keep) {

@@ -125,13 +125,16 @@ class ParticleFilter {
 
  private:
   /// Multiplies the weights by inlier + outlier likelihood and renormalises.
-  MeasurementFit applyLikelihood(const Eigen::ArrayXd& inlier, const Eigen::ArrayXd& outlier);
-  /// xorshift64*: fast, and plenty for indexing a table and systematic resampling.
+  MeasurementFit applyLikelihood(const Eigen::ArrayXf& inlier, const Eigen::ArrayXf& outlier);
+  /// The same with an outlier likelihood that is the same for every particle.
+  MeasurementFit applyLikelihood(const Eigen::ArrayXf& inlier, double outlier);
+  /// splitmix64: fast, plenty for indexing a table and systematic resampling, and its
+  /// draws depend on each other only through one addition, so a loop of draws pipelines.
   std::uint64_t nextRandom() {
-    state_ ^= state_ >> 12;
-    state_ ^= state_ << 25;
-    state_ ^= state_ >> 27;
-    return state_ * 0x2545F4914F6CDD1Dull;
+    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
   }
   /// A standard normal draw (table lookup: the filter draws millions per second).
   double normal() { return normals_[nextRandom() >> 48]; }
@@ -151,6 +154,10 @@ class ParticleFilter {
   std::vector<double> normals_;
   std::uint64_t state_;
   Eigen::ArrayXd scratch_;
+  /// Per-particle work arrays of the likelihoods, kept to not allocate per measurement.
+  /// Single precision: the likelihoods need no more (positions are differenced in double
+  /// first), and it halves the cost of their square roots and exponentials.
+  Eigen::ArrayXf inlier_, outlier_, lx_, ly_, lz_, rho_, pick_;
 };
 
 }  // namespace estimation
