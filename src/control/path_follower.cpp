@@ -128,12 +128,14 @@ void PathFollowLaw::reset() {
 LawOutput PathFollowLaw::step(const TargetPolar& target, const std::optional<Pose2>& robot,
                               std::optional<double> walking_speed, double dt) {
   if (!robot || path_.empty() || !target.range_valid) {
-    // Without self-localisation no path can be stored: drive straight at the target.
+    // Without self-localisation no path can be stored, and before the first track point
+    // (evaluation::TrackGate) there is none yet: drive straight at the target.
     TargetPolar straight = target;
     straight.receding_speed = 0.0;
     LawOutput out = fallback_.step(straight, dt);
     if (target.range_valid && !fallback_.arrived()) {
-      out.text = "No odometry, driving straight to the target.";
+      out.text = !robot ? "No odometry, driving straight to the target."
+                        : "No path yet, driving straight to the target.";
     }
     return out;
   }

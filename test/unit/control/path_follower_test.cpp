@@ -80,6 +80,22 @@ TEST(PurePursuit, EmptyPathIsInvalid) {
   EXPECT_FALSE(purePursuit({}, Pose2{}, 1.0).valid);
 }
 
+// The person 4 m ahead: the law drives straight at them until it has a path, and says why.
+TEST(PathFollowLaw, DrivesStraightWithoutOdometryOrBeforeTheFirstPathPoint) {
+  TargetPolar ahead;
+  ahead.range = 4.0;
+  PathFollowLaw law{PathFollowParams{}, VelocityLawParams{}};
+  LawOutput out = law.step(ahead, std::nullopt, std::nullopt, 0.05);
+  EXPECT_EQ(out.text, "No odometry, driving straight to the target.");
+  out = law.step(ahead, Pose2{}, std::nullopt, 0.05);
+  EXPECT_EQ(out.text, "No path yet, driving straight to the target.");
+  EXPECT_GT(out.command.linear, 0.0);
+  ASSERT_TRUE(law.addTarget(Eigen::Vector2d(4.0, 0.0)));
+  out = law.step(ahead, Pose2{}, std::nullopt, 0.05);
+  EXPECT_EQ(out.text.find("driving straight"), std::string::npos) << out.text;
+  EXPECT_GT(out.command.linear, 0.0);
+}
+
 }  // namespace
 }  // namespace control
 }  // namespace radio_follow
