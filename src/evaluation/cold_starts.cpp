@@ -63,6 +63,11 @@ ColdStartResult runColdStarts(const Layout& layout, sim::WorldConfig world,
 
     estimation::Locator estimator(calibrated[robot], locator);
     StandingRobotSensors sensors(layout, world, robot + 1, rng);
+    if (params.reading_observer) {
+      sensors.observeReadings([&params, trial, &target](const SensorReading& r) {
+        params.reading_observer(trial, r, target);
+      });
+    }
     const auto at_target = [&target](double) { return target; };
     double mirror_run = 0.0;
     double longest = 0.0;

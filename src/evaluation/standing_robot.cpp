@@ -50,6 +50,9 @@ void StandingRobotSensors::feed(estimation::Locator& locator, double now,
                 : sim::simulateTwrRange(m, world_.twr, at, rng);
         if (range) {
           locator.addRange(m.id, *range, t);
+          if (observer_) {
+            observer_({SensorReading::Kind::kRange, s, t, *range, 0.0});
+          }
         }
       } else if (s >= modules + layout_.aoa_boards.size()) {
         blink(locator, s - modules - layout_.aoa_boards.size(), at, t, rng);
@@ -61,6 +64,9 @@ void StandingRobotSensors::feed(estimation::Locator& locator, double now,
         if (sample) {
           locator.addBearing(layout_.aoa_boards[b].id, sample->azimuth, sample->elevation,
                              sample->rssi, t);
+          if (observer_) {
+            observer_({SensorReading::Kind::kBearing, b, t, sample->azimuth, sample->elevation});
+          }
         }
       }
     }

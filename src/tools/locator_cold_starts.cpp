@@ -6,8 +6,9 @@
 //                       [--sensor-profile realistic] [--locator-overrides FILE]
 //                       [--config-dir DIR] [--trace TRIAL]
 // Lists the trials that sat on the mirror for more than 1 s; --trace prints every update of
-// one trial (status, error, hypotheses) to see why. Each trial has its own random stream,
-// so `--first N --trials 1 --trace N` runs trial N alone.
+// one trial (status, error, hypotheses) and, before each, the ranges and bearings it got,
+// beside what an exact sensor would have reported, to see why. Each trial has its own random
+// stream, so `--first N --trials 1 --trace N` runs trial N alone.
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -77,6 +78,30 @@ int main(int argc, char** argv) {
                     rf::estimation::toString(e.status), e.position.x(), e.position.y(),
                     (e.position - target).head<2>().norm(), e.hypotheses, e.hypothesis_weight,
                     e.alternative.x(), e.alternative.y());
+      };
+    }
+    if (!options["--trace"].empty()) {
+      const std::size_t traced = rf::toolCount("--trace", options["--trace"]);
+      const rf::Layout& layout = c.layout;  // as designed: the exact sensor's view
+      params.reading_observer = [traced, &layout](std::size_t trial,
+                                                  const rf::evaluation::SensorReading& reading,
+                                                  const Eigen::Vector3d& person) {
+        if (trial != traced) {
+          return;
+        }
+        if (reading.kind == rf::evaluation::SensorReading::Kind::kRange) {
+          const rf::TwrModule& m = layout.twr_modules[reading.sensor];
+          std::printf("  %.3f range %s %.3f m raw (the person %.3f m away)\n", reading.t,
+                      m.id.c_str(), reading.value, (person - m.position).norm());
+          return;
+        }
+        const rf::AoaBoard& b = layout.aoa_boards[reading.sensor];
+        const Eigen::Vector3d local = b.orientation.conjugate() * (person - b.position);
+        std::printf(
+            "  %.3f bearing %s azimuth %.1f deg, elevation %.1f deg (the person at %.1f "
+            "deg in its frame)\n",
+            reading.t, b.id.c_str(), rf::rad2deg(reading.value), rf::rad2deg(reading.elevation),
+            rf::rad2deg(std::atan2(local.y(), local.x())));
       };
     }
     const rf::evaluation::ColdStartResult r =

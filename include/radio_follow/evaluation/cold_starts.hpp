@@ -9,6 +9,7 @@
 
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/estimation/locator.hpp"
+#include "radio_follow/evaluation/standing_robot.hpp"
 #include "radio_follow/sim/world.hpp"
 
 namespace radio_follow {
@@ -34,6 +35,9 @@ struct ColdStartParams {
   std::function<void(std::size_t, double, const estimation::LocatorEstimate&,
                      const Eigen::Vector3d&)>
       observer;
+  /// Called with every range and bearing fed to the locator (trial index, reading, the
+  /// person), before the update that applies it; for tracing one trial. Empty: not called.
+  std::function<void(std::size_t, const SensorReading&, const Eigen::Vector3d&)> reading_observer;
 };
 
 /// A trial whose usable estimate sat on the mirror side for more than 1 s in a row.

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "radio_follow/config/layout.hpp"
@@ -15,6 +16,16 @@
 
 namespace radio_follow {
 namespace evaluation {
+
+/// One range or bearing the standing robot's sensors delivered, as the locator got it.
+struct SensorReading {
+  enum class Kind { kRange, kBearing };
+  Kind kind = Kind::kRange;
+  std::size_t sensor = 0;  ///< index of the module or board in the layout
+  double t = 0.0;          ///< s
+  double value = 0.0;      ///< raw range (m) or azimuth in the board's frame (rad)
+  double elevation = 0.0;  ///< bearings, rad
+};
 
 /// The sensors of one simulated robot that stands still, feeding a locator: every TWR
 /// module and AoA board of `layout` reports at 10 Hz on its own phase, with the realistic
@@ -38,6 +49,11 @@ class StandingRobotSensors {
   /// view) are skipped.
   void feed(estimation::Locator& locator, double now,
             const std::function<Eigen::Vector3d(double)>& target, sim::Rng& rng);
+  /// Calls `observer` with every range and bearing fed from now on (TDoA blinks are not
+  /// reported); for tracing. Empty: none.
+  void observeReadings(std::function<void(const SensorReading&)> observer) {
+    observer_ = std::move(observer);
+  }
 
  private:
   /// One TDoA blink of `source` (0: the target at `target`; k: module k - 1).
@@ -54,6 +70,7 @@ class StandingRobotSensors {
   /// Next report time per sensor: modules, boards, then with TDoA anchors the target's
   /// blinks and each module's.
   std::vector<double> next_;
+  std::function<void(const SensorReading&)> observer_;
 };
 
 }  // namespace evaluation

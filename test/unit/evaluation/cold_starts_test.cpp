@@ -110,6 +110,55 @@ TEST(ColdStarts, ATrialRunAloneIsTheSameTrialAsInTheSeries) {
   }
 }
 
+// The readings a trial's locator got, as `locator_cold_starts --trace` prints them: every
+// module's range and every board's bearing at 10 Hz from the sensor's own phase, each
+// before the update that applies it, and watching them changes nothing.
+TEST(ColdStarts, ShowsEveryReadingBeforeTheUpdateThatAppliesIt) {
+  const ClosedLoopConfig c =
+      loadClosedLoopConfig(RF_CONFIG_DIR, "spot", "outdoor_loop", FollowController::kVelocity, 1,
+                           "", "", sim::SensorProfile::kRealistic);
+  ColdStartParams params;
+  params.first_trial = 7;
+  params.trials = 1;
+  params.duration = 1.0;
+  std::vector<Eigen::Vector3d> unobserved;
+  params.observer = [&](std::size_t, double, const estimation::LocatorEstimate& e,
+                        const Eigen::Vector3d&) { unobserved.push_back(e.position); };
+  runColdStarts(c.layout, c.world, c.locator, params);
+
+  std::vector<Eigen::Vector3d> observed;
+  double last_update = 0.0;
+  std::size_t ranges = 0;
+  std::size_t bearings = 0;
+  params.observer = [&](std::size_t, double now, const estimation::LocatorEstimate& e,
+                        const Eigen::Vector3d&) {
+    observed.push_back(e.position);
+    last_update = now;
+  };
+  params.reading_observer = [&](std::size_t trial, const SensorReading& r,
+                                const Eigen::Vector3d& person) {
+    EXPECT_EQ(trial, 7u);
+    EXPECT_GT(r.t, last_update - 1e-9) << "shown after the update that applied it";
+    EXPECT_LE(r.t, last_update + 0.05 + 1e-9) << "shown before its update";
+    if (r.kind == SensorReading::Kind::kRange) {
+      ASSERT_LT(r.sensor, c.layout.twr_modules.size());
+      EXPECT_NEAR(r.value, (person - c.layout.twr_modules[r.sensor].position).norm(), 1.0);
+      ++ranges;
+    } else {
+      ASSERT_LT(r.sensor, c.layout.aoa_boards.size());
+      EXPECT_TRUE(std::isfinite(r.value) && std::isfinite(r.elevation));
+      ++bearings;
+    }
+  };
+  runColdStarts(c.layout, c.world, c.locator, params);
+  EXPECT_EQ(observed, unobserved);
+  // 1 s at 10 Hz: about 10 readings from each of the 3 modules, fewer from the boards
+  // that do not see the person.
+  EXPECT_GE(ranges, 25u);
+  EXPECT_LE(ranges, 33u);
+  EXPECT_GE(bearings, 10u);
+}
+
 // Trials 5263 and 7884 of `locator_cold_starts --trials 10000` (doc/locator_accuracy.md,
 // "What the locks are"): the first epoch allows several places, the main cloud settles
 // on one of them a metre or more from where it started, and the mirror filter, drawn as
