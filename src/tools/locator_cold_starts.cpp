@@ -18,6 +18,7 @@
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/common/tool_options.hpp"
+#include "radio_follow/estimation/measurement_models.hpp"
 #include "radio_follow/evaluation/closed_loop.hpp"
 #include "radio_follow/evaluation/cold_starts.hpp"
 
@@ -79,10 +80,9 @@ int main(int argc, char** argv) {
                     (e.position - target).head<2>().norm(), e.hypotheses, e.hypothesis_weight,
                     e.alternative.x(), e.alternative.y());
       };
-    }
-    if (!options["--trace"].empty()) {
-      const std::size_t traced = rf::toolCount("--trace", options["--trace"]);
-      const rf::Layout& layout = c.layout;  // as designed: the exact sensor's view
+      // Before each update, the readings it got beside an exact sensor of the layout as
+      // designed.
+      const rf::Layout& layout = c.layout;
       params.reading_observer = [traced, &layout](std::size_t trial,
                                                   const rf::evaluation::SensorReading& reading,
                                                   const Eigen::Vector3d& person) {
@@ -96,12 +96,13 @@ int main(int argc, char** argv) {
           return;
         }
         const rf::AoaBoard& b = layout.aoa_boards[reading.sensor];
-        const Eigen::Vector3d local = b.orientation.conjugate() * (person - b.position);
+        const Eigen::Vector2d exact =
+            rf::estimation::predictBearing(person, b.position, b.orientation.toRotationMatrix());
         std::printf(
             "  %.3f bearing %s azimuth %.1f deg, elevation %.1f deg (the person at %.1f "
             "deg in its frame)\n",
             reading.t, b.id.c_str(), rf::rad2deg(reading.value), rf::rad2deg(reading.elevation),
-            rf::rad2deg(std::atan2(local.y(), local.x())));
+            rf::rad2deg(exact.x()));
       };
     }
     const rf::evaluation::ColdStartResult r =
