@@ -185,15 +185,25 @@ MeasurementFit ParticleFilter::weightBearing(const Eigen::Vector3d& board,
                                              double elevation, const BearingLikelihood& m) {
   // Sigma factor: a board whose field of view does not contain the cloud's mean (the
   // estimate) is worth less, for every particle alike. A factor that depended on each
-  // particle's own angle would pull the cloud inside the field of view, and one from the
-  // measured angle would trust the edge's biased angles that read as inside. Particles
-  // behind the board get the mirrored direction, at a lower weight. So there are two
-  // concentrations, in front and behind, each with its normalising constant.
+  // particle's own angle would pull a tracked cloud inside the field of view, and one
+  // from the measured angle would trust the edge's biased angles that read as inside.
+  // Particles behind the board get the mirrored direction, at a lower weight. So there
+  // are two concentrations, inside and outside, each with its normalising constant;
+  // "inside" is in front of the board (the mean decides the factor) or, for a cold
+  // start's cloud around the robot, within the field of view by each particle's angle.
   const Eigen::Matrix3d rt = rotation.transpose();
-  const Eigen::Vector3d centre = rt * (mean() - board);
-  const double centre_cos = centre.x() / std::max(1e-9, centre.head<2>().norm());
-  const double front_factor = centre_cos < std::cos(m.field_of_view) ? m.edge_sigma_factor : 1.0;
-  const double behind_factor = std::max(front_factor, m.behind_sigma_factor);
+  const bool each_particle =
+      m.field_of_view_test == BearingLikelihood::FieldOfViewTest::kEachParticle;
+  double front_factor = 1.0;
+  if (!each_particle) {
+    const Eigen::Vector3d centre = rt * (mean() - board);
+    const double centre_cos = centre.x() / std::max(1e-9, centre.head<2>().norm());
+    front_factor = centre_cos < std::cos(m.field_of_view) ? m.edge_sigma_factor : 1.0;
+  }
+  const double behind_factor =
+      std::max(each_particle ? m.edge_sigma_factor : front_factor, m.behind_sigma_factor);
+  // lx < inside_cos * rho: outside (rho, the horizontal distance, > 0).
+  const auto inside_cos = static_cast<float>(each_particle ? std::cos(m.field_of_view) : 0.0);
   const auto concentration = [](double sigma) { return 1.0 / (sigma * sigma); };
   const double az_front = concentration(m.azimuth_sigma * front_factor);
   const double az_behind = concentration(m.azimuth_sigma * behind_factor);
@@ -215,8 +225,8 @@ MeasurementFit ParticleFilter::weightBearing(const Eigen::Vector3d& board,
   // The per-particle constants are picked in a loop of their own, so that the
   // expressions with square roots and exponentials stay vectorised (Eigen evaluates one
   // that contains a select element by element).
-  const auto pick = [this](double behind, double front) {
-    pick_ = (lx_ < 0.0f)
+  const auto pick = [this, inside_cos](double behind, double front) {
+    pick_ = (lx_ < inside_cos * rho_)
                 .select(Eigen::ArrayXf::Constant(lx_.size(), static_cast<float>(behind)),
                         static_cast<float>(front));
   };

@@ -34,6 +34,15 @@ struct RangeLikelihood {
 /// front from one behind its plane: for a particle behind the board the mirrored
 /// direction is predicted, with `behind_sigma_factor` times the sigma.
 struct BearingLikelihood {
+  /// Which angle decides whether the board sees the target (its sigma then grows by
+  /// `edge_sigma_factor`).
+  enum class FieldOfViewTest {
+    /// The cloud's mean, for every particle alike: a tracked cloud's estimate.
+    kCloudMean,
+    /// Each particle's own angle: a cold start's cloud spread around the robot, whose
+    /// mean (near the robot) says nothing about where the target is.
+    kEachParticle,
+  };
   double azimuth_sigma = 0.087;   ///< rad
   double elevation_sigma = 0.17;  ///< rad
   bool use_elevation = true;
@@ -41,6 +50,7 @@ struct BearingLikelihood {
   double field_of_view = 1.22;     ///< rad; beyond it (and behind) the sigma grows
   double edge_sigma_factor = 6.0;  ///< sigma factor of a bearing measured outside it
   double behind_sigma_factor = 6.0;
+  FieldOfViewTest field_of_view_test = FieldOfViewTest::kCloudMean;
 };
 
 /// What one measurement told a filter: its marginal likelihood sum_i w_i l_i (the

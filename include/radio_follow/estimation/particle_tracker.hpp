@@ -130,8 +130,9 @@ class ParticleTracker {
 
  private:
   void apply(const TrackedMeasurement& m);
-  MeasurementFit weigh(ParticleFilter& filter, const TrackedMeasurement& m,
-                       const Pose2& pose) const;
+  MeasurementFit weigh(ParticleFilter& filter, const TrackedMeasurement& m, const Pose2& pose,
+                       BearingLikelihood::FieldOfViewTest field_of_view =
+                           BearingLikelihood::FieldOfViewTest::kCloudMean) const;
   bool coldStart(double now);
   void seedMirror();
   void maintainMirror();

@@ -118,6 +118,113 @@ TEST(ParticleFilter, AMeasurementNothingExplainsIsAnOutlier) {
   EXPECT_NEAR(filter.mean().x(), 3.0, 0.05);  // and moved nothing
 }
 
+// A board's sigma grows outside its field of view. A tracked cloud takes the test from
+// its mean; a cold start's cloud, spread around the robot, from each particle's angle: a
+// particle beyond the edge then explains an edge-biased bearing with the wide sigma
+// instead of calling it an outlier.
+TEST(ParticleFilter, AColdStartTestsTheFieldOfViewAtEachParticle) {
+  const auto at = [](double degrees) {
+    const double a = degrees * M_PI / 180.0;
+    return Eigen::Vector3d(5.0 * std::cos(a), 5.0 * std::sin(a), 0.0);
+  };
+  BearingLikelihood model;
+  model.use_elevation = false;
+  model.field_of_view = 70.0 * M_PI / 180.0;
+  const double reading = 40.0 * M_PI / 180.0;
+  const auto likelihood = [&model](double sigma, double error) {
+    const double kappa = 1.0 / (sigma * sigma);
+    return (1.0 - model.outlier_share) * std::sqrt(kappa / (2.0 * M_PI)) *
+               std::exp(kappa * (std::cos(error) - 1.0)) +
+           model.outlier_share / (2.0 * M_PI);
+  };
+  const double off = 40.0 * M_PI / 180.0;  // the particle at 80 deg, the reading at 40
+  for (const auto test : {BearingLikelihood::FieldOfViewTest::kCloudMean,
+                          BearingLikelihood::FieldOfViewTest::kEachParticle}) {
+    ParticleFilter::Config config;
+    config.particles = 2;
+    config.planar = false;
+    ParticleFilter filter(config);
+    filter.assign({at(80.0), at(40.0)}, {Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()}, 0.0);
+    model.field_of_view_test = test;
+    filter.weightBearing(Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity(), reading, 0.0, model);
+    // The mean (60 deg) is inside: by the mean, both particles get the board's own sigma.
+    const double outside_sigma = test == BearingLikelihood::FieldOfViewTest::kEachParticle
+                                     ? model.azimuth_sigma * model.edge_sigma_factor
+                                     : model.azimuth_sigma;
+    const double outside = likelihood(outside_sigma, off);
+    const double inside = likelihood(model.azimuth_sigma, 0.0);
+    EXPECT_NEAR(filter.weight(0), outside / (outside + inside), 1e-5);
+  }
+}
+
+// The first epoch of a simulated cold start that locked onto a wrong direction for 1.1 s
+// (locator_cold_starts trial 7389, realistic profile): the person 7.4 m away at -19 deg;
+// the front board sees them; the right board, the person 72 deg off its boresight (past
+// its 70 deg field of view), reports an edge-biased 34 deg; the left board, the person
+// behind it, a reflection. The cold start follows the board that can see the person.
+// (Testing the field of view at the cloud's mean, a point near the robot, weighed the
+// front board as one looking away and settled 4.5 m off, at -55 deg.) The other sensors
+// stay silent here, so the start comes when the wait for them ends.
+TEST(ParticleTracker, AColdStartTrustsTheBoardThatCanSeeTheTarget) {
+  const LocatorConfig config = particleConfig();
+  Locator locator(test::uncalibratedLayout("spot.yaml"), config);
+  const Eigen::Vector3d truth(6.95, -2.43, config.height);
+  const auto board = [&locator](const std::string& id) {
+    for (const auto& b : locator.layout().aoa_boards) {
+      if (b.id == id) {
+        return b;
+      }
+    }
+    ADD_FAILURE() << "no board " << id;
+    return AoaBoard{};
+  };
+  const AoaBoard front = board("front");
+  const Eigen::Vector2d seen =
+      predictBearing(truth, front.position, front.orientation.toRotationMatrix());
+  const double deg = M_PI / 180.0;
+  const AoaBoard right = board("right");
+  const Eigen::Vector2d beyond =
+      predictBearing(truth, right.position, right.orientation.toRotationMatrix());
+  ASSERT_GT(beyond(0), 70.0 * deg);  // outside the right board's field of view
+  const auto& modules = locator.layout().twr_modules;
+  ASSERT_TRUE(locator.addRange(modules.back().id, (truth - modules.back().position).norm(), 0.03));
+  ASSERT_TRUE(locator.addBearing("front", seen(0) - 3.3 * deg, seen(1), -60.0, 0.003));
+  ASSERT_TRUE(locator.addBearing("left", -55.4 * deg, 3.6 * deg, -60.0, 0.032));
+  ASSERT_TRUE(locator.addBearing("right", 34.1 * deg, 3.4 * deg, -60.0, 0.026));
+  const LocatorEstimate e = locator.update(0.25);
+  ASSERT_TRUE(hasPosition(e.status)) << toString(e.status);
+  EXPECT_LT((e.position - truth).head<2>().norm(), 1.0) << e.position.transpose();
+}
+
+// A cold start waits for one input of every sensor, and for no longer than 0.2 s after the
+// first: a silent sensor delays it, it does not stop it.
+TEST(ParticleTracker, AColdStartWaitsForEverySensorBrieflyAndNoLonger) {
+  const LocatorConfig config = particleConfig();
+  const Eigen::Vector3d truth(3.0, 1.0, config.height);
+  const auto heard = [&config, &truth](bool every_board) {
+    Locator locator(test::uncalibratedLayout("spot.yaml"), config);
+    for (const auto& m : locator.layout().twr_modules) {
+      locator.addRange(m.id, (truth - m.position).norm(), 0.01);
+    }
+    for (const auto& b : locator.layout().aoa_boards) {
+      if (every_board || b.id == "front") {
+        Eigen::Vector2d ae = predictBearing(truth, b.position, b.orientation.toRotationMatrix());
+        if (std::abs(ae(0)) > M_PI / 2.0) {
+          ae(0) = std::copysign(M_PI - std::abs(ae(0)), ae(0));  // behind: read mirrored
+        }
+        locator.addBearing(b.id, ae(0), ae(1), -60.0, 0.02);
+      }
+    }
+    std::vector<bool> positioned;
+    for (double now : {0.05, 0.15, 0.25}) {
+      positioned.push_back(hasPosition(locator.update(now).status));
+    }
+    return positioned;
+  };
+  EXPECT_EQ(heard(true), (std::vector<bool>{true, true, true}));
+  EXPECT_EQ(heard(false), (std::vector<bool>{false, false, true}));
+}
+
 TEST(ParticleTracker, StaticTargetSpotConvergesWithHonestCovariance) {
   const LocatorConfig config = particleConfig();
   Locator locator(test::uncalibratedLayout("spot.yaml"), config);
