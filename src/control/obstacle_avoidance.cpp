@@ -32,9 +32,9 @@ void AvoidanceParams::validate() const {
 }
 
 SectorRanges scanSectors(const std::vector<float>& ranges, double angle_min, double angle_increment,
-                         double range_min, double range_max) {
+                         double range_min, double range_max, double corridor_half_width) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
-  SectorRanges s{kInf, kInf, kInf, kInf};
+  SectorRanges s{kInf, kInf, kInf, kInf, kInf};
   const double side = deg2rad(30.0);
   const double narrow = deg2rad(18.0);  // 20 % of the 180 deg field
   for (std::size_t i = 0; i < ranges.size(); ++i) {
@@ -45,6 +45,9 @@ SectorRanges scanSectors(const std::vector<float>& ranges, double angle_min, dou
     const double a = wrapAngle(angle_min + angle_increment * static_cast<double>(i));
     if (a > kPi / 2.0 || a < -kPi / 2.0) {
       continue;
+    }
+    if (std::abs(r * std::sin(a)) < corridor_half_width) {
+      s.corridor = std::min(s.corridor, r * std::cos(a));
     }
     if (a > side) {
       s.left = std::min(s.left, r);
@@ -63,7 +66,7 @@ SectorRanges scanSectors(const std::vector<float>& ranges, double angle_min, dou
 VelocityCommand avoidObstacles(const VelocityCommand& command, const SectorRanges& sectors,
                                const AvoidanceParams& params) {
   VelocityCommand out = command;
-  const double front = std::min(sectors.centre, sectors.centre_narrow);
+  const double front = std::min({sectors.centre, sectors.centre_narrow, sectors.corridor});
   const double freer_side = sectors.left >= sectors.right ? 1.0 : -1.0;
   if (command.linear > 0.0 && front < params.stop_threshold) {
     out.linear = 0.0;

@@ -254,7 +254,10 @@ void ClosedLoop::watchObstacles(double now) {
     // The controller's scan callback: sectors and the scan's stamp (its pipeline ignores
     // them without use_scan, as the node then does not subscribe).
     std::normal_distribution<double> noise(0.0, config_.scan.sigma);
-    pipeline_.onScan(simulatedScanSectors(obstacles, config_.scan, pose, noise, scan_rng_), now);
+    pipeline_.onScan(
+        simulatedScanSectors(obstacles, config_.scan, pose,
+                             pipeline_.params().avoidance.side_threshold, noise, scan_rng_),
+        now);
   }
 }
 

@@ -73,7 +73,9 @@ HomingResult runHomingTrial(const HomingStep& controller, double target_x, doubl
     control::VelocityCommand cmd{command.linear, command.angular};
     if (obstacles && config.use_scan) {
       cmd = control::avoidObstacles(
-          cmd, simulatedScanSectors(config.obstacles, config.scan, pose, scan_noise, rng),
+          cmd,
+          simulatedScanSectors(config.obstacles, config.scan, pose, config.avoidance.side_threshold,
+                               scan_noise, rng),
           config.avoidance);
     }
     robot.step(cmd.linear, cmd.angular, dt);

@@ -23,17 +23,22 @@ struct AvoidanceParams {
 /// Shortest return in each sector of the front half-plane (seed 000 Figure A5):
 /// left (30..90 deg), centre (-30..30 deg), right (-90..-30 deg) and the narrow
 /// "centre 2" (the middle 20 %, -18..18 deg). Infinity where nothing was seen.
+/// `corridor`: the nearest return inside the strip the robot sweeps driving straight on,
+/// as its distance ahead (x) of the scanner, the strip `corridor_half_width` to each side
+/// (side_threshold): an obstacle at 40 deg and 0.4 m, outside the centre sector, is
+/// 0.3 m ahead in it.
 struct SectorRanges {
   double left;
   double centre;
   double centre_narrow;
   double right;
+  double corridor;
 };
 
 /// Sectors from a planar scan whose angles are in the robot frame (x forward, CCW).
 /// Returns outside [range_min, range_max] and non-finite ones are ignored.
 SectorRanges scanSectors(const std::vector<float>& ranges, double angle_min, double angle_increment,
-                         double range_min, double range_max);
+                         double range_min, double range_max, double corridor_half_width);
 
 /// Bends or stops `command`; it only ever lowers the forward speed.
 /// Rules (the paper's flowchart rebuilt from its text, doc/control/homing.md, "Obstacle
@@ -43,6 +48,9 @@ SectorRanges scanSectors(const std::vector<float>& ranges, double angle_min, dou
 ///  2. centre below obstacle_threshold: forward speed scaled by how far the obstacle is
 ///     between the two thresholds, turn to the freer side;
 ///  3. a side below side_threshold: turn away from it (keeps the speed of rules 1-2).
+/// Rules 1-2 take the nearer of the centre sector and the corridor: the paper's sectors
+/// alone let the robot drive on, turning away at its rate limits, into an obstacle at
+/// 30-60 deg within side_threshold (a wall's corner it follows the person round).
 VelocityCommand avoidObstacles(const VelocityCommand& command, const SectorRanges& sectors,
                                const AvoidanceParams& params);
 

@@ -14,8 +14,10 @@ namespace evaluation {
 /// sim::noisyScan (the scan the ROS simulator publishes) through control::scanSectors, the
 /// conversion the controller nodes apply to every sensor_msgs/LaserScan
 /// (ControllerBase::onScan). `noise` and `rng` are the caller's; their state carries over.
+/// `corridor_half_width`: the avoidance's side_threshold.
 control::SectorRanges simulatedScanSectors(const sim::Obstacles& obstacles,
                                            const sim::ScanConfig& scan, const Pose2& pose,
+                                           double corridor_half_width,
                                            std::normal_distribution<double>& noise,
                                            std::mt19937_64& rng);
 

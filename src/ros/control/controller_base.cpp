@@ -187,10 +187,11 @@ void ControllerBase::onRanges(const std::string& topic, const UwbRanges::ConstPt
 }
 
 void ControllerBase::onScan(const sensor_msgs::LaserScan::ConstPtr& msg) {
-  const control::SectorRanges sectors = control::scanSectors(
-      msg->ranges, msg->angle_min, msg->angle_increment, msg->range_min, msg->range_max);
   const ros::Time stamp = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;
   const std::lock_guard<std::mutex> lock(safety_mutex_);
+  const control::SectorRanges sectors =
+      control::scanSectors(msg->ranges, msg->angle_min, msg->angle_increment, msg->range_min,
+                           msg->range_max, pipeline_.params().avoidance.side_threshold);
   pipeline_.onScan(sectors, stamp.toSec());
 }
 
