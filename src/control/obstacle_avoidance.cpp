@@ -19,7 +19,7 @@ const ParamTable<AvoidanceParams>& AvoidanceParams::table() {
           .add("avoidance/stop_threshold", &AvoidanceParams::stop_threshold, "m",
                "No forward motion below this (ahead).", Range::above(0.0))
           .add("avoidance/side_threshold", &AvoidanceParams::side_threshold, "m",
-               "Turn away from a side below this.", Range::above(0.0))
+               "Turn away from a side below this; the swept strip's half-width.", Range::above(0.0))
           .add("avoidance/turn_rate", &AvoidanceParams::turn_rate, "rad/s",
                "Yaw rate used to bend.", Range::above(0.0));
   return t;
