@@ -246,8 +246,8 @@ bool ParticleTracker::coldStart(double now) {
   }
   // One epoch of every sensor first: a start from the first two or three inputs takes a
   // board's reflection, or the edge-biased reading of a board that cannot see the target,
-  // as the direction whenever the board that sees it has not spoken yet (in simulated
-  // realistic cold starts this more than halved the starts that were ever on the mirror).
+  // as the direction whenever the board that sees it has not spoken yet
+  // (doc/locator_accuracy.md, "What the locks are").
   std::size_t heard = any_tdoa ? 1 : 0;
   for (const auto& [key, m] : newest) {
     heard += m->kind == TrackedMeasurement::Kind::kRange ||
