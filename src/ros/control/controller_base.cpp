@@ -188,10 +188,16 @@ void ControllerBase::onRanges(const std::string& topic, const UwbRanges::ConstPt
 
 void ControllerBase::onScan(const sensor_msgs::LaserScan::ConstPtr& msg) {
   const ros::Time stamp = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;
-  const std::lock_guard<std::mutex> lock(safety_mutex_);
+  double strip_half_width = 0.0;
+  {
+    const std::lock_guard<std::mutex> lock(safety_mutex_);
+    strip_half_width = pipeline_.params().avoidance.side_threshold;
+  }
+  // The sectors outside the lock: a stop from the range callback does not wait for a scan.
   const control::SectorRanges sectors =
       control::scanSectors(msg->ranges, msg->angle_min, msg->angle_increment, msg->range_min,
-                           msg->range_max, pipeline_.params().avoidance.side_threshold);
+                           msg->range_max, strip_half_width);
+  const std::lock_guard<std::mutex> lock(safety_mutex_);
   pipeline_.onScan(sectors, stamp.toSec());
 }
 
