@@ -194,28 +194,29 @@ MeasurementFit ParticleFilter::weightBearing(const Eigen::Vector3d& board,
   const Eigen::Matrix3d rt = rotation.transpose();
   const bool each_particle =
       m.field_of_view_test == BearingLikelihood::FieldOfViewTest::kEachParticle;
-  double front_factor = 1.0;
+  double inside_factor = 1.0;
   if (!each_particle) {
     const Eigen::Vector3d centre = rt * (mean() - board);
     const double centre_cos = centre.x() / std::max(1e-9, centre.head<2>().norm());
-    front_factor = centre_cos < std::cos(m.field_of_view) ? m.edge_sigma_factor : 1.0;
+    inside_factor = centre_cos < std::cos(m.field_of_view) ? m.edge_sigma_factor : 1.0;
   }
-  const double behind_factor =
-      std::max(each_particle ? m.edge_sigma_factor : front_factor, m.behind_sigma_factor);
+  const double outside_factor =
+      std::max(each_particle ? m.edge_sigma_factor : inside_factor, m.behind_sigma_factor);
   // lx < inside_cos * rho: outside (rho, the horizontal distance, > 0).
   const auto inside_cos = static_cast<float>(each_particle ? std::cos(m.field_of_view) : 0.0);
   const auto concentration = [](double sigma) { return 1.0 / (sigma * sigma); };
-  const double az_front = concentration(m.azimuth_sigma * front_factor);
-  const double az_behind = concentration(m.azimuth_sigma * behind_factor);
-  const double el_front = m.use_elevation ? concentration(m.elevation_sigma * front_factor) : 0.0;
-  const double el_behind = m.use_elevation ? concentration(m.elevation_sigma * behind_factor) : 0.0;
+  const double az_inside = concentration(m.azimuth_sigma * inside_factor);
+  const double az_outside = concentration(m.azimuth_sigma * outside_factor);
+  const double el_inside = m.use_elevation ? concentration(m.elevation_sigma * inside_factor) : 0.0;
+  const double el_outside =
+      m.use_elevation ? concentration(m.elevation_sigma * outside_factor) : 0.0;
   // (1 - eps) times the von Mises normalisers sqrt(kappa / 2 pi), azimuth and elevation.
   const auto scale = [&m](double kappa_az, double kappa_el) {
     return (1.0 - m.outlier_share) * std::sqrt(kappa_az / (2.0 * kPi)) *
            (m.use_elevation ? std::sqrt(kappa_el / (2.0 * kPi)) : 1.0);
   };
-  const double scale_front = scale(az_front, el_front);
-  const double scale_behind = scale(az_behind, el_behind);
+  const double scale_inside = scale(az_inside, el_inside);
+  const double scale_outside = scale(az_outside, el_outside);
 
   // Board-frame offsets of every particle: (lx, ly, lz) = R^T (p - board), lz when needed.
   lx_ = (rt(0, 0) * (x_ - board.x()) + rt(0, 1) * (y_ - board.y()) + rt(0, 2) * (z_ - board.z()))
@@ -225,15 +226,15 @@ MeasurementFit ParticleFilter::weightBearing(const Eigen::Vector3d& board,
   // The per-particle constants are picked in a loop of their own, so that the
   // expressions with square roots and exponentials stay vectorised (Eigen evaluates one
   // that contains a select element by element).
-  const auto pick = [this, inside_cos](double behind, double front) {
+  const auto pick = [this, inside_cos](double outside, double inside) {
     pick_ = (lx_ < inside_cos * rho_)
-                .select(Eigen::ArrayXf::Constant(lx_.size(), static_cast<float>(behind)),
-                        static_cast<float>(front));
+                .select(Eigen::ArrayXf::Constant(lx_.size(), static_cast<float>(outside)),
+                        static_cast<float>(inside));
   };
   // |lx|: the array's front/back mirror. log of the von Mises density without its
   // normaliser: kappa (cos(measured - predicted) - 1), as dot products of unit vectors.
   rho_ = (lx_.square() + ly_.square()).sqrt().max(1e-9f);  // horizontal distance
-  pick(az_behind, az_front);
+  pick(az_outside, az_inside);
   inlier_ = pick_ * ((lx_.abs() * std::cos(static_cast<float>(azimuth)) +
                       ly_ * std::sin(static_cast<float>(azimuth))) /
                          rho_ -
@@ -242,14 +243,14 @@ MeasurementFit ParticleFilter::weightBearing(const Eigen::Vector3d& board,
   if (m.use_elevation) {
     lz_ = (rt(2, 0) * (x_ - board.x()) + rt(2, 1) * (y_ - board.y()) + rt(2, 2) * (z_ - board.z()))
               .cast<float>();
-    pick(el_behind, el_front);
+    pick(el_outside, el_inside);
     inlier_ += pick_ * ((rho_ * std::cos(static_cast<float>(elevation)) +
                          lz_ * std::sin(static_cast<float>(elevation))) /
                             (rho_.square() + lz_.square()).sqrt().max(1e-9f) -
                         1.0f);
     uniform /= kPi;
   }
-  pick(scale_behind, scale_front);
+  pick(scale_outside, scale_inside);
   inlier_ = pick_ * inlier_.exp();
   return applyLikelihood(inlier_, m.outlier_share * uniform);
 }
