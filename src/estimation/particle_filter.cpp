@@ -6,6 +6,8 @@
 #include <random>
 #include <utility>
 
+#include "radio_follow/estimation/fast_exp.hpp"
+
 namespace radio_follow {
 namespace estimation {
 namespace {
@@ -35,6 +37,13 @@ RangeTerms rangeTerms(const RangeLikelihood& m) {
           1.0 / m.sigma, 1.0 / m.outlier_length};
 }
 
+/// 1 where x > 0, 0 where x <= 0 (for |x| > 1e-30), with arithmetic only: Eigen
+/// vectorises it, where it evaluates an expression containing a select element by element.
+template <typename Derived>
+auto step(const Eigen::ArrayBase<Derived>& x) {
+  return (x * 1e30f).max(0.0f).min(1.0f);
+}
+
 /// The inlier (Gaussian) and outlier (tail and floor) parts of the likelihood of every
 /// error in `error`, written into the two buffers (`inlier` may alias `error`).
 void rangeLikelihood(const Eigen::ArrayXf& error, const RangeLikelihood& m, Eigen::ArrayXf* inlier,
@@ -43,17 +52,13 @@ void rangeLikelihood(const Eigen::ArrayXf& error, const RangeLikelihood& m, Eige
   const auto tail = static_cast<float>(k.tail);
   const auto inv_length = static_cast<float>(k.inv_length);
   const auto floor = static_cast<float>(k.floor);
-  // The exponentials are taken over whole arrays (vectorised); the one-sided tail's
-  // cut is applied after, as Eigen evaluates an expression containing a select element
-  // by element.
   if (m.one_sided) {
-    *outlier = tail * (-error.max(0.0f) * inv_length).exp();
-    *outlier = (error > 0.0f).select(*outlier, 0.0f) + floor;
+    *outlier = tail * step(error) * fastExp(-error.max(0.0f) * inv_length) + floor;
   } else {
-    *outlier = tail * (-error.abs() * inv_length).exp() + floor;
+    *outlier = tail * fastExp(-error.abs() * inv_length) + floor;
   }
   *inlier = static_cast<float>(k.gauss) *
-            (-0.5f * (error * static_cast<float>(k.inv_sigma)).square()).exp();
+            fastExp(-0.5f * (error * static_cast<float>(k.inv_sigma)).square());
 }
 
 }  // namespace
@@ -74,8 +79,8 @@ ParticleFilter::ParticleFilter(const Config& config) : config_(config), state_(c
   std::mt19937_64 rng(config.seed);
   std::normal_distribution<double> normal(0.0, 1.0);
   normals_.resize(kNormalTable);
-  for (double& n : normals_) {
-    n = normal(rng);
+  for (float& n : normals_) {
+    n = static_cast<float>(normal(rng));
   }
   state_ = config.seed * 0x9E3779B97F4A7C15ull + 1;
 }
@@ -98,19 +103,30 @@ void ParticleFilter::initialize(const std::vector<Eigen::Vector3d>& positions,
 void ParticleFilter::assign(const std::vector<Eigen::Vector3d>& positions,
                             const std::vector<Eigen::Vector2d>& velocities, double t) {
   const auto n = static_cast<Eigen::Index>(positions.size());
+  origin_.setZero();
+  for (const Eigen::Vector3d& p : positions) {
+    origin_ += p;
+  }
+  if (n > 0) {
+    origin_ /= static_cast<double>(n);
+  }
+  if (config_.planar) {
+    origin_.z() = config_.height;
+  }
   x_.resize(n);
   y_.resize(n);
   z_.resize(n);
   vx_.resize(n);
   vy_.resize(n);
-  w_.setConstant(n, 1.0 / static_cast<double>(n));
+  w_.setConstant(n, 1.0f / static_cast<float>(n));
   for (Eigen::Index i = 0; i < n; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    x_[i] = positions[k].x();
-    y_[i] = positions[k].y();
-    z_[i] = config_.planar ? config_.height : positions[k].z();
-    vx_[i] = velocities[k].x();
-    vy_[i] = velocities[k].y();
+    const Eigen::Vector3f p = local(positions[k]);
+    x_[i] = p.x();
+    y_[i] = p.y();
+    z_[i] = config_.planar ? 0.0f : p.z();
+    vx_[i] = static_cast<float>(velocities[k].x());
+    vy_[i] = static_cast<float>(velocities[k].y());
   }
   t_ = t;
   initialized_ = n > 0;
@@ -125,16 +141,29 @@ void ParticleFilter::predict(double t) {
   // sqrt(q dt) dt / 2 n1 + sqrt(q dt^3 / 12) n2 (covariance q [dt^3/3, dt^2/2; dt^2/2, dt]).
   const double sv = std::sqrt(config_.process_noise * dt);
   const double sp = std::sqrt(config_.process_noise * dt * dt * dt / 12.0);
-  const double sz = std::sqrt(config_.vertical_noise * dt);
-  double n[4];
-  for (Eigen::Index i = 0; i < w_.size(); ++i) {
-    normals4(n);
-    x_[i] += vx_[i] * dt + sv * dt * 0.5 * n[0] + sp * n[2];
-    y_[i] += vy_[i] * dt + sv * dt * 0.5 * n[1] + sp * n[3];
-    vx_[i] += sv * n[0];
-    vy_[i] += sv * n[1];
-    if (!config_.planar) {
-      z_[i] += sz * normal();
+  const Eigen::Index n = w_.size();
+  // The draws first (four per particle from the four 16-bit parts of one random word),
+  // then the motion as whole-array expressions, which vectorise.
+  noise_.resize(n, 4);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const std::uint64_t r = nextRandom();
+    noise_(i, 0) = normals_[r & 0xFFFF];
+    noise_(i, 1) = normals_[(r >> 16) & 0xFFFF];
+    noise_(i, 2) = normals_[(r >> 32) & 0xFFFF];
+    noise_(i, 3) = normals_[r >> 48];
+  }
+  const auto step = static_cast<float>(dt);
+  const auto half = static_cast<float>(sv * dt * 0.5);
+  const auto position = static_cast<float>(sp);
+  const auto velocity = static_cast<float>(sv);
+  x_ += vx_ * step + half * noise_.col(0) + position * noise_.col(2);
+  y_ += vy_ * step + half * noise_.col(1) + position * noise_.col(3);
+  vx_ += velocity * noise_.col(0);
+  vy_ += velocity * noise_.col(1);
+  if (!config_.planar) {
+    const double sz = std::sqrt(config_.vertical_noise * dt);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      z_[i] += static_cast<float>(sz * normal());
     }
   }
   t_ = t;
@@ -142,40 +171,42 @@ void ParticleFilter::predict(double t) {
 
 MeasurementFit ParticleFilter::applyLikelihood(const Eigen::ArrayXf& inlier,
                                                const Eigen::ArrayXf& outlier) {
-  const double inlier_mass = (w_ * inlier.cast<double>()).sum();
-  const double evidence = inlier_mass + (w_ * outlier.cast<double>()).sum();
+  const double inlier_mass = (w_ * inlier).sum();
+  const double evidence = inlier_mass + (w_ * outlier).sum();
   if (!(evidence > 0.0) || !std::isfinite(evidence)) {
     return {};  // weights unchanged: a measurement nothing can explain says nothing
   }
-  w_ *= (inlier + outlier).cast<double>() * (1.0 / evidence);
+  w_ *= (inlier + outlier) * static_cast<float>(1.0 / evidence);
   return {evidence, inlier_mass / evidence};
 }
 
 MeasurementFit ParticleFilter::applyLikelihood(const Eigen::ArrayXf& inlier, double outlier) {
   // The weights sum to one: the outlier part of the evidence is the constant itself.
-  const double inlier_mass = (w_ * inlier.cast<double>()).sum();
+  const double inlier_mass = (w_ * inlier).sum();
   const double evidence = inlier_mass + outlier;
   if (!(evidence > 0.0) || !std::isfinite(evidence)) {
     return {};
   }
-  w_ *= (inlier.cast<double>() + outlier) * (1.0 / evidence);
+  w_ *= (inlier + static_cast<float>(outlier)) * static_cast<float>(1.0 / evidence);
   return {evidence, inlier_mass / evidence};
 }
 
 MeasurementFit ParticleFilter::weightRange(const Eigen::Vector3d& module, double range,
                                            const RangeLikelihood& model) {
-  inlier_ = ((x_ - module.x()).square() + (y_ - module.y()).square() + (z_ - module.z()).square())
-                .cast<float>();  // squared distances
-  inlier_ = static_cast<float>(range) - inlier_.sqrt();
+  const Eigen::Vector3f m = local(module);
+  inlier_ = static_cast<float>(range) -
+            ((x_ - m.x()).square() + (y_ - m.y()).square() + (z_ - m.z()).square()).sqrt();
   rangeLikelihood(inlier_, model, &inlier_, &outlier_);
   return applyLikelihood(inlier_, outlier_);
 }
 
 MeasurementFit ParticleFilter::weightTdoa(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                                           double difference, const RangeLikelihood& model) {
-  lx_ = ((x_ - a.x()).square() + (y_ - a.y()).square() + (z_ - a.z()).square()).cast<float>();
-  ly_ = ((x_ - b.x()).square() + (y_ - b.y()).square() + (z_ - b.z()).square()).cast<float>();
-  inlier_ = static_cast<float>(difference) - (lx_.sqrt() - ly_.sqrt());
+  const Eigen::Vector3f p = local(a);
+  const Eigen::Vector3f q = local(b);
+  lx_ = ((x_ - p.x()).square() + (y_ - p.y()).square() + (z_ - p.z()).square()).sqrt();
+  ly_ = ((x_ - q.x()).square() + (y_ - q.y()).square() + (z_ - q.z()).square()).sqrt();
+  inlier_ = static_cast<float>(difference) - (lx_ - ly_);
   rangeLikelihood(inlier_, model, &inlier_, &outlier_);
   return applyLikelihood(inlier_, outlier_);
 }
@@ -219,47 +250,46 @@ MeasurementFit ParticleFilter::weightBearing(const Eigen::Vector3d& board,
   const double scale_outside = scale(az_outside, el_outside);
 
   // Board-frame offsets of every particle: (lx, ly, lz) = R^T (p - board), lz when needed.
-  lx_ = (rt(0, 0) * (x_ - board.x()) + rt(0, 1) * (y_ - board.y()) + rt(0, 2) * (z_ - board.z()))
-            .cast<float>();
-  ly_ = (rt(1, 0) * (x_ - board.x()) + rt(1, 1) * (y_ - board.y()) + rt(1, 2) * (z_ - board.z()))
-            .cast<float>();
-  // The per-particle constants are picked in a loop of their own, so that the
-  // expressions with square roots and exponentials stay vectorised (Eigen evaluates one
-  // that contains a select element by element).
-  const auto pick = [this, inside_cos](double outside, double inside) {
-    pick_ = (lx_ < inside_cos * rho_)
-                .select(Eigen::ArrayXf::Constant(lx_.size(), static_cast<float>(outside)),
-                        static_cast<float>(inside));
+  const Eigen::Matrix3f r = rt.cast<float>();
+  const Eigen::Vector3f b = local(board);
+  lx_ = r(0, 0) * (x_ - b.x()) + r(0, 1) * (y_ - b.y()) + r(0, 2) * (z_ - b.z());
+  ly_ = r(1, 0) * (x_ - b.x()) + r(1, 1) * (y_ - b.y()) + r(1, 2) * (z_ - b.z());
+  // Reciprocal square roots (one vector instruction and a Newton step) stand in for
+  // square roots and divisions: rho = rho^2 / rho.
+  rho2_ = (lx_.square() + ly_.square()).max(1e-18f);  // squared horizontal distance
+  inv_rho_ = rho2_.rsqrt();
+  // The per-particle constants blend by a 0/1 mask (1: outside) computed with arithmetic
+  // (step()), which vectorises where a select is evaluated element by element.
+  pick_ = step(inside_cos * rho2_ * inv_rho_ - lx_);
+  const auto blend = [this](double outside, double inside) {
+    return static_cast<float>(inside) + static_cast<float>(outside - inside) * pick_;
   };
   // |lx|: the array's front/back mirror. log of the von Mises density without its
   // normaliser: kappa (cos(measured - predicted) - 1), as dot products of unit vectors.
-  rho_ = (lx_.square() + ly_.square()).sqrt().max(1e-9f);  // horizontal distance
-  pick(az_outside, az_inside);
-  inlier_ = pick_ * ((lx_.abs() * std::cos(static_cast<float>(azimuth)) +
-                      ly_ * std::sin(static_cast<float>(azimuth))) /
-                         rho_ -
-                     1.0f);
+  inlier_ = blend(az_outside, az_inside) * ((lx_.abs() * std::cos(static_cast<float>(azimuth)) +
+                                             ly_ * std::sin(static_cast<float>(azimuth))) *
+                                                inv_rho_ -
+                                            1.0f);
   double uniform = 1.0 / (2.0 * kPi);
   if (m.use_elevation) {
-    lz_ = (rt(2, 0) * (x_ - board.x()) + rt(2, 1) * (y_ - board.y()) + rt(2, 2) * (z_ - board.z()))
-              .cast<float>();
-    pick(el_outside, el_inside);
-    inlier_ += pick_ * ((rho_ * std::cos(static_cast<float>(elevation)) +
-                         lz_ * std::sin(static_cast<float>(elevation))) /
-                            (rho_.square() + lz_.square()).sqrt().max(1e-9f) -
-                        1.0f);
+    lz_ = r(2, 0) * (x_ - b.x()) + r(2, 1) * (y_ - b.y()) + r(2, 2) * (z_ - b.z());
+    inlier_ += blend(el_outside, el_inside) *
+               ((rho2_ * inv_rho_ * std::cos(static_cast<float>(elevation)) +
+                 lz_ * std::sin(static_cast<float>(elevation))) *
+                    (rho2_ + lz_.square()).rsqrt() -
+                1.0f);
     uniform /= kPi;
   }
-  pick(scale_outside, scale_inside);
-  inlier_ = pick_ * inlier_.exp();
+  inlier_ = blend(scale_outside, scale_inside) * fastExp(inlier_);
   return applyLikelihood(inlier_, m.outlier_share * uniform);
 }
 
 MeasurementFit ParticleFilter::weightRssDirection(const Eigen::Vector3d& midpoint, double axis_yaw,
                                                   double difference,
                                                   const RssDirectionLikelihood& m) {
-  const Eigen::ArrayXd dx = x_ - midpoint.x();
-  const Eigen::ArrayXd dy = y_ - midpoint.y();
+  const Eigen::Vector3d centre = midpoint - origin_;
+  const Eigen::ArrayXd dx = x_.cast<double>() - centre.x();
+  const Eigen::ArrayXd dy = y_.cast<double>() - centre.y();
   // cos(theta - theta_a) of every particle; one on the midpoint itself says nothing.
   const Eigen::ArrayXd cos_offset = (dx * std::cos(axis_yaw) + dy * std::sin(axis_yaw)) /
                                     (dx.square() + dy.square()).sqrt().max(1e-9);
@@ -270,15 +300,15 @@ MeasurementFit ParticleFilter::weightRssDirection(const Eigen::Vector3d& midpoin
 }
 
 double ParticleFilter::restrict(const std::function<bool(const Eigen::Vector3d&)>& keep) {
-  scratch_ = w_;
+  scratch_ = w_.cast<double>();
   for (Eigen::Index i = 0; i < w_.size(); ++i) {
-    if (!keep(Eigen::Vector3d(x_[i], y_[i], z_[i]))) {
+    if (!keep(position(static_cast<std::size_t>(i)))) {
       scratch_[i] = 0.0;
     }
   }
   const double kept = scratch_.sum();
   if (kept > 0.0) {
-    w_ = scratch_ / kept;
+    w_ = (scratch_ / kept).cast<float>();
   }
   return kept;
 }
@@ -288,10 +318,8 @@ double ParticleFilter::effectiveSampleSize() const {
   return s > 0.0 ? 1.0 / s : 0.0;
 }
 
-void ParticleFilter::draw(std::size_t count, std::vector<Eigen::Vector3d>* positions,
-                          std::vector<Eigen::Vector2d>* velocities) {
-  positions->clear();
-  velocities->clear();
+void ParticleFilter::drawIndices(std::size_t count) {
+  indices_.clear();
   if (count == 0 || w_.size() == 0) {
     return;
   }
@@ -304,9 +332,19 @@ void ParticleFilter::draw(std::size_t count, std::vector<Eigen::Vector3d>* posit
     while (pointer > cumulative && i + 1 < w_.size()) {
       cumulative += w_[++i];
     }
-    positions->emplace_back(x_[i], y_[i], z_[i]);
-    velocities->emplace_back(vx_[i], vy_[i]);
+    indices_.push_back(i);
     pointer += step;
+  }
+}
+
+void ParticleFilter::draw(std::size_t count, std::vector<Eigen::Vector3d>* positions,
+                          std::vector<Eigen::Vector2d>* velocities) {
+  drawIndices(count);
+  positions->clear();
+  velocities->clear();
+  for (const Eigen::Index i : indices_) {
+    positions->push_back(position(static_cast<std::size_t>(i)));
+    velocities->emplace_back(vx_[i], vy_[i]);
   }
 }
 
@@ -315,15 +353,33 @@ bool ParticleFilter::resampleIfNeeded() {
       effectiveSampleSize() >= config_.resample_threshold * static_cast<double>(w_.size())) {
     return false;
   }
-  std::vector<Eigen::Vector3d> positions;
-  std::vector<Eigen::Vector2d> velocities;
-  draw(static_cast<std::size_t>(w_.size()), &positions, &velocities);
-  assign(positions, velocities, t_);
+  // In place: every state array gathered by the drawn indices, then re-centred on the
+  // new cloud's mean (as assign() does), so the offsets stay small as the target moves.
+  drawIndices(static_cast<std::size_t>(w_.size()));
+  const auto gather = [this](Eigen::ArrayXf& a) {
+    gathered_ = a(indices_);
+    a.swap(gathered_);
+  };
+  gather(x_);
+  gather(y_);
+  gather(z_);
+  gather(vx_);
+  gather(vy_);
+  w_.setConstant(w_.size(), 1.0f / static_cast<float>(w_.size()));
+  const Eigen::Vector3f shift = localMean().cast<float>();
+  x_ -= shift.x();
+  y_ -= shift.y();
+  z_ -= shift.z();
+  origin_ += shift.cast<double>();
   return true;
 }
 
-Eigen::Vector3d ParticleFilter::mean() const {
+Eigen::Vector3d ParticleFilter::localMean() const {
   return {(w_ * x_).sum(), (w_ * y_).sum(), (w_ * z_).sum()};
+}
+
+Eigen::Vector3d ParticleFilter::mean() const {
+  return origin_ + localMean();
 }
 
 Eigen::Vector2d ParticleFilter::meanVelocity() const {
@@ -331,10 +387,10 @@ Eigen::Vector2d ParticleFilter::meanVelocity() const {
 }
 
 Eigen::Matrix3d ParticleFilter::covariance() const {
-  const Eigen::Vector3d m = mean();
-  const Eigen::ArrayXd ex = x_ - m.x();
-  const Eigen::ArrayXd ey = y_ - m.y();
-  const Eigen::ArrayXd ez = z_ - m.z();
+  const Eigen::Vector3d m = localMean();
+  const Eigen::ArrayXf ex = x_ - static_cast<float>(m.x());
+  const Eigen::ArrayXf ey = y_ - static_cast<float>(m.y());
+  const Eigen::ArrayXf ez = z_ - static_cast<float>(m.z());
   Eigen::Matrix3d c;
   c(0, 0) = (w_ * ex * ex).sum();
   c(1, 1) = (w_ * ey * ey).sum();
@@ -346,9 +402,10 @@ Eigen::Matrix3d ParticleFilter::covariance() const {
 }
 
 Eigen::Matrix4d ParticleFilter::planarCovariance() const {
-  const Eigen::Vector3d m = mean();
+  const Eigen::Vector3d m = localMean();
   const Eigen::Vector2d v = meanVelocity();
-  const Eigen::ArrayXd e[4] = {x_ - m.x(), y_ - m.y(), vx_ - v.x(), vy_ - v.y()};
+  const Eigen::ArrayXf e[4] = {x_ - static_cast<float>(m.x()), y_ - static_cast<float>(m.y()),
+                               vx_ - static_cast<float>(v.x()), vy_ - static_cast<float>(v.y())};
   Eigen::Matrix4d c;
   for (int r = 0; r < 4; ++r) {
     for (int k = r; k < 4; ++k) {

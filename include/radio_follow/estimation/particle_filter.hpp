@@ -118,7 +118,9 @@ class ParticleFilter {
   Eigen::Matrix4d planarCovariance() const;
 
   std::size_t size() const { return static_cast<std::size_t>(w_.size()); }
-  Eigen::Vector3d position(std::size_t i) const { return {x_[i], y_[i], z_[i]}; }
+  Eigen::Vector3d position(std::size_t i) const {
+    return origin_ + Eigen::Vector3d(x_[i], y_[i], z_[i]);
+  }
   Eigen::Vector2d velocity(std::size_t i) const { return {vx_[i], vy_[i]}; }
   double weight(std::size_t i) const { return w_[i]; }
   /// N particles drawn (systematically) from this cloud: (position, velocity) pairs.
@@ -134,6 +136,8 @@ class ParticleFilter {
   const Config& config() const { return config_; }
 
  private:
+  /// `count` systematic draws of particle indices by weight, into indices_.
+  void drawIndices(std::size_t count);
   /// Multiplies the weights by inlier + outlier likelihood and renormalises.
   MeasurementFit applyLikelihood(const Eigen::ArrayXf& inlier, const Eigen::ArrayXf& outlier);
   /// The same with an outlier likelihood that is the same for every particle.
@@ -148,26 +152,30 @@ class ParticleFilter {
   }
   /// A standard normal draw (table lookup: the filter draws millions per second).
   double normal() { return normals_[nextRandom() >> 48]; }
-  /// Four at once, from the four 16-bit parts of one random word.
-  void normals4(double* out) {
-    const std::uint64_t r = nextRandom();
-    out[0] = normals_[r & 0xFFFF];
-    out[1] = normals_[(r >> 16) & 0xFFFF];
-    out[2] = normals_[(r >> 32) & 0xFFFF];
-    out[3] = normals_[r >> 48];
-  }
+  /// `p` relative to the particles' origin, single precision.
+  Eigen::Vector3f local(const Eigen::Vector3d& p) const { return (p - origin_).cast<float>(); }
+  /// The cloud's weighted mean relative to the origin.
+  Eigen::Vector3d localMean() const;
 
   Config config_;
   bool initialized_ = false;
   double t_ = 0.0;
-  Eigen::ArrayXd x_, y_, z_, vx_, vy_, w_;
-  std::vector<double> normals_;
+  /// Particle states in single precision, positions relative to `origin_` (the mean of
+  /// the particles at the last assign(), i.e. at every resampling): a cloud spans metres,
+  /// so its offsets keep micrometres wherever the tracking frame's origin is. Single
+  /// precision halves the cost of every per-particle loop (four lanes per vector
+  /// instruction instead of two).
+  Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
+  Eigen::ArrayXf x_, y_, z_, vx_, vy_, w_;
+  std::vector<float> normals_;
   std::uint64_t state_;
   Eigen::ArrayXd scratch_;
+  /// The prediction's standard normal draws, four per particle (a column each).
+  Eigen::ArrayXXf noise_;
+  std::vector<Eigen::Index> indices_;  ///< drawIndices()'s result
+  Eigen::ArrayXf gathered_;
   /// Per-particle work arrays of the likelihoods, kept to not allocate per measurement.
-  /// Single precision: the likelihoods need no more (positions are differenced in double
-  /// first), and it halves the cost of their square roots and exponentials.
-  Eigen::ArrayXf inlier_, outlier_, lx_, ly_, lz_, rho_, pick_;
+  Eigen::ArrayXf inlier_, outlier_, lx_, ly_, lz_, rho2_, inv_rho_, pick_;
 };
 
 }  // namespace estimation
