@@ -118,6 +118,37 @@ TEST(ParticleFilter, AMeasurementNothingExplainsIsAnOutlier) {
   EXPECT_NEAR(filter.mean().x(), 3.0, 0.05);  // and moved nothing
 }
 
+// Single-precision particles are offsets from an origin in double: a track kilometres from
+// the odometry frame's origin (a long drive) is as precise as one next to it. The same
+// seed and the same measurements, once near the origin and once shifted by (5 km, -3 km),
+// give the same estimate to within a millimetre (the shift's rounding); floats holding
+// the absolute positions there would resolve only 0.5 mm steps, coarser than the
+// prediction's position noise per step.
+TEST(ParticleFilter, TracksKilometresFromTheFrameOriginAsPreciselyAsNearIt) {
+  const auto run = [](const Eigen::Vector3d& shift) {
+    ParticleFilter filter(ParticleFilter::Config{});
+    filter.initialize({Eigen::Vector3d(3, 1, 1) + shift}, 0.5, 0.0);
+    const Eigen::Vector3d modules[3] = {{0.3, 0, 1}, {-0.3, 0, 1}, {0, 0.3, 1}};
+    std::mt19937 rng(5);
+    std::normal_distribution<double> noise(0.0, 0.05);
+    for (int k = 1; k <= 200; ++k) {
+      const double t = 0.05 * k;
+      const Eigen::Vector3d target(3.0 + 0.5 * t, 1.0 + 0.2 * t, 1.0);
+      filter.predict(t);
+      for (const Eigen::Vector3d& m : modules) {
+        filter.weightRange(m + shift, (target - m).norm() + noise(rng), RangeLikelihood{});
+      }
+      filter.resampleIfNeeded();
+    }
+    return std::make_pair(Eigen::Vector3d(filter.mean() - shift), filter.covariance());
+  };
+  const auto [near_mean, near_covariance] = run(Eigen::Vector3d::Zero());
+  const auto [far_mean, far_covariance] = run(Eigen::Vector3d(5000.0, -3000.0, 0.0));
+  EXPECT_LT((near_mean - Eigen::Vector3d(8.0, 3.0, 1.0)).head<2>().norm(), 0.3);
+  EXPECT_LT((far_mean - near_mean).norm(), 1e-3);
+  EXPECT_LT((far_covariance - near_covariance).norm(), 1e-4);
+}
+
 // A board's sigma grows outside its field of view. A tracked cloud takes the test from
 // its mean; a cold start's cloud, spread around the robot, from each particle's angle: a
 // particle beyond the edge then explains an edge-biased bearing with the wide sigma
