@@ -160,11 +160,10 @@ class ParticleFilter {
   Config config_;
   bool initialized_ = false;
   double t_ = 0.0;
-  /// Particle states in single precision, positions relative to `origin_` (the mean of
-  /// the particles at the last assign(), i.e. at every resampling): a cloud spans metres,
-  /// so its offsets keep micrometres wherever the tracking frame's origin is. Single
-  /// precision halves the cost of every per-particle loop (four lanes per vector
-  /// instruction instead of two).
+  /// Particle states in single precision, positions relative to `origin_` (the cloud's
+  /// mean, set by assign() and moved at every resampling): a cloud spans metres, so its
+  /// offsets keep micrometres wherever the tracking frame's origin is, and every
+  /// per-particle loop takes four particles per vector instruction instead of two.
   Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
   Eigen::ArrayXf x_, y_, z_, vx_, vy_, w_;
   std::vector<float> normals_;
