@@ -8,14 +8,14 @@
 #   bash scripts/results.sh [section ...]
 # Sections, in order (default: all; 387 s in one run on a shared 2-core machine, built):
 #   accuracy latency scipy pcrb coldstarts load experiments homing placement offline stop demo
-#   standing rssi
+#   standing rssi real
 # Not part of scripts/test.sh: too slow, and timings vary with the machine's load.
 # Masters: RF_RESULTS_PORT (default 11751) for the stop-latency benchmark and the demo;
 # rostest and measure_locator_load.sh pick their own.
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 export PATH="/usr/bin:$PATH"
-all=(accuracy latency scipy pcrb coldstarts load experiments homing placement offline stop demo standing rssi)
+all=(accuracy latency scipy pcrb coldstarts load experiments homing placement offline stop demo standing rssi real)
 sections=("$@")
 [ ${#sections[@]} -eq 0 ] && sections=("${all[@]}")
 for s in "${sections[@]}"; do
@@ -338,6 +338,31 @@ if wanted rssi; then
   "$bin/trilateration_compare"
   echo
   echo "(rssi: deterministic but for the trilateration timings, which are ratios measured in the same run)"
+fi
+
+if wanted real; then
+  heading "Real UWB recordings (doc/real_recordings.md)"
+  t0=$(now)
+  printf 'range_decorrelation_time: 0.5\n' > "$tmp/decorrelation.yaml"
+  echo "(DECORRELATION.yaml below: \`range_decorrelation_time: 0.5\`)"
+  for args in "" "--calibrate" "--params config/locator_standing.yaml" \
+    "--params config/locator_standing.yaml --calibrate" \
+    "--params config/locator_standing.yaml --params DECORRELATION.yaml"; do
+    shown "python3 scripts/real_recordings.py $args"
+    # shellcheck disable=SC2086
+    python3 scripts/real_recordings.py --work "$tmp/real" ${args//DECORRELATION.yaml/$tmp/decorrelation.yaml}
+    echo
+  done
+  echo "What the standing mode costs a walking person (the Gaussian walking-person benchmark):"
+  shown '"$RF_WS"/devel/lib/radio_follow/locator_pcrb --runs 200 --locator-overrides config/locator_standing.yaml'
+  "$bin/locator_pcrb" --runs 200 --locator-overrides config/locator_standing.yaml
+  echo
+  echo "... and with DECORRELATION.yaml on top (BEACON.yaml: both files' keys):"
+  cat config/locator_standing.yaml "$tmp/decorrelation.yaml" > "$tmp/beacon.yaml"
+  shown '"$RF_WS"/devel/lib/radio_follow/locator_pcrb --runs 200 --locator-overrides BEACON.yaml'
+  "$bin/locator_pcrb" --runs 200 --locator-overrides "$tmp/beacon.yaml"
+  echo
+  echo "(real: $(elapsed "$t0") s; deterministic)"
 fi
 
 printf '\n(results.sh: %s s of wall time)\n' "$(elapsed "$start_all")"

@@ -67,6 +67,10 @@ ParticleTrackerConfig trackerConfig(const LocatorConfig& c) {
   t.filter.planar = c.planar;
   t.filter.height = c.height;
   t.filter.process_noise = c.process_noise;
+  t.filter.stand_time = c.stand_time;
+  t.filter.walk_time = c.walk_time;
+  t.filter.stand_noise = c.stand_noise;
+  t.range_decorrelation_time = c.range_decorrelation_time;
   t.range.sigma = c.range_sigma;
   t.range.outlier_share = c.range_outlier_share;
   t.range.outlier_length = c.range_outlier_length;

@@ -133,6 +133,17 @@ const ParamTable<LocatorConfig>& LocatorConfig::table() {
           .add("mirror_memory", &C::mirror_memory, "s",
                "Time constant over which the mirror test's evidence fades (particle).",
                Range::above(0.0))
+          .add("stand_time", &C::stand_time, "s",
+               "Mean standing spell of the target; 0: no standing mode (particle).",
+               Range::closed(0.0, 3600.0))
+          .add("walk_time", &C::walk_time, "s", "Mean walking spell of the target (particle).",
+               Range::open(0.0, 3600.0))
+          .add("stand_noise", &C::stand_noise, "m^2/s",
+               "A standing target's sway, random-walk PSD per axis (particle).",
+               Range::above(0.0))
+          .add("range_decorrelation_time", &C::range_decorrelation_time, "s",
+               "A module's ranges closer than this count as a fraction of one (particle).",
+               Range::closed(0.0, 10.0))
           .add("range_bias_sigma", &C::range_bias_sigma, "m",
                "Slowly varying part of the range error: covariance floor (particle).",
                Range::atLeast(0.0))

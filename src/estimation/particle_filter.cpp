@@ -96,6 +96,9 @@ void ParticleFilter::initialize(const std::vector<Eigen::Vector3d>& positions,
     spread[i].z() = config_.planar ? config_.height : p.z() + kInitialSpread * normal();
     velocities[i].x() = velocity_sigma * normal();
     velocities[i].y() = velocity_sigma * normal();
+    if (config_.stand_time > 0.0 && uniform() < standingShare()) {
+      velocities[i].setZero();
+    }
   }
   assign(spread, velocities, t);
 }
@@ -119,6 +122,7 @@ void ParticleFilter::assign(const std::vector<Eigen::Vector3d>& positions,
   vx_.resize(n);
   vy_.resize(n);
   w_.setConstant(n, 1.0f / static_cast<float>(n));
+  walking_.setOnes(n);
   for (Eigen::Index i = 0; i < n; ++i) {
     const auto k = static_cast<std::size_t>(i);
     const Eigen::Vector3f p = local(positions[k]);
@@ -127,6 +131,9 @@ void ParticleFilter::assign(const std::vector<Eigen::Vector3d>& positions,
     z_[i] = config_.planar ? 0.0f : p.z();
     vx_[i] = static_cast<float>(velocities[k].x());
     vy_[i] = static_cast<float>(velocities[k].y());
+    if (config_.stand_time > 0.0 && velocities[k].isZero(0.0)) {
+      walking_[i] = 0.0f;
+    }
   }
   t_ = t;
   initialized_ = n > 0;
@@ -156,10 +163,31 @@ void ParticleFilter::predict(double t) {
   const auto half = static_cast<float>(sv * dt * 0.5);
   const auto position = static_cast<float>(sp);
   const auto velocity = static_cast<float>(sv);
-  x_ += vx_ * step + half * noise_.col(0) + position * noise_.col(2);
-  y_ += vy_ * step + half * noise_.col(1) + position * noise_.col(3);
-  vx_ += velocity * noise_.col(0);
-  vy_ += velocity * noise_.col(1);
+  if (config_.stand_time > 0.0) {
+    // Switches first (a walking particle stops with probability 1 - exp(-dt / walk_time),
+    // a standing one starts with 1 - exp(-dt / stand_time)), then each moves by its mode:
+    // a walker as below, a stander by its sway; a particle that stops loses its velocity,
+    // one that starts walks off from rest.
+    const double stop = -std::expm1(-dt / config_.walk_time);
+    const double start = -std::expm1(-dt / config_.stand_time);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double u = uniform();
+      walking_[i] = (walking_[i] > 0.5f ? u >= stop : u < start) ? 1.0f : 0.0f;
+    }
+    const auto sway = static_cast<float>(std::sqrt(config_.stand_noise * dt));
+    const Eigen::ArrayXf standing = 1.0f - walking_;
+    x_ += walking_ * (vx_ * step + half * noise_.col(0) + position * noise_.col(2)) +
+          standing * sway * noise_.col(2);
+    y_ += walking_ * (vy_ * step + half * noise_.col(1) + position * noise_.col(3)) +
+          standing * sway * noise_.col(3);
+    vx_ = walking_ * (vx_ + velocity * noise_.col(0));
+    vy_ = walking_ * (vy_ + velocity * noise_.col(1));
+  } else {
+    x_ += vx_ * step + half * noise_.col(0) + position * noise_.col(2);
+    y_ += vy_ * step + half * noise_.col(1) + position * noise_.col(3);
+    vx_ += velocity * noise_.col(0);
+    vy_ += velocity * noise_.col(1);
+  }
   if (!config_.planar) {
     const double sz = std::sqrt(config_.vertical_noise * dt);
     for (Eigen::Index i = 0; i < n; ++i) {
@@ -325,7 +353,7 @@ void ParticleFilter::drawIndices(std::size_t count) {
   }
   // Systematic: one uniform offset, `count` evenly spaced pointers into the CDF.
   const double step = 1.0 / static_cast<double>(count);
-  double pointer = step * static_cast<double>(nextRandom() >> 11) * 0x1.0p-53;
+  double pointer = step * uniform();
   double cumulative = w_[0];
   Eigen::Index i = 0;
   for (std::size_t k = 0; k < count; ++k) {
@@ -365,6 +393,7 @@ bool ParticleFilter::resampleIfNeeded() {
   gather(z_);
   gather(vx_);
   gather(vy_);
+  gather(walking_);
   w_.setConstant(w_.size(), 1.0f / static_cast<float>(w_.size()));
   const Eigen::Vector3f shift = localMean().cast<float>();
   x_ -= shift.x();

@@ -94,6 +94,7 @@ void ParticleTracker::reset() {
   last_main_mean_.reset();
   last_position_fix_ = -1.0;
   std::fill(std::begin(last_kind_), std::end(last_kind_), -1.0);
+  last_range_.clear();
 }
 
 void ParticleTracker::setConfig(const ParticleTrackerConfig& config) {
@@ -139,11 +140,15 @@ bool ParticleTracker::onMainSide(const Eigen::Vector3d& p, const Pose2& pose) co
 
 MeasurementFit ParticleTracker::weigh(ParticleFilter& filter, const TrackedMeasurement& m,
                                       const Pose2& pose,
-                                      BearingLikelihood::FieldOfViewTest field_of_view) const {
+                                      BearingLikelihood::FieldOfViewTest field_of_view,
+                                      double range_sigma_scale) const {
   switch (m.kind) {
-    case TrackedMeasurement::Kind::kRange:
+    case TrackedMeasurement::Kind::kRange: {
+      RangeLikelihood model = config_.range;
+      model.sigma *= range_sigma_scale;
       return filter.weightRange(pose.toFixed(layout_.twr_modules[m.sensor].position), m.value,
-                                config_.range);
+                                model);
+    }
     case TrackedMeasurement::Kind::kTdoa: {
       RangeLikelihood model = config_.tdoa;
       model.sigma = m.sigma;
@@ -169,19 +174,38 @@ MeasurementFit ParticleTracker::weigh(ParticleFilter& filter, const TrackedMeasu
   return {};
 }
 
+double ParticleTracker::rangeSigmaScale(const TrackedMeasurement& m) {
+  if (m.kind != TrackedMeasurement::Kind::kRange) {
+    return 1.0;
+  }
+  last_range_.resize(layout_.twr_modules.size(), -1e300);
+  double& last = last_range_[m.sensor];
+  const double dt = m.t - last;
+  last = std::max(last, m.t);
+  const double tau = config_.range_decorrelation_time;
+  if (!(dt < tau)) {
+    return 1.0;
+  }
+  // dt / tau of a measurement; a repeated stamp (dt 0) counts as a hundredth.
+  return std::sqrt(tau / std::max(dt, 0.01 * tau));
+}
+
 void ParticleTracker::apply(const TrackedMeasurement& m) {
   const Pose2 pose = m.pose.value_or(Pose2{});
   if (m.t < main_.time()) {
     ++stats_.late;  // applied at the filter's time: the filters do not run backwards
   }
+  const double range_scale = rangeSigmaScale(m);
   main_.predict(m.t);
-  const MeasurementFit main_fit = weigh(main_, m, pose);
+  const MeasurementFit main_fit =
+      weigh(main_, m, pose, BearingLikelihood::FieldOfViewTest::kCloudMean, range_scale);
   // A track whose particles are all in the wrong place explains every input as an
   // outlier, and the outlier floor then moves nothing: watch the inlier probability.
   fit_ += kFitRate * (main_fit.inlier - fit_);
   if (mirror_active_) {
     mirror_.predict(m.t);
-    const MeasurementFit mirror_fit = weigh(mirror_, m, pose);
+    const MeasurementFit mirror_fit =
+        weigh(mirror_, m, pose, BearingLikelihood::FieldOfViewTest::kCloudMean, range_scale);
     if (main_fit.likelihood > 0.0 && mirror_fit.likelihood > 0.0) {
       // Fading memory: the side is decided by about the last `mirror_memory` seconds of
       // data. It bounds the evidence by the rate at which the sensors deliver it, so one

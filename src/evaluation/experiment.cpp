@@ -55,6 +55,7 @@ std::vector<Experiment> loadExperiments(const std::string& path) {
     const YamlParams p(fields);
     p.param("layout", e.layout, e.layout);
     p.param("scenario", e.scenario, e.scenario);
+    p.param("locator_overrides", e.locator_overrides, e.locator_overrides);
     std::string controller = "velocity_controller";
     p.param("controller", controller, controller);
     require(controller == "velocity_controller" || controller == "path_follower",
@@ -174,7 +175,8 @@ bool keptFollowing(const FollowReport& report, const FollowSettings& settings) {
 ExperimentResult runExperiment(const Experiment& experiment, const std::string& config_dir,
                                int seed) {
   ClosedLoopConfig config = loadClosedLoopConfig(
-      config_dir, experiment.layout, experiment.scenario, experiment.controller, seed, "", "",
+      config_dir, experiment.layout, experiment.scenario, experiment.controller, seed, "",
+      experiment.locator_overrides.empty() ? "" : config_dir + "/" + experiment.locator_overrides,
       experiment.sensor_profile, experiment.controller_params);
   config.outages = experiment.outages;
   ClosedLoop loop(config);

@@ -87,6 +87,16 @@ struct LocatorConfig {
   double lost_sigma = 1.0;
   /// Particle estimator: time constant over which the mirror test's evidence fades, s.
   double mirror_memory = 1.0;
+  /// Particle estimator: a person who walks and stands by turns (particle_filter.hpp):
+  /// mean length of a standing spell and of a walking one, s (stand_time 0: every
+  /// particle walks, the plain constant-velocity model), and a standing person's sway,
+  /// a random walk of this PSD per axis, m^2/s.
+  double stand_time = 0.0;
+  double walk_time = 10.0;
+  double stand_noise = 0.003;
+  /// Particle estimator: a module's ranges closer in time than this count as a fraction
+  /// of a measurement (ParticleTrackerConfig::range_decorrelation_time), s; 0: all fully.
+  double range_decorrelation_time = 0.1;
   /// Particle estimator: the slowly varying part of each sensor's error, which filtering
   /// cannot average away (correlated_error.hpp); the floor of the reported covariance.
   double range_bias_sigma = 0.05;            ///< m, TWR ranges

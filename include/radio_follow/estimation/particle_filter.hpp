@@ -62,7 +62,13 @@ struct MeasurementFit {
 };
 
 /// Constant-velocity particle filter of a point target (x, y, z, vx, vy) in a fixed
-/// tracking frame; z is a state only in 3D mode (a random walk). Weights are kept
+/// tracking frame; z is a state only in 3D mode (a random walk). With `stand_time` > 0
+/// the motion is a jump-Markov model of a person who walks and stands by turns: each
+/// particle is either walking (constant velocity, white acceleration) or standing (no
+/// velocity, a slow sway), and switches with the rates 1 / walk_time and 1 / stand_time.
+/// A standing target seen from a moving robot is then averaged over the robot's path
+/// (the range errors of real modules are correlated over seconds, which a walking model
+/// cannot average), and a walking one loses nothing but the particles that stopped. Weights are kept
 /// normalised; every `weight*` call multiplies them by one measurement's likelihood and
 /// returns the measurement's marginal likelihood sum_i w_i l_i (the evidence the
 /// hypothesis bank compares). Deterministic for a seed.
@@ -74,6 +80,10 @@ class ParticleFilter {
     double height = 1.0;          ///< z of every particle in planar mode, m
     double process_noise = 1.0;   ///< white-acceleration PSD per axis, m^2/s^3
     double vertical_noise = 0.1;  ///< 3D mode: z random-walk PSD, m^2/s
+    /// Mean length of a standing spell, s; 0: no standing mode (every particle walks).
+    double stand_time = 0.0;
+    double walk_time = 10.0;    ///< mean length of a walking spell, s (with stand_time > 0)
+    double stand_noise = 0.003;  ///< a standing target's sway: random-walk PSD per axis, m^2/s
     /// Resample (systematic) when the effective sample size falls below this share of N.
     double resample_threshold = 0.5;
     std::uint64_t seed = 1;
@@ -82,7 +92,9 @@ class ParticleFilter {
   explicit ParticleFilter(const Config& config);
 
   /// Particles at `positions` (cycled when fewer than N; a small spread is added) with
-  /// velocities ~ N(0, velocity_sigma^2) per axis, equal weights, clock at `t`.
+  /// velocities ~ N(0, velocity_sigma^2) per axis, equal weights, clock at `t`. With the
+  /// standing mode, the stationary share stand_time / (stand_time + walk_time) of them
+  /// stand (velocity zero).
   void initialize(const std::vector<Eigen::Vector3d>& positions, double velocity_sigma, double t);
   bool initialized() const { return initialized_; }
   void reset() { initialized_ = false; }
@@ -122,6 +134,10 @@ class ParticleFilter {
     return origin_ + Eigen::Vector3d(x_[i], y_[i], z_[i]);
   }
   Eigen::Vector2d velocity(std::size_t i) const { return {vx_[i], vy_[i]}; }
+  /// Whether particle i walks (always, without the standing mode).
+  bool walking(std::size_t i) const { return walking_[static_cast<Eigen::Index>(i)] > 0.5f; }
+  /// The weight of the walking particles (1 without the standing mode).
+  double walkingShare() const { return (w_ * walking_).sum(); }
   double weight(std::size_t i) const { return w_[i]; }
   /// N particles drawn (systematically) from this cloud: (position, velocity) pairs.
   void draw(std::size_t count, std::vector<Eigen::Vector3d>* positions,
@@ -129,7 +145,9 @@ class ParticleFilter {
   /// Zeroes the weight of every particle `keep` refuses and renormalises; returns the
   /// share of the weight kept (0: nothing changed, no particle was kept).
   double restrict(const std::function<bool(const Eigen::Vector3d&)>& keep);
-  /// Replaces the cloud by the given particles with equal weights, clock at t.
+  /// Replaces the cloud by the given particles with equal weights, clock at t. With the
+  /// standing mode, a particle with velocity exactly zero stands (as draw() gives a
+  /// standing particle's copies), every other one walks.
   void assign(const std::vector<Eigen::Vector3d>& positions,
               const std::vector<Eigen::Vector2d>& velocities, double t);
 
@@ -150,6 +168,12 @@ class ParticleFilter {
     z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
     return z ^ (z >> 31);
   }
+  /// A uniform draw in [0, 1).
+  double uniform() { return static_cast<double>(nextRandom() >> 11) * 0x1.0p-53; }
+  /// The share of time a target of the standing mode stands.
+  double standingShare() const {
+    return config_.stand_time / (config_.stand_time + config_.walk_time);
+  }
   /// A standard normal draw (table lookup: the filter draws millions per second).
   double normal() { return normals_[nextRandom() >> 48]; }
   /// `p` relative to the particles' origin, single precision.
@@ -166,6 +190,8 @@ class ParticleFilter {
   /// per-particle loop takes four particles per vector instruction instead of two.
   Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
   Eigen::ArrayXf x_, y_, z_, vx_, vy_, w_;
+  /// 1: the particle walks, 0: it stands (a 0/1 mask, so the motion stays arithmetic).
+  Eigen::ArrayXf walking_;
   std::vector<float> normals_;
   std::uint64_t state_;
   Eigen::ArrayXd scratch_;

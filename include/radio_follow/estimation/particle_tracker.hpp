@@ -51,6 +51,12 @@ struct ParticleTrackerConfig {
   double max_relative_sigma = 0.1;  ///< ... or this fraction of the distance
   double lost_sigma = 1.0;          ///< m, worst axis beyond which the track is LOST
   double default_range = 3.0;       ///< m, distance reported along a bearing alone
+  /// A module's ranges closer in time than this are not independent (real errors stay
+  /// correlated over tenths of a second and longer): one arriving dt < this after the
+  /// module's previous one counts as dt / this of a measurement (its sigma grows by
+  /// sqrt(this / dt)), so a 100 Hz module carries the information of a 10 Hz one and the
+  /// cloud does not collapse onto the current error. s; 0: every range counts fully.
+  double range_decorrelation_time = 0.1;
   /// The slowly varying part of each sensor's error (correlated_error.hpp): the floor
   /// of the reported covariance. Range and TDoA in m, azimuth in rad.
   double range_bias_sigma = 0.05;
@@ -130,9 +136,13 @@ class ParticleTracker {
 
  private:
   void apply(const TrackedMeasurement& m);
+  /// `range_sigma_scale`: a range's sigma factor (range_decorrelation_time).
   MeasurementFit weigh(ParticleFilter& filter, const TrackedMeasurement& m, const Pose2& pose,
                        BearingLikelihood::FieldOfViewTest field_of_view =
-                           BearingLikelihood::FieldOfViewTest::kCloudMean) const;
+                           BearingLikelihood::FieldOfViewTest::kCloudMean,
+                       double range_sigma_scale = 1.0) const;
+  /// A range's sigma factor by the time since its module's previous one; records it.
+  double rangeSigmaScale(const TrackedMeasurement& m);
   bool coldStart(double now);
   void seedMirror();
   void maintainMirror();
@@ -168,6 +178,8 @@ class ParticleTracker {
   Pose2 pose_;                                      ///< of the newest processed measurement
   double last_position_fix_ = -1.0;                 ///< newest range or TDoA applied
   double last_kind_[4] = {-1.0, -1.0, -1.0, -1.0};  ///< by Kind
+  /// Stamp of each module's newest applied range (range_decorrelation_time).
+  std::vector<double> last_range_;
   /// Running mean of the inlier probability of the applied measurements (see apply()).
   double fit_ = 1.0;
   TrackerStats stats_;

@@ -42,6 +42,9 @@ struct Experiment {
   /// Controller parameters over the shipped files (a mapping, e.g. `{use_scan: true}`;
   /// null: none), as follower.launch's `controller_params` file would set them.
   YAML::Node controller_params;
+  /// A locator override file in the config directory (e.g. "locator_standing.yaml"),
+  /// loaded after config/locator.yaml as follower.launch's `locator_overrides`; empty: none.
+  std::string locator_overrides;
   /// The simulator's sensor profile: the entry's `sensor_profile`, else the file's.
   sim::SensorProfile sensor_profile = sim::SensorProfile::kIdeal;
   ExperimentCheck check;

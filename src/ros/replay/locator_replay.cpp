@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -173,7 +174,10 @@ std::string toCsv(const ReplayResult& result) {
   for (const ReplayRow& r : result.rows) {
     const estimation::LocatorEstimate& e = r.estimate;
     const bool position = hasPosition(e.status);
-    out << r.t << "," << toString(e.status) << ",";
+    // A bag's stamps are seconds since 1970: nine significant digits would round them
+    // to tens of seconds.
+    out << std::fixed << std::setprecision(6) << r.t << std::defaultfloat << std::setprecision(9)
+        << "," << toString(e.status) << ",";
     if (position) {
       out << e.position.x() << "," << e.position.y() << "," << e.position.z() << ","
           << std::sqrt(std::max(0.0, e.covariance(0, 0))) << ","

@@ -1,0 +1,174 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
+"""Turns a real UWB recording with motion-capture ground truth into a bag the offline
+tools read (doc/real_recordings.md): the LIAS planar dataset shipped in
+test/data/real/lias_planar/ (three DWM1000-class tags on a trolley, eight anchors on
+the walls, 100 Hz, a motion-capture pose of the trolley).
+
+Our system has the modules on the robot and one tag on the person. Here the trolley is
+the robot, its three tags are our three modules (IDs T0-T2, at the dataset's coordinates
+in the trolley's frame), and each of the eight anchors (IDs A0-A7) is a person standing
+still while the robot drives: a layout whose `target.uwb_anchor_id` is A<k> tracks anchor
+k. The bag holds
+  uwb/T<i>/ranges            radio_follow/UwbRanges, one per tag per epoch, the ranges as
+                             recorded (no correction), a missing range left out;
+  /tf                        odom -> base_link from the motion capture (position on the
+                             floor, yaw only: the trolley is level within 2 deg);
+  ground_truth/anchor_A<k>   geometry_msgs/PointStamped, anchor k in base_link.
+Stamps are the recording's own clock (the UWB and motion-capture rows share it; the
+range residuals are smallest at zero offset, doc/real_recordings.md). The message
+stamp is also the bag's receive time.
+
+Usage: real_recording_bag.py RUN OUT.bag [--data DIR] [--layout OUT.yaml]
+  RUN: fast or mid (the dataset's trolley speeds, 0.49 and 0.23 m/s).
+  --layout: also write the trolley's layout (target anchor A0; change
+            target.uwb_anchor_id to track another).
+"""
+import argparse
+import csv
+import datetime
+import io
+import lzma
+import math
+import sys
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parent.parent
+DATA = REPO / "test" / "data" / "real" / "lias_planar"
+
+# The dataset's README (Planar_Dataset/Dynamic): tag coordinates in the trolley's frame
+# and anchor coordinates in the motion-capture frame, metres.
+TAGS = [(-0.0689, -0.1423, 0.0011), (-0.0750, 0.1402, 0.0016), (0.2034, 0.1451, -0.0008)]
+ANCHORS = [(-3.4203, 3.0053, 1.0442), (0.0016, 3.0110, 1.0446), (3.6056, 2.9795, 1.0463),
+           (3.6011, -0.0008, 1.0422), (3.5674, -3.0087, 1.0443), (-0.0072, -2.9652, 1.0444),
+           (-3.4673, -2.9587, 1.0445), (-3.4858, -0.0098, 1.0457)]
+# Height of the tags above the floor: the motion capture's mean body height in both
+# runs (0.970 fast, 0.969 mid) plus the tags' own z, m. The layout's modules sit there.
+TAG_HEIGHT = 0.970
+TAG_IDS = ["T%d" % i for i in range(len(TAGS))]
+ANCHOR_IDS = ["A%d" % k for k in range(len(ANCHORS))]
+
+
+def stamp(text):
+    """Seconds of the recording's wall-clock string (its zone does not matter: both
+    files use the same one)."""
+    t = datetime.datetime.strptime(text, "%Y-%m-%d %H:%M:%S.%f")
+    return (t - datetime.datetime(1970, 1, 1)).total_seconds()
+
+
+def rows(path):
+    with lzma.open(path, "rt") as f:
+        yield from csv.reader(io.StringIO(f.read()))
+
+
+def read_uwb(path):
+    """[(t, [[range or None per anchor] per tag])]; column 1 + 3 k + i is anchor k, tag i."""
+    out = []
+    for line, row in enumerate(rows(path), 1):
+        if len(row) != 1 + len(ANCHORS) * len(TAGS):
+            sys.exit("%s line %d: %d fields, expected %d" % (path, line, len(row),
+                                                               1 + len(ANCHORS) * len(TAGS)))
+        ranges = [[None] * len(ANCHORS) for _ in TAGS]
+        for k in range(len(ANCHORS)):
+            for i in range(len(TAGS)):
+                cell = row[1 + 3 * k + i].strip()
+                ranges[i][k] = float(cell) if cell else None
+        out.append((stamp(row[0]), ranges))
+    return out
+
+
+def read_mocap(path):
+    """[(t, x, y, yaw)], stamps strictly increasing: the body's position and the heading of its frame's x axis
+    (columns: time, x, y, z, qw, qx, qy, qz; the body frame is upside down, so the tags'
+    coordinates are in the heading-only frame: the yaw is the x axis's)."""
+    out = []
+    for line, row in enumerate(rows(path), 1):
+        if line == 1:
+            continue  # header
+        t = stamp(row[0])
+        if out and t <= out[-1][0]:
+            continue  # a repeated (or backward) stamp: a second pose at one time
+        x, y, _, qw, qx, qy, qz = (float(v) for v in row[1:8])
+        # First column of the rotation matrix: the body x axis in the world.
+        yaw = math.atan2(2.0 * (qx * qy + qz * qw), 1.0 - 2.0 * (qy * qy + qz * qz))
+        out.append((t, x, y, yaw))
+    return out
+
+
+def write_layout(path):
+    with open(path, "w") as f:
+        f.write("# The LIAS planar dataset's trolley (scripts/real_recording_bag.py): three\n"
+                "# DWM1000-class tags as the robot's modules, uncalibrated. The target is one\n"
+                "# of the eight wall anchors: set uwb_anchor_id to A0-A7.\n"
+                "fixed_frame: base_link\n"
+                "target:\n"
+                "  uwb_anchor_id: \"A0\"\n"
+                "twr_modules:\n")
+        for tag_id, (x, y, z) in zip(TAG_IDS, TAGS):
+            f.write("  - {id: \"%s\", position: [%.4f, %.4f, %.4f]}\n" %
+                    (tag_id, x, y, TAG_HEIGHT + z))
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("run", choices=["fast", "mid"])
+    parser.add_argument("out")
+    parser.add_argument("--data", default=str(DATA))
+    parser.add_argument("--layout")
+    args = parser.parse_args()
+
+    import rosbag
+    import rospy
+    from geometry_msgs.msg import PointStamped, TransformStamped
+    from tf2_msgs.msg import TFMessage
+    from radio_follow.msg import UwbRange, UwbRanges
+
+    data = Path(args.data)
+    uwb = read_uwb(data / ("uwb_%s.csv.xz" % args.run))
+    mocap = read_mocap(data / ("mocap_%s.csv.xz" % args.run))
+    messages = []  # (t, topic, message)
+    for t, ranges in uwb:
+        for tag_id, tag_ranges in zip(TAG_IDS, ranges):
+            msg = UwbRanges()
+            msg.header.stamp = rospy.Time.from_sec(t)
+            msg.header.frame_id = "uwb_" + tag_id
+            msg.tag_id = tag_id
+            for anchor_id, (ax, ay, az), r in zip(ANCHOR_IDS, ANCHORS, tag_ranges):
+                if r is None:
+                    continue
+                m = UwbRange()
+                m.anchor_id = anchor_id
+                m.anchor_position.x, m.anchor_position.y, m.anchor_position.z = ax, ay, az
+                m.range = r
+                msg.ranges.append(m)
+            messages.append((t, "uwb/%s/ranges" % tag_id, msg))
+    for t, x, y, yaw in mocap:
+        tf = TransformStamped()
+        tf.header.stamp = rospy.Time.from_sec(t)
+        tf.header.frame_id = "odom"
+        tf.child_frame_id = "base_link"
+        tf.transform.translation.x, tf.transform.translation.y = x, y
+        tf.transform.rotation.z = math.sin(0.5 * yaw)
+        tf.transform.rotation.w = math.cos(0.5 * yaw)
+        messages.append((t, "/tf", TFMessage(transforms=[tf])))
+        c, s = math.cos(yaw), math.sin(yaw)
+        for anchor_id, (ax, ay, az) in zip(ANCHOR_IDS, ANCHORS):
+            p = PointStamped()
+            p.header = tf.header.__class__()
+            p.header.stamp = tf.header.stamp
+            p.header.frame_id = "base_link"
+            dx, dy = ax - x, ay - y
+            p.point.x, p.point.y, p.point.z = c * dx + s * dy, -s * dx + c * dy, az
+            messages.append((t, "ground_truth/anchor_" + anchor_id, p))
+    messages.sort(key=lambda m: m[0])
+    with rosbag.Bag(args.out, "w") as bag:
+        for t, topic, msg in messages:
+            bag.write(topic, msg, rospy.Time.from_sec(t))
+    if args.layout:
+        write_layout(args.layout)
+    print("%s: %d UWB epochs, %d poses, %.1f s" % (args.out, len(uwb), len(mocap),
+                                                  uwb[-1][0] - uwb[0][0]))
+
+
+if __name__ == "__main__":
+    main()
