@@ -353,6 +353,14 @@ if wanted real; then
     python3 scripts/real_recordings.py --work "$tmp/real" ${args//DECORRELATION.yaml/$tmp/decorrelation.yaml}
     echo
   done
+  echo "The standing mode's cold starts (the robot and the person standing: doc/locator_accuracy.md#cold-starts), with its file and with the shipped covariance floor (SHIPPED_FLOOR.yaml: the file with range_bias_sigma: 0.05 and azimuth_bias_sigma_deg: 2.0):"
+  shown '(cd test && "$RF_WS"/devel/lib/radio_follow/locator_cold_starts --trials 10000 --locator-overrides ../config/locator_standing.yaml)'
+  (cd "$repo/test" && "$bin/locator_cold_starts" --trials 10000 --locator-overrides ../config/locator_standing.yaml)
+  sed -e 's/^range_bias_sigma:.*/range_bias_sigma: 0.05/' \
+    -e 's/^azimuth_bias_sigma_deg:.*/azimuth_bias_sigma_deg: 2.0/' config/locator_standing.yaml >"$tmp/shipped_floor.yaml"
+  shown '(cd test && "$RF_WS"/devel/lib/radio_follow/locator_cold_starts --trials 10000 --locator-overrides SHIPPED_FLOOR.yaml)'
+  (cd "$repo/test" && "$bin/locator_cold_starts" --trials 10000 --locator-overrides "$tmp/shipped_floor.yaml")
+  echo
   echo "What the standing mode costs a walking person (the Gaussian walking-person benchmark):"
   shown '"$RF_WS"/devel/lib/radio_follow/locator_pcrb --runs 200 --locator-overrides config/locator_standing.yaml'
   "$bin/locator_pcrb" --runs 200 --locator-overrides config/locator_standing.yaml
