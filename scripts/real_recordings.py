@@ -21,6 +21,7 @@ Exit status: 0 done (and within the limits), 1 a limit broken or a tool failed.
 import argparse
 import csv
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -35,6 +36,9 @@ TARGET_HEIGHT = 1.044
 # An error above this counts towards "wrong", the longest stretch of which the table
 # shows (the mirror locks were stretches of metres).
 WRONG = 1.0
+# A module's row in calibrate_layout's table: id, samples, dropped, rms before, rms after,
+# [offset, scale].
+FIT_ROW = re.compile(r"^(T\d)\s+\d+\s+\d+\s+([-\d.]+) m\s+([-\d.]+) m\s+\[([-\d.e+]+), ([-\d.e+]+)\]")
 
 
 def tool(name):
@@ -119,6 +123,7 @@ def evaluate_all(args, work):
           "longest > %.0f m (s) | OK yet > %.0f m |" % (WRONG, WRONG))
     print("|---|---|---|---|---|---|---|---|")
     pooled, longest_all, ok_wrong_all = [], 0.0, 0
+    fits = []  # (rms before, rms after, offset, scale) of every module's calibration
     for r in args.runs:
         for k in args.anchors:
             anchor = "A%d" % k
@@ -129,10 +134,16 @@ def evaluate_all(args, work):
             if args.calibrate:
                 other = "mid" if r == "fast" else "fast"
                 calibrated = work / ("layout_%s_from_%s.yaml" % (anchor, other))
-                if not calibrated.exists():
-                    run([tool("calibrate_layout"), "--bag", str(work / ("%s.bag" % other)),
-                         "--layout", str(layout), "--out", str(calibrated),
-                         "--truth-topic", truth, "--no-aoa"])
+                report = calibrated.with_suffix(".txt")
+                if not calibrated.exists() or not report.exists():
+                    report.write_text(run([tool("calibrate_layout"), "--bag",
+                                           str(work / ("%s.bag" % other)), "--layout",
+                                           str(layout), "--out", str(calibrated),
+                                           "--truth-topic", truth, "--no-aoa"]))
+                for line in report.read_text().splitlines():
+                    m = FIT_ROW.match(line)
+                    if m:
+                        fits.append(tuple(float(v) for v in m.groups()[1:]))
                 layout = calibrated
             out = work / ("out_%s_%s" % (r, anchor))
             run([tool("locator_offline"), str(work / ("%s.bag" % r)), "--layout", str(layout),
@@ -144,6 +155,13 @@ def evaluate_all(args, work):
             print("| %s | %s | %.3f | %.3f | %.2f | %.1f %% | %.1f | %.1f %% |" %
                   (r, anchor, percentile(errors, 0.5), percentile(errors, 0.95), max(errors),
                    100.0 * available, longest, 100.0 * ok_wrong / max(1, len(errors))))
+    if fits:
+        column = list(zip(*fits))
+        print("\ncalibrations (calibrate_layout on the other run, %d module fits): offset "
+              "%.3f to %.3f m, scale %.3f to %.3f; rms range error %.3f-%.3f m before, "
+              "%.3f-%.3f m after" % (len(fits), min(column[2]), max(column[2]), min(column[3]),
+                                     max(column[3]), min(column[0]), max(column[0]),
+                                     min(column[1]), max(column[1])))
     median, p95 = percentile(pooled, 0.5), percentile(pooled, 0.95)
     print("\npooled over %d estimates: median %.3f m, p95 %.3f m; longest stretch > %.0f m: "
           "%.1f s; OK (full speed) yet > %.0f m off: %.1f %%" %
