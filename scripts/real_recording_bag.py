@@ -20,7 +20,10 @@ range residuals are smallest at zero offset, doc/real_recordings.md). The messag
 stamp is also the bag's receive time.
 
 Usage: real_recording_bag.py RUN OUT.bag [--data DIR] [--layout OUT.yaml]
-  RUN: fast or mid (the dataset's trolley speeds, 0.49 and 0.23 m/s).
+  RUN: fast or mid (the dataset's trolley speeds, 0.49 and 0.23 m/s), or
+       static_pos<P>_deg<D> (P 1-5, D 0 or 180: the trolley parked at the pose the
+       dataset's static README gives, 2022-08-14; no motion capture: the pose is
+       published at 20 Hz).
   --layout: also write the trolley's layout (target anchor A0; change
             target.uwb_anchor_id to track another).
 """
@@ -46,6 +49,18 @@ ANCHORS = [(-3.4203, 3.0053, 1.0442), (0.0016, 3.0110, 1.0446), (3.6056, 2.9795,
 # runs (0.970 fast, 0.969 mid) plus the tags' own z, m. The layout's modules sit there.
 TAG_HEIGHT = 0.970
 TAG_IDS = ["T%d" % i for i in range(len(TAGS))]
+# The static runs' trolley poses (Planar_Dataset/Static/README.md, 2022/8/14): yaw in
+# degrees, x, y in metres, for the headings near 0 and 180 deg.
+STATIC_POSES = {
+    (1, 0): (-0.019, -1.9298, -1.2368), (1, 180): (181.993, -1.7472, -1.2375),
+    (2, 0): (0.0230, 1.7393, -1.2132), (2, 180): (181.798, 1.8838, -1.1936),
+    (3, 0): (1.375, 1.7362, 1.2086), (3, 180): (180.125, 1.8451, 1.2942),
+    (4, 0): (0.322, -1.8708, 1.1814), (4, 180): (180.987, -1.7564, 1.1908),
+    (5, 0): (0.233, -0.0475, -0.0122), (5, 180): (180.886, 0.0625, 0.0558),
+}
+STATIC_RUNS = ["static_pos%d_deg%d" % key for key in sorted(STATIC_POSES)]
+RUNS = ["fast", "mid"] + STATIC_RUNS
+POSE_RATE = 20.0  # Hz, the static runs' published pose
 ANCHOR_IDS = ["A%d" % k for k in range(len(ANCHORS))]
 
 
@@ -62,19 +77,30 @@ def rows(path):
 
 
 def read_uwb(path):
-    """[(t, [[range or None per anchor] per tag])]; column 1 + 3 k + i is anchor k, tag i."""
+    """([(t, [[range or None per anchor] per tag])], malformed lines dropped); column
+    1 + 3 k + i is anchor k, tag i."""
     out = []
-    for line, row in enumerate(rows(path), 1):
-        if len(row) != 1 + len(ANCHORS) * len(TAGS):
-            sys.exit("%s line %d: %d fields, expected %d" % (path, line, len(row),
-                                                               1 + len(ANCHORS) * len(TAGS)))
+    dropped = 0
+    fields = 1 + len(ANCHORS) * len(TAGS)
+    for row in rows(path):
+        # Some static files end every line with empty fields: allowed. A line with more
+        # values (a few in the static files: the logger ran two lines together) or fewer
+        # is malformed: counted and dropped, the rest goes on.
+        if len(row) < fields or any(cell.strip() for cell in row[fields:]):
+            dropped += 1
+            continue
         ranges = [[None] * len(ANCHORS) for _ in TAGS]
-        for k in range(len(ANCHORS)):
-            for i in range(len(TAGS)):
-                cell = row[1 + 3 * k + i].strip()
-                ranges[i][k] = float(cell) if cell else None
-        out.append((stamp(row[0]), ranges))
-    return out
+        try:
+            for k in range(len(ANCHORS)):
+                for i in range(len(TAGS)):
+                    cell = row[1 + 3 * k + i].strip()
+                    ranges[i][k] = float(cell) if cell else None
+            t = stamp(row[0])
+        except ValueError:
+            dropped += 1  # a field that is not a number, or a bad stamp
+            continue
+        out.append((t, ranges))
+    return out, dropped
 
 
 def read_mocap(path):
@@ -111,7 +137,7 @@ def write_layout(path):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("run", choices=["fast", "mid"])
+    parser.add_argument("run", choices=RUNS)
     parser.add_argument("out")
     parser.add_argument("--data", default=str(DATA))
     parser.add_argument("--layout")
@@ -124,8 +150,15 @@ def main():
     from radio_follow.msg import UwbRange, UwbRanges
 
     data = Path(args.data)
-    uwb = read_uwb(data / ("uwb_%s.csv.xz" % args.run))
-    mocap = read_mocap(data / ("mocap_%s.csv.xz" % args.run))
+    uwb, dropped = read_uwb(data / ("uwb_%s.csv.xz" % args.run))
+    if args.run in STATIC_RUNS:
+        pos, deg = (int(v) for v in args.run[len("static_pos"):].split("_deg"))
+        yaw, x, y = STATIC_POSES[(pos, deg)]
+        count = int((uwb[-1][0] - uwb[0][0]) * POSE_RATE) + 2
+        mocap = [(uwb[0][0] - 0.5 + k / POSE_RATE, x, y, math.radians(yaw))
+                 for k in range(count + int(POSE_RATE))]
+    else:
+        mocap = read_mocap(data / ("mocap_%s.csv.xz" % args.run))
     messages = []  # (t, topic, message)
     for t, ranges in uwb:
         for tag_id, tag_ranges in zip(TAG_IDS, ranges):
@@ -166,8 +199,8 @@ def main():
             bag.write(topic, msg, rospy.Time.from_sec(t))
     if args.layout:
         write_layout(args.layout)
-    print("%s: %d UWB epochs, %d poses, %.1f s" % (args.out, len(uwb), len(mocap),
-                                                  uwb[-1][0] - uwb[0][0]))
+    print("%s: %d UWB epochs (%d malformed lines dropped), %d poses, %.1f s" %
+          (args.out, len(uwb), dropped, len(mocap), uwb[-1][0] - uwb[0][0]))
 
 
 if __name__ == "__main__":

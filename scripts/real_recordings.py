@@ -6,16 +6,20 @@ standing still while the trolley (the robot, three modules within 0.28 m) drives
 and turns, through `locator_offline` with the shipped config/locator.yaml and the
 given overrides. Prints one row per run and anchor and the pooled figures.
 
-Usage: real_recordings.py [--params FILE ...] [--calibrate] [--runs fast mid]
+Usage: real_recordings.py [--params FILE ...] [--calibrate] [--runs RUN ...]
                           [--anchors 0 1 ...] [--work DIR] [--max-median M] [--max-p95 M]
+  --runs       fast, mid (the drives; default both), static_pos<P>_deg<D>, or static (the
+               ten static runs: the trolley parked at five places, heading 0 and 180 deg)
   --params     override files on top of config/locator.yaml, in order
-  --calibrate  fit each module's range polynomial for each anchor on the *other* run
-               (calibrate_layout, ground truth from the motion capture) and track with it:
-               a robot calibrated once, then used on another day's drive
+  --calibrate  fit each module's range polynomial for each anchor on the *other* drive
+               (calibrate_layout, ground truth from the motion capture; the static runs
+               take the fast drive's) and track with it: a robot calibrated once, then used
+               on another day
   --work       keep the bags, layouts and locator_offline outputs there (and reuse the
                bags and calibrations); default a temporary directory, removed at the end
-  --max-median, --max-p95
-               exit 1 when the pooled median / p95 error is above (a regression check)
+  --max-median, --max-p95, --min-available
+               exit 1 when the pooled median / p95 error is above, or the share of updates
+               with a position (%) below, these (a regression check)
 Exit status: 0 done (and within the limits), 1 a limit broken or a tool failed.
 """
 import argparse
@@ -29,7 +33,8 @@ import tempfile
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parent.parent
-RUNS = ["fast", "mid"]
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from real_recording_bag import RUNS, STATIC_RUNS  # noqa: E402
 # The anchors' height above the floor (the dataset's README: 1.042-1.046 m): the target
 # height of a planar track, as a deployment sets it for its person's tag.
 TARGET_HEIGHT = 1.044
@@ -62,8 +67,8 @@ def percentile(values, q):
 
 
 def evaluate(out_dir):
-    """(errors, availability, longest wrong stretch s, estimates that were OK yet wrong)
-    from locator_offline's CSV."""
+    """(errors, availability, longest wrong stretch s, estimates that were OK yet wrong,
+    updates) from locator_offline's CSV."""
     errors, updates, positions, ok_wrong = [], 0, 0, 0
     longest, start = 0.0, None
     with open(out_dir / "estimates.csv") as f:
@@ -81,18 +86,19 @@ def evaluate(out_dir):
                 longest = max(longest, t - start)
             else:
                 start = None
-    return errors, positions / max(1, updates), longest, ok_wrong
+    return errors, positions / max(1, updates), longest, ok_wrong, updates
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--params", action="append", default=[])
     parser.add_argument("--calibrate", action="store_true")
-    parser.add_argument("--runs", nargs="+", default=RUNS, choices=RUNS)
+    parser.add_argument("--runs", nargs="+", default=["fast", "mid"], choices=RUNS + ["static"])
     parser.add_argument("--anchors", nargs="+", type=int, default=list(range(8)))
     parser.add_argument("--work")
     parser.add_argument("--max-median", type=float)
     parser.add_argument("--max-p95", type=float)
+    parser.add_argument("--min-available", type=float)
     args = parser.parse_args()
 
     if args.work is None:
@@ -107,12 +113,15 @@ def main():
 
 
 def evaluate_all(args, work):
+    runs = []
+    for r in args.runs:
+        runs += STATIC_RUNS if r == "static" else [r]
     height = work / "height.yaml"
     height.write_text("target_height: %.3f\n" % TARGET_HEIGHT)
     params = ["--params", str(REPO / "config" / "locator.yaml"), "--params", str(height)]
     for p in args.params:
         params += ["--params", p]
-    needed = set(args.runs) | ({"fast", "mid"} if args.calibrate else set())
+    needed = set(runs) | ({"fast", "mid"} if args.calibrate else set())
     for r in sorted(needed):
         bag = work / ("%s.bag" % r)
         if not bag.exists():
@@ -123,8 +132,9 @@ def evaluate_all(args, work):
           "longest > %.0f m (s) | OK yet > %.0f m |" % (WRONG, WRONG))
     print("|---|---|---|---|---|---|---|---|")
     pooled, longest_all, ok_wrong_all = [], 0.0, 0
+    updates_all, positions_all = 0, 0.0
     fits = []  # (rms before, rms after, offset, scale) of every module's calibration
-    for r in args.runs:
+    for r in runs:
         for k in args.anchors:
             anchor = "A%d" % k
             layout = work / ("layout_%s.yaml" % anchor)
@@ -132,7 +142,7 @@ def evaluate_all(args, work):
                               .replace('uwb_anchor_id: "A0"', 'uwb_anchor_id: "%s"' % anchor))
             truth = "ground_truth/anchor_" + anchor
             if args.calibrate:
-                other = "mid" if r == "fast" else "fast"
+                other = "fast" if r != "fast" else "mid"
                 calibrated = work / ("layout_%s_from_%s.yaml" % (anchor, other))
                 report = calibrated.with_suffix(".txt")
                 if not calibrated.exists() or not report.exists():
@@ -148,12 +158,15 @@ def evaluate_all(args, work):
             out = work / ("out_%s_%s" % (r, anchor))
             run([tool("locator_offline"), str(work / ("%s.bag" % r)), "--layout", str(layout),
                  "--truth-topic", truth, "--out", str(out)] + params)
-            errors, available, longest, ok_wrong = evaluate(out)
+            errors, available, longest, ok_wrong, updates = evaluate(out)
             pooled += errors
+            updates_all += updates
+            positions_all += available * updates
             longest_all = max(longest_all, longest)
             ok_wrong_all += ok_wrong
             print("| %s | %s | %.3f | %.3f | %.2f | %.1f %% | %.1f | %.1f %% |" %
-                  (r, anchor, percentile(errors, 0.5), percentile(errors, 0.95), max(errors),
+                  (r, anchor, percentile(errors, 0.5), percentile(errors, 0.95),
+                   max(errors) if errors else float("nan"),
                    100.0 * available, longest, 100.0 * ok_wrong / max(1, len(errors))))
     if fits:
         column = list(zip(*fits))
@@ -163,15 +176,19 @@ def evaluate_all(args, work):
                                      max(column[3]), min(column[0]), max(column[0]),
                                      min(column[1]), max(column[1])))
     median, p95 = percentile(pooled, 0.5), percentile(pooled, 0.95)
-    print("\npooled over %d estimates: median %.3f m, p95 %.3f m; longest stretch > %.0f m: "
-          "%.1f s; OK (full speed) yet > %.0f m off: %.1f %%" %
-          (len(pooled), median, p95, WRONG, longest_all, WRONG,
-           100.0 * ok_wrong_all / max(1, len(pooled))))
+    print("\npooled over %d estimates (a position in %.1f %% of the updates): median %.3f m, "
+          "p95 %.3f m; longest stretch > %.0f m: %.1f s; OK (full speed) yet > %.0f m off: "
+          "%.1f %%" % (len(pooled), 100.0 * positions_all / max(1, updates_all), median, p95,
+                       WRONG, longest_all, WRONG, 100.0 * ok_wrong_all / max(1, len(pooled))))
     broken = []
     if args.max_median is not None and not median <= args.max_median:
         broken.append("median %.3f m > %.3f m" % (median, args.max_median))
     if args.max_p95 is not None and not p95 <= args.max_p95:
         broken.append("p95 %.3f m > %.3f m" % (p95, args.max_p95))
+    available = 100.0 * positions_all / max(1, updates_all)
+    if args.min_available is not None and not available >= args.min_available:
+        broken.append("a position in %.1f %% of the updates < %.1f %%" %
+                      (available, args.min_available))
     if broken:
         print("FAILED: " + "; ".join(broken))
         return 1

@@ -347,7 +347,8 @@ if wanted real; then
   echo "(DECORRELATION.yaml below: \`range_decorrelation_time: 0.5\`)"
   for args in "" "--calibrate" "--params config/locator_standing.yaml" \
     "--params config/locator_standing.yaml --calibrate" \
-    "--params config/locator_standing.yaml --params DECORRELATION.yaml"; do
+    "--params config/locator_standing.yaml --params DECORRELATION.yaml" \
+    "--runs static" "--runs static --params config/locator_standing.yaml"; do
     shown "python3 scripts/real_recordings.py $args"
     # shellcheck disable=SC2086
     python3 scripts/real_recordings.py --work "$tmp/real" ${args//DECORRELATION.yaml/$tmp/decorrelation.yaml}

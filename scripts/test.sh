@@ -28,11 +28,16 @@ python3 "$repo/scripts/summarize_tests.py" "$results" || status=1
 # The layer check the build runs can fail: it finds planted wrong-way and ROS includes.
 python3 "$repo/scripts/check_layers.py" --self-test || status=1
 # The locator on real UWB recordings (doc/real_recordings.md): the shipped file and the
-# standing-target overrides must not fall back behind what they measured (pooled median
-# 0.780 / p95 2.255 m and 0.547 / 1.606 m) by more than about 8 %.
-python3 "$repo/scripts/real_recordings.py" --max-median 0.85 --max-p95 2.45 | tail -n 2 || status=1
+# standing-target overrides on the drives, and the shipped file on the parked trolley,
+# must not fall back behind what they measured (pooled median / p95 0.780 / 2.255 m,
+# 0.547 / 1.606 m and 0.558 / 2.081 m; a position in 95.8, 95.4 and 48.5 % of the
+# updates) by more than about 8 % (availability: 5 points).
+python3 "$repo/scripts/real_recordings.py" --max-median 0.85 --max-p95 2.45 \
+  --min-available 90 | tail -n 2 || status=1
 python3 "$repo/scripts/real_recordings.py" --params "$repo/config/locator_standing.yaml" \
-  --max-median 0.60 --max-p95 1.75 | tail -n 2 || status=1
+  --max-median 0.60 --max-p95 1.75 --min-available 90 | tail -n 2 || status=1
+python3 "$repo/scripts/real_recordings.py" --runs static --max-median 0.61 --max-p95 2.25 \
+  --min-available 43 | tail -n 2 || status=1
 # Every command README.md and doc/ show, run against the simulator (scripts/docs_test.py).
 python3 "$repo/scripts/docs_test.py" || status=1
 
