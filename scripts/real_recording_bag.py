@@ -46,7 +46,8 @@ ANCHORS = [(-3.4203, 3.0053, 1.0442), (0.0016, 3.0110, 1.0446), (3.6056, 2.9795,
            (3.6011, -0.0008, 1.0422), (3.5674, -3.0087, 1.0443), (-0.0072, -2.9652, 1.0444),
            (-3.4673, -2.9587, 1.0445), (-3.4858, -0.0098, 1.0457)]
 # Height of the tags above the floor: the motion capture's mean body height in both
-# runs (0.970 fast, 0.969 mid) plus the tags' own z, m. The layout's modules sit there.
+# drives (this script prints it: 0.971 fast, 0.972 mid) plus the tags' own z, m. The
+# layout's modules sit there.
 TAG_HEIGHT = 0.970
 TAG_IDS = ["T%d" % i for i in range(len(TAGS))]
 # The static runs' trolley poses (Planar_Dataset/Static/README.md, 2022/8/14): yaw in
@@ -104,21 +105,37 @@ def read_uwb(path):
 
 
 def read_mocap(path):
-    """[(t, x, y, yaw)], stamps strictly increasing: the body's position and the heading of its frame's x axis
-    (columns: time, x, y, z, qw, qx, qy, qz; the body frame is upside down, so the tags'
-    coordinates are in the heading-only frame: the yaw is the x axis's)."""
+    """([(t, x, y, yaw)], [z]), stamps strictly increasing: the body's position and the
+    heading of its frame's x axis, and its height (columns: time, x, y, z, qw, qx, qy, qz;
+    the body frame is upside down, so the tags' coordinates are in the heading-only frame:
+    the yaw is the x axis's)."""
     out = []
+    heights = []
     for line, row in enumerate(rows(path), 1):
         if line == 1:
             continue  # header
         t = stamp(row[0])
         if out and t <= out[-1][0]:
             continue  # a repeated (or backward) stamp: a second pose at one time
-        x, y, _, qw, qx, qy, qz = (float(v) for v in row[1:8])
+        x, y, z, qw, qx, qy, qz = (float(v) for v in row[1:8])
         # First column of the rotation matrix: the body x axis in the world.
         yaw = math.atan2(2.0 * (qx * qy + qz * qw), 1.0 - 2.0 * (qy * qy + qz * qz))
         out.append((t, x, y, yaw))
-    return out
+        heights.append(z)
+    return out, heights
+
+
+def motion_summary(poses, heights):
+    """The drive's figures doc/real_recordings.md quotes: body height, speed, turn rate."""
+    speeds, turns = [], []
+    for (t0, x0, y0, a0), (t1, x1, y1, a1) in zip(poses, poses[1:]):
+        dt = t1 - t0
+        speeds.append(math.hypot(x1 - x0, y1 - y0) / dt)
+        turns.append(abs(math.degrees(math.remainder(a1 - a0, 2.0 * math.pi))) / dt)
+    turns.sort()
+    return ("body height mean %.3f m, mean speed %.2f m/s, turn rate median %.0f deg/s, "
+            "p90 %.0f deg/s" % (sum(heights) / len(heights), sum(speeds) / len(speeds),
+                                turns[len(turns) // 2], turns[int(0.9 * (len(turns) - 1))]))
 
 
 def write_layout(path):
@@ -157,8 +174,10 @@ def main():
         count = int((uwb[-1][0] - uwb[0][0]) * POSE_RATE) + 2
         mocap = [(uwb[0][0] - 0.5 + k / POSE_RATE, x, y, math.radians(yaw))
                  for k in range(count + int(POSE_RATE))]
+        motion = "parked at the dataset's pose"
     else:
-        mocap = read_mocap(data / ("mocap_%s.csv.xz" % args.run))
+        mocap, heights = read_mocap(data / ("mocap_%s.csv.xz" % args.run))
+        motion = motion_summary(mocap, heights)
     messages = []  # (t, topic, message)
     for t, ranges in uwb:
         for tag_id, tag_ranges in zip(TAG_IDS, ranges):
@@ -199,8 +218,8 @@ def main():
             bag.write(topic, msg, rospy.Time.from_sec(t))
     if args.layout:
         write_layout(args.layout)
-    print("%s: %d UWB epochs (%d malformed lines dropped), %d poses, %.1f s" %
-          (args.out, len(uwb), dropped, len(mocap), uwb[-1][0] - uwb[0][0]))
+    print("%s: %d UWB epochs (%d malformed lines dropped), %d poses, %.1f s; %s" %
+          (args.out, len(uwb), dropped, len(mocap), uwb[-1][0] - uwb[0][0], motion))
 
 
 if __name__ == "__main__":

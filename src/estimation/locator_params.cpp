@@ -139,8 +139,7 @@ const ParamTable<LocatorConfig>& LocatorConfig::table() {
           .add("walk_time", &C::walk_time, "s", "Mean walking spell of the target (particle).",
                Range::open(0.0, 3600.0))
           .add("stand_noise", &C::stand_noise, "m^2/s",
-               "A standing target's sway, random-walk PSD per axis (particle).",
-               Range::above(0.0))
+               "A standing target's sway, random-walk PSD per axis (particle).", Range::above(0.0))
           .add("range_decorrelation_time", &C::range_decorrelation_time, "s",
                "A module's ranges closer than this count as a fraction of one (particle).",
                Range::closed(0.0, 10.0))

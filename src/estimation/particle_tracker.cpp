@@ -5,7 +5,6 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <set>
 #include <tuple>
 #include <utility>
@@ -17,9 +16,6 @@ namespace radio_follow {
 namespace estimation {
 namespace {
 
-/// |log Bayes factor| of a cold start's two sides at most, nats: one epoch's data, some of
-/// which may be reflections, never make a side certain.
-constexpr double kColdStartEvidence = 10.0;
 /// |log Bayes factor| cap, nats: a numerical guard only (the fading memory bounds it).
 constexpr double kMaxEvidence = 50.0;
 /// Modules whose scatter's small/large eigenvalue ratio is below this are "nearly
@@ -30,19 +26,6 @@ constexpr double kMinMirrorSeparation = 0.5;
 /// The main hypothesis moving farther than this (or 3 sigma) between two updates has
 /// jumped to another place: its mirror image is drawn again, m.
 constexpr double kMainJump = 1.0;
-/// Cold starts sample this many times the particle count, then keep the best N.
-constexpr std::size_t kColdStartFactor = 4;
-/// A cold start waits for every sensor's first input, at most this long after the first
-/// input, s (two periods of a 10 Hz sensor: a dropped reading or a dead sensor delays the
-/// start by no more).
-constexpr double kColdStartWait = 0.2;
-/// Velocity spread of a cold start, m/s per axis (a walking person).
-constexpr double kColdVelocitySigma = 0.7;
-/// Bearing-only cold starts spread particles over this distance interval, m.
-constexpr double kRayMin = 0.3;
-constexpr double kRayMax = 12.0;
-/// TDoA-only cold starts spread particles over a disc of this radius, m.
-constexpr double kTdoaDisc = 15.0;
 /// A mirror hypothesis with less probability than this is not reported.
 constexpr double kReportedShare = 0.01;
 /// Weight of each measurement in the running inlier probability (about the last 50).
@@ -231,151 +214,6 @@ void ParticleTracker::apply(const TrackedMeasurement& m) {
     last_position_fix_ = std::max(last_position_fix_, m.t);
   }
   ++stats_.processed;
-}
-
-bool ParticleTracker::coldStart(double now) {
-  // The newest measurement of every sensor (the deque is in processing order).
-  std::map<std::tuple<int, std::size_t, std::size_t>, const TrackedMeasurement*> newest;
-  for (const auto& m : recent_) {
-    const auto key = std::make_tuple(static_cast<int>(m.kind), m.sensor, m.sensor_b);
-    const auto it = newest.find(key);
-    if (it == newest.end() || it->second->t <= m.t) {
-      newest[key] = &m;
-    }
-  }
-  const std::size_t sensors = layout_.twr_modules.size() + layout_.aoa_boards.size() +
-                              (layout_.tdoa_anchors.empty() ? 0 : 1);
-  if (newest.size() < std::min<std::size_t>(2, sensors) || newest.empty()) {
-    return false;
-  }
-  const TrackedMeasurement* ring = nullptr;
-  const TrackedMeasurement* latest = nullptr;
-  bool any_tdoa = false;
-  for (const auto& [key, m] : newest) {
-    if (m->kind == TrackedMeasurement::Kind::kRange &&
-        (ring == nullptr || m->value < ring->value)) {
-      ring = m;  // the shortest range: the smallest ring to sample
-    }
-    any_tdoa = any_tdoa || m->kind == TrackedMeasurement::Kind::kTdoa;
-    if (latest == nullptr || m->t > latest->t) {
-      latest = m;
-    }
-  }
-  // Bearings alone place the target only along rays, some of them from a board's edge;
-  // a layout that ranges waits for a range (for max_age, then starts heading-only).
-  const bool ranging = !layout_.twr_modules.empty() || !layout_.tdoa_anchors.empty();
-  if (ring == nullptr && !any_tdoa && ranging &&
-      (recent_.empty() || now - recent_.front().t < config_.max_age)) {
-    return false;
-  }
-  // One epoch of every sensor first: a start from the first two or three inputs takes a
-  // board's reflection, or the edge-biased reading of a board that cannot see the target,
-  // as the direction whenever the board that sees it has not spoken yet
-  // (doc/locator_accuracy.md, "What the locks are").
-  std::size_t heard = any_tdoa ? 1 : 0;
-  for (const auto& [key, m] : newest) {
-    heard += m->kind == TrackedMeasurement::Kind::kRange ||
-             m->kind == TrackedMeasurement::Kind::kBearing;
-  }
-  if (heard < sensors && !recent_.empty() && now - recent_.front().t < kColdStartWait) {
-    return false;
-  }
-  const Pose2 pose = latest->pose.value_or(Pose2{});
-
-  ParticleFilter::Config sampler_config = config_.filter;
-  sampler_config.particles = kColdStartFactor * config_.filter.particles;
-  sampler_config.seed = config_.filter.seed + 1000 * (stats_.cold_starts + 1);
-  ParticleFilter sampler(sampler_config);
-  std::vector<Eigen::Vector3d> positions;
-  const std::size_t count = sampler_config.particles;
-  const double height = config_.filter.height;
-  const double golden = 2.39996322972865332;  // rad: evenly spread angles, no RNG needed
-  if (ring != nullptr) {
-    const Eigen::Vector3d module =
-        ring->pose.value_or(Pose2{}).toFixed(layout_.twr_modules[ring->sensor].position);
-    const double dz = config_.filter.planar ? height - module.z() : 0.0;
-    const double radius = std::sqrt(std::max(0.01, ring->value * ring->value - dz * dz));
-    for (std::size_t k = 0; k < count; ++k) {
-      const double angle = golden * static_cast<double>(k);
-      positions.emplace_back(module.x() + radius * std::cos(angle),
-                             module.y() + radius * std::sin(angle), height);
-    }
-  } else if (any_tdoa) {
-    for (std::size_t k = 0; k < count; ++k) {
-      const double r = kTdoaDisc * std::sqrt((static_cast<double>(k) + 0.5) / count);
-      const double angle = golden * static_cast<double>(k);
-      positions.push_back(pose.toFixed({r * std::cos(angle), r * std::sin(angle), height}));
-    }
-  } else {
-    std::vector<const TrackedMeasurement*> bearings;
-    for (const auto& [key, m] : newest) {
-      if (m->kind == TrackedMeasurement::Kind::kBearing) {
-        bearings.push_back(m);  // an RSS difference weighs the rays, it places none
-      }
-    }
-    if (bearings.empty()) {
-      return false;
-    }
-    for (std::size_t k = 0; k < count; ++k) {
-      const TrackedMeasurement& b = *bearings[k % bearings.size()];
-      const AoaBoard& board = layout_.aoa_boards[b.sensor];
-      const Pose2 at = b.pose.value_or(Pose2{});
-      Eigen::Vector3d direction(std::cos(b.elevation) * std::cos(b.value),
-                                std::cos(b.elevation) * std::sin(b.value), std::sin(b.elevation));
-      if ((k / bearings.size()) % 2 == 1) {
-        direction.x() = -direction.x();  // the array's other side
-      }
-      const double fraction = static_cast<double>((k * 7919) % count) / static_cast<double>(count);
-      const double distance = kRayMin + (kRayMax - kRayMin) * fraction;
-      Eigen::Vector3d p = at.toFixed(board.position + board.orientation * (distance * direction));
-      if (config_.filter.planar) {
-        p.z() = height;
-      }
-      positions.push_back(p);
-    }
-  }
-  sampler.initialize(positions, kColdVelocitySigma, latest->t);
-  for (const auto& [key, m] : newest) {
-    // The cloud's mean is a point near the robot here: whether a board sees the target
-    // is each particle's own question.
-    weigh(sampler, *m, m->pose.value_or(Pose2{}),
-          BearingLikelihood::FieldOfViewTest::kEachParticle);
-  }
-  evidence_ = 0.0;
-  evidence_time_ = latest->t;
-  if (axis_ && ring != nullptr) {
-    // Keep the side with more weight; the other is what the mirror filter starts from.
-    const auto side = [this, &pose](const Eigen::Vector3d& p) { return onMainSide(p, pose); };
-    ParticleFilter other = sampler;
-    const double first = sampler.restrict(side);
-    const double second = 1.0 - first;
-    if (first < second) {
-      other.restrict([&side](const Eigen::Vector3d& p) { return !side(p); });
-      sampler = other;
-    }
-    evidence_ = std::clamp(std::log(std::max(std::min(first, second), 1e-12) /
-                                    std::max(std::max(first, second), 1e-12)),
-                           -kColdStartEvidence, kColdStartEvidence);
-  }
-  std::vector<Eigen::Vector3d> kept;
-  std::vector<Eigen::Vector2d> velocities;
-  sampler.draw(config_.filter.particles, &kept, &velocities);
-  main_.assign(kept, velocities, latest->t);
-  pose_ = pose;
-  for (const auto& [key, m] : newest) {
-    const auto kind = static_cast<std::size_t>(m->kind);
-    last_kind_[kind] = std::max(last_kind_[kind], m->t);
-    if (m->kind == TrackedMeasurement::Kind::kRange || m->kind == TrackedMeasurement::Kind::kTdoa) {
-      last_position_fix_ = std::max(last_position_fix_, m->t);
-    }
-  }
-  mirror_active_ = false;
-  if (axis_) {
-    seedMirror();
-  }
-  ++stats_.cold_starts;
-  (void)now;
-  return true;
 }
 
 Eigen::Matrix3d ParticleTracker::correlatedFloor(const Eigen::Vector3d& position) const {

@@ -68,10 +68,10 @@ struct MeasurementFit {
 /// velocity, a slow sway), and switches with the rates 1 / walk_time and 1 / stand_time.
 /// A standing target seen from a moving robot is then averaged over the robot's path
 /// (the range errors of real modules are correlated over seconds, which a walking model
-/// cannot average), and a walking one loses nothing but the particles that stopped. Weights are kept
-/// normalised; every `weight*` call multiplies them by one measurement's likelihood and
-/// returns the measurement's marginal likelihood sum_i w_i l_i (the evidence the
-/// hypothesis bank compares). Deterministic for a seed.
+/// cannot average), and a walking one loses nothing but the particles that stopped.
+/// Weights are kept normalised; every `weight*` call multiplies them by one measurement's
+/// likelihood and returns the measurement's marginal likelihood sum_i w_i l_i (the
+/// evidence the hypothesis bank compares). Deterministic for a seed.
 class ParticleFilter {
  public:
   struct Config {
@@ -82,7 +82,7 @@ class ParticleFilter {
     double vertical_noise = 0.1;  ///< 3D mode: z random-walk PSD, m^2/s
     /// Mean length of a standing spell, s; 0: no standing mode (every particle walks).
     double stand_time = 0.0;
-    double walk_time = 10.0;    ///< mean length of a walking spell, s (with stand_time > 0)
+    double walk_time = 10.0;     ///< mean length of a walking spell, s (with stand_time > 0)
     double stand_noise = 0.003;  ///< a standing target's sway: random-walk PSD per axis, m^2/s
     /// Resample (systematic) when the effective sample size falls below this share of N.
     double resample_threshold = 0.5;

@@ -138,9 +138,8 @@ double standingTargetError(double stand_time) {
     }
     const LocatorEstimate e = locator.update(t + 0.05);
     if (t >= 20.0) {
-      errors.push_back(hasPosition(e.status)
-                           ? (e.tracking_position - target).head<2>().norm()
-                           : 10.0);  // no position: as bad as it gets
+      errors.push_back(hasPosition(e.status) ? (e.tracking_position - target).head<2>().norm()
+                                             : 10.0);  // no position: as bad as it gets
     }
   }
   std::nth_element(errors.begin(), errors.begin() + errors.size() / 2, errors.end());
