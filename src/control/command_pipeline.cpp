@@ -6,6 +6,7 @@
 
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/common/param_keys.hpp"
+#include "radio_follow/common/plausibility.hpp"
 
 namespace radio_follow {
 namespace control {
@@ -70,6 +71,12 @@ bool CommandPipeline::onRange(double stamp, double now, const std::string& sourc
                               double raw_range) {
   if (!params_.target_anchor_id.empty() && normalizeId(anchor_id) != params_.target_anchor_id) {
     return false;
+  }
+  // The drivers' bounds hold here too: a value no module can report (inf, 1e300, NaN,
+  // negative) is a faulty publisher, never a live range (issue 34).
+  if (!plausibleRange(raw_range)) {
+    monitor_.onImplausibleRange(now);
+    return true;
   }
   const auto module = params_.calibrated_modules.find(normalizeId(module_id));
   const double range = module == params_.calibrated_modules.end()

@@ -38,6 +38,8 @@ FollowerState stateFor(StopReason reason) {
     case StopReason::kTargetLost:
     case StopReason::kRangesSilent:
     case StopReason::kFutureStamp:
+    case StopReason::kImplausibleRange:
+    case StopReason::kInternalFault:
       return FollowerState::kTargetLost;
     case StopReason::kClockJumped:
       return FollowerState::kWaitingForTarget;
@@ -69,6 +71,10 @@ std::string stopText(StopReason reason) {
       return "Clock mismatch, a message from the future, stopping.";
     case StopReason::kClockJumped:
       return "Clock jumped back, starting over.";
+    case StopReason::kImplausibleRange:
+      return "A range no sensor can report, stopping.";
+    case StopReason::kInternalFault:
+      return "Internal error while handling a message, stopping.";
   }
   return "Stopping.";
 }
@@ -93,14 +99,48 @@ std::string defaultText(FollowerState state) {
   return "Stopping.";
 }
 
-bool StatusTracker::update(FollowerState state, const std::string& text) {
-  if (has_last_ && state == last_state_ && text == last_text_) {
-    return false;
-  }
-  has_last_ = true;
-  last_state_ = state;
-  last_text_ = text;
+bool StatusTracker::announce(FollowerState state, const std::string& text) {
+  has_announced_ = true;
+  announced_state_ = state;
+  announced_text_ = text;
+  contradicted_ = false;
   return true;
+}
+
+bool StatusTracker::update(FollowerState state, const std::string& text, double now) {
+  // A clock that ran back restarts every span from now.
+  if (now < state_since_ || now < text_since_ || (contradicted_ && now < contradicted_since_)) {
+    state_since_ = text_since_ = contradicted_since_ = now;
+  }
+  if (!has_current_ || state != current_state_) {
+    state_since_ = now;
+  }
+  if (!has_current_ || state != current_state_ || text != current_text_) {
+    text_since_ = now;
+  }
+  has_current_ = true;
+  current_state_ = state;
+  current_text_ = text;
+
+  if (!has_announced_ || state == FollowerState::kDisabled) {
+    if (has_announced_ && state == announced_state_ && text == announced_text_) {
+      return false;
+    }
+    return announce(state, text);
+  }
+  if (state == announced_state_) {
+    contradicted_ = false;
+    return text != announced_text_ && now - text_since_ >= kStatusSettleTime &&
+           announce(state, text);
+  }
+  if (!contradicted_) {
+    contradicted_ = true;
+    contradicted_since_ = now;
+  }
+  if (now - state_since_ >= kStatusSettleTime || now - contradicted_since_ >= kStatusSettleTime) {
+    return announce(state, text);
+  }
+  return false;
 }
 
 }  // namespace control

@@ -7,6 +7,7 @@
 
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/common/plausibility.hpp"
 
 namespace radio_follow {
 namespace control {
@@ -119,7 +120,8 @@ HomingController::OdometryResult HomingController::onOdometry(const Pose2& pose,
 
 void HomingController::onRange(double range, double stamp,
                                const std::optional<Eigen::Vector3d>& antenna) {
-  if (std::isfinite(range) && range >= 0.0 && (!antenna || antenna->allFinite())) {
+  // The drivers' bounds (plausibility.hpp): an implausible range is no distance at all.
+  if (plausibleRange(range) && (!antenna || antenna->allFinite())) {
     range_ = range;
     range_stamp_ = stamp;
     range_antenna_ = antenna;
@@ -146,7 +148,8 @@ HomingController::BearingResult HomingController::onBearing(double azimuth, doub
   if (!robot_ || std::abs(stamp - odom_stamp_) > params_.odom_timeout) {
     return BearingResult::kNoOdometry;
   }
-  if (!std::isfinite(azimuth)) {
+  // A board reports at most 90 deg either way; beyond half a turn it is no angle at all.
+  if (!(std::abs(azimuth) <= M_PI)) {
     return BearingResult::kNotFinite;
   }
   // The board's position and boresight in the odometry frame.

@@ -57,6 +57,7 @@ void SafetyMonitor::observe(double now) {
   ranges_.clear();
   has_estimate_ = false;
   estimate_quality_ = EstimateQuality::kLost;
+  last_implausible_ = -std::numeric_limits<double>::infinity();
   last_block_time_ = now;
   blocked_once_ = true;
   last_block_reason_ = StopReason::kClockJumped;
@@ -79,6 +80,18 @@ bool SafetyMonitor::onRange(double stamp, double now, const std::string& source,
     ranges_[source] = {stamp, range};
   }
   return violation;
+}
+
+void SafetyMonitor::onImplausibleRange(double now) {
+  observe(now);
+  block(now, StopReason::kImplausibleRange);
+  ++implausible_ranges_;
+  last_implausible_ = now;
+}
+
+void SafetyMonitor::onFault(double now) {
+  observe(now);
+  block(now, StopReason::kInternalFault);
 }
 
 bool SafetyMonitor::onEstimate(double stamp, double now, EstimateQuality quality) {
@@ -121,7 +134,9 @@ StopReason SafetyMonitor::rawReason(double now) {
       ++it;
     }
     if (!any_fresh) {
-      return StopReason::kRangesSilent;
+      // Ranges that arrive but are implausible are named as such, not as silence.
+      const bool implausible = now - last_implausible_ <= params_.range_timeout;
+      return implausible ? StopReason::kImplausibleRange : StopReason::kRangesSilent;
     }
   }
   if (!has_estimate_) {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/drivers/dwm1001_decoder.hpp"
 
-#include "radio_follow/drivers/plausibility.hpp"
+#include "radio_follow/common/plausibility.hpp"
 #include "radio_follow/drivers/text_fields.hpp"
 
 namespace radio_follow::drivers {

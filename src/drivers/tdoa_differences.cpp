@@ -7,7 +7,7 @@
 #include <utility>
 
 #include "radio_follow/common/param_error.hpp"
-#include "radio_follow/drivers/plausibility.hpp"
+#include "radio_follow/common/plausibility.hpp"
 #include "radio_follow/drivers/tdoa_packet.hpp"
 
 namespace radio_follow {
@@ -29,15 +29,15 @@ void TdoaDifferenceConfig::validate() const {
     require(addresses.insert(anchors[i].address).second, name + ".address", anchors[i].address,
             "a unique address");
     const Eigen::Vector3d& p = anchors[i].position;
-    require(drivers::plausibleCoordinate(p.x()) && drivers::plausibleCoordinate(p.y()) &&
-                drivers::plausibleCoordinate(p.z()),
+    require(plausibleCoordinate(p.x()) && plausibleCoordinate(p.y()) &&
+                plausibleCoordinate(p.z()),
             name + ".position",
             std::to_string(p.x()) + ", " + std::to_string(p.y()) + ", " + std::to_string(p.z()),
             "three finite coordinates within 10 km, m");
   }
   require(master < anchors.size(), "~master", master, "one of the anchors");
   require(reference < anchors.size(), "~reference", reference, "one of the anchors");
-  require(drivers::plausibleVariance(distance_variance), "~distance_variance", distance_variance,
+  require(plausibleVariance(distance_variance), "~distance_variance", distance_variance,
           "a positive variance in m^2");
   require(std::isfinite(plausibility_margin) && plausibility_margin >= 0.0, "~plausibility_margin",
           plausibility_margin, "a non-negative distance in metres");
@@ -89,7 +89,7 @@ TdoaDifferenceCalculator::Outcome TdoaDifferenceCalculator::compute(
     const double d = kSpeedOfLight * dt;
     // Bounded by the anchors' baseline, and in any case by the physical limit of a UWB
     // link (anchors further apart than that cannot both hear one blink).
-    if (!drivers::plausibleDistanceDifference(d) ||
+    if (!plausibleDistanceDifference(d) ||
         std::abs(d) > baseline_[r.anchor] + config_.plausibility_margin) {
       if (implausible != nullptr) {
         ++*implausible;

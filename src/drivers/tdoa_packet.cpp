@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "radio_follow/drivers/plausibility.hpp"
+#include "radio_follow/common/plausibility.hpp"
 
 namespace radio_follow {
 namespace drivers {
@@ -165,7 +165,7 @@ TdoaDecodeError decodeTdoaPacket(const std::uint8_t* data, std::size_t size, Tdo
   }
   // Values are judged once the structure is known to be whole.
   if (r.has_quality &&
-      !(drivers::plausibleRssi(r.rssi_dbm) && drivers::plausibleRssi(r.first_path_dbm))) {
+      !(plausibleRssi(r.rssi_dbm) && plausibleRssi(r.first_path_dbm))) {
     return TdoaDecodeError::kImplausible;
   }
   return TdoaDecodeError::kOk;

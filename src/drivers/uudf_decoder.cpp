@@ -4,7 +4,7 @@
 #include <limits>
 
 #include "radio_follow/common/angles.hpp"
-#include "radio_follow/drivers/plausibility.hpp"
+#include "radio_follow/common/plausibility.hpp"
 #include "radio_follow/drivers/text_fields.hpp"
 
 namespace radio_follow::drivers {
@@ -36,11 +36,25 @@ bool takePlain(std::string_view& rest, std::string_view& field) {
   return true;
 }
 
-// Whether the decoded values are ones the board can report (plausibility.hpp). Angles
-// are checked in degrees, as sent; `rssi2` as sent (0 = reserved).
-bool plausibleValues(const UudfEvent& e, double azimuth_deg, double elevation_deg, double rssi2) {
+// Whether the decoded values that make a bearing are ones the board can report
+// (plausibility.hpp): the angles, in degrees as sent, and the first RSSI. The fifth field
+// decides nothing (secondRssi).
+bool plausibleValues(const UudfEvent& e, double azimuth_deg, double elevation_deg) {
   return plausibleRssi(e.rssi) && plausibleAoaAngleDeg(azimuth_deg) &&
-         plausibleAoaAngleDeg(elevation_deg) && plausibleRssi(rssi2);
+         plausibleAoaAngleDeg(elevation_deg);
+}
+
+// The fifth field: reserved (sent as 0) on older u-connectLocate firmware, the second
+// polarisation's RSSI on newer. Real boards send small positive values in it too (6 has
+// been seen), so it never decides whether the bearing is published: NaN unless it holds
+// a plausible, negative RSSI.
+double secondRssi(std::string_view field) {
+  double value = 0.0;
+  if (field.empty() || !parseFiniteDouble(field, value) || !(value < 0.0) ||
+      !plausibleRssi(value)) {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  return value;
 }
 
 }  // namespace
@@ -78,7 +92,6 @@ UudfLineStatus decodeUudfLine(std::string_view line, UudfEvent& out) {
   std::string_view f;
   double azimuth_deg = 0.0;
   double elevation_deg = 0.0;
-  double rssi2 = 0.0;  // stays 0 (= reserved) when the field is empty
   unsigned channel = 0;
   if (!takePlain(rest, f) || !isHexId(f, 12)) {
     return UudfLineStatus::kMalformed;
@@ -86,17 +99,16 @@ UudfLineStatus decodeUudfLine(std::string_view line, UudfEvent& out) {
   assignUpperHex(f, out.tag_id);
   if (!takePlain(rest, f) || !parseFiniteDouble(f, out.rssi) || !takePlain(rest, f) ||
       !parseFiniteDouble(f, azimuth_deg) || !takePlain(rest, f) ||
-      !parseFiniteDouble(f, elevation_deg) || !takePlain(rest, f) ||
-      !(f.empty() || parseFiniteDouble(f, rssi2)) || !takePlain(rest, f) ||
-      !parseInteger(f, channel) || channel > 39 || !takeQuoted(rest, out.anchor_id) ||
-      !takeQuoted(rest, out.user_string)) {
+      !parseFiniteDouble(f, elevation_deg) || !takePlain(rest, f)) {
+    return UudfLineStatus::kMalformed;
+  }
+  out.rssi_second = secondRssi(f);
+  if (!takePlain(rest, f) || !parseInteger(f, channel) || channel > 39 ||
+      !takeQuoted(rest, out.anchor_id) || !takeQuoted(rest, out.user_string)) {
     return UudfLineStatus::kMalformed;
   }
   out.azimuth = deg2rad(azimuth_deg);
   out.elevation = deg2rad(elevation_deg);
-  // Older firmware sends a reserved 0 where newer sends the second polarisation's RSSI;
-  // a real RSSI is always negative.
-  out.rssi_second = rssi2 < 0.0 ? rssi2 : std::numeric_limits<double>::quiet_NaN();
   out.channel = static_cast<std::uint8_t>(channel);
   FieldCursor tail(rest, ',');
   if (!tail.next(f) || !parseInteger(f, out.timestamp_ms)) {
@@ -110,8 +122,8 @@ UudfLineStatus decodeUudfLine(std::string_view line, UudfEvent& out) {
     return UudfLineStatus::kMalformed;
   }
   // Only a line that decoded whole is judged on its values: a cut line stays malformed.
-  return plausibleValues(out, azimuth_deg, elevation_deg, rssi2) ? UudfLineStatus::kEvent
-                                                                 : UudfLineStatus::kImplausible;
+  return plausibleValues(out, azimuth_deg, elevation_deg) ? UudfLineStatus::kEvent
+                                                          : UudfLineStatus::kImplausible;
 }
 
 }  // namespace radio_follow::drivers

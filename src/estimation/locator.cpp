@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/common/plausibility.hpp"
 #include "radio_follow/estimation/mirror_axis.hpp"
 
 namespace radio_follow {
@@ -165,8 +166,8 @@ bool Locator::setConfig(const LocatorConfig& config) {
 bool Locator::addRange(const std::string& module_id, double raw_range, double t,
                        const std::optional<Pose2>& pose) {
   const TwrModule* module = layout_.findTwrModule(module_id);
-  if (module == nullptr || !std::isfinite(raw_range) || raw_range <= 0.0 ||
-      raw_range > kMaxPlausibleRange || !std::isfinite(t)) {
+  // The drivers' bounds (plausibility.hpp), and 0 m is no range to solve with.
+  if (module == nullptr || !plausibleRange(raw_range) || raw_range <= 0.0 || !std::isfinite(t)) {
     ++stats_.invalid_measurements;
     return false;
   }
@@ -189,7 +190,8 @@ bool Locator::addRange(const std::string& module_id, double raw_range, double t,
 bool Locator::addBearing(const std::string& board_id, double azimuth, double elevation, double rssi,
                          double t, const std::optional<Pose2>& pose) {
   const AoaBoard* board = layout_.findAoaBoard(board_id);
-  if (board == nullptr || !std::isfinite(azimuth) || !std::isfinite(elevation) ||
+  // A board reports at most 90 deg either way; beyond half a turn it is no angle at all.
+  if (board == nullptr || !(std::abs(azimuth) <= M_PI) || !(std::abs(elevation) <= M_PI) ||
       !std::isfinite(t)) {
     ++stats_.invalid_measurements;
     return false;
@@ -231,7 +233,7 @@ bool Locator::addTdoaCalibration(const std::string& module_id, const std::string
   const TdoaAnchor* a = layout_.findTdoaAnchor(anchor_a);
   const TdoaAnchor* b = layout_.findTdoaAnchor(anchor_b);
   const std::optional<std::size_t> module = tdoa_calibration_.moduleOf(module_id);
-  if (a == nullptr || b == nullptr || !module || std::abs(difference) > kMaxPlausibleRange ||
+  if (a == nullptr || b == nullptr || !module || !plausibleDistanceDifference(difference) ||
       !tdoa_calibration_.add(*module, static_cast<std::size_t>(a - layout_.tdoa_anchors.data()),
                              static_cast<std::size_t>(b - layout_.tdoa_anchors.data()),
                              difference, t)) {
@@ -246,8 +248,8 @@ bool Locator::addTdoa(const std::string& anchor_a, const std::string& anchor_b, 
                       double variance, double t, const std::optional<Pose2>& pose) {
   const TdoaAnchor* a = layout_.findTdoaAnchor(anchor_a);
   const TdoaAnchor* b = layout_.findTdoaAnchor(anchor_b);
-  if (a == nullptr || b == nullptr || a == b || !std::isfinite(difference) ||
-      std::abs(difference) > kMaxPlausibleRange || !std::isfinite(t)) {
+  if (a == nullptr || b == nullptr || a == b || !plausibleDistanceDifference(difference) ||
+      !std::isfinite(t)) {
     ++stats_.invalid_measurements;
     return false;
   }

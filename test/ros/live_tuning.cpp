@@ -7,7 +7,12 @@
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 
+#include <limits>
 #include <string>
+
+#include "radio_follow/ControllerTuningConfig.h"
+#include "radio_follow/FollowLawTuningConfig.h"
+#include "radio_follow/LocatorTuningConfig.h"
 
 namespace {
 
@@ -150,6 +155,51 @@ TEST_F(LiveTuning, SafetyBoundsHoldInLiveTuning) {
   EXPECT_DOUBLE_EQ(doubleOf(closer, "follow_distance"), 1.8);
   const auto slow = call(withDouble("estimate_timeout", 9.0), kControllerService);
   EXPECT_DOUBLE_EQ(doubleOf(slow, "estimate_timeout"), 0.5);
+}
+
+// A value beyond the table's bounds is refused and the old one stays; within them it is
+// applied as asked. dynamic_reconfigure used to clamp to the .cfg's tighter bounds first:
+// hold_time 20 s (the table allows 30) became 10 s and nothing said so (issue 34).
+TEST_F(LiveTuning, OutOfBoundsIsRefusedNeverClamped) {
+  const auto longer = call(withDouble("hold_time", 20.0), kControllerService);
+  EXPECT_DOUBLE_EQ(doubleOf(longer, "hold_time"), 20.0);
+  EXPECT_DOUBLE_EQ(param("hold_time", "velocity_controller"), 20.0);
+  const auto beyond = call(withDouble("hold_time", 40.0), kControllerService);
+  EXPECT_DOUBLE_EQ(doubleOf(beyond, "hold_time"), 20.0);
+  EXPECT_DOUBLE_EQ(param("hold_time", "velocity_controller"), 20.0);
+  const auto back = call(withDouble("hold_time", 1.0), kControllerService);
+  EXPECT_DOUBLE_EQ(doubleOf(back, "hold_time"), 1.0);
+}
+
+// No .cfg field has bounds of its own: dynamic_reconfigure would clamp to them silently
+// before the node's validation sees the request. The table's bounds are the only ones.
+template <typename Config>
+void expectNoCfgBounds() {
+  const Config& lo = Config::__getMin__();
+  const Config& hi = Config::__getMax__();
+  int checked = 0;
+  for (const auto& d : Config::__getParamDescriptions__()) {
+    boost::any min;
+    boost::any max;
+    d->getValue(lo, min);
+    d->getValue(hi, max);
+    if (d->type == "double") {
+      EXPECT_EQ(boost::any_cast<double>(min), -std::numeric_limits<double>::infinity()) << d->name;
+      EXPECT_EQ(boost::any_cast<double>(max), std::numeric_limits<double>::infinity()) << d->name;
+      ++checked;
+    } else if (d->type == "int") {
+      EXPECT_EQ(boost::any_cast<int>(min), std::numeric_limits<int>::min()) << d->name;
+      EXPECT_EQ(boost::any_cast<int>(max), std::numeric_limits<int>::max()) << d->name;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 0);
+}
+
+TEST(LiveTuningBounds, NoCfgFieldCanBeClamped) {
+  expectNoCfgBounds<radio_follow::ControllerTuningConfig>();
+  expectNoCfgBounds<radio_follow::FollowLawTuningConfig>();
+  expectNoCfgBounds<radio_follow::LocatorTuningConfig>();
 }
 
 }  // namespace

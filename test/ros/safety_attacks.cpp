@@ -5,6 +5,8 @@
 #include <ros/ros.h>
 
 #include <atomic>
+#include <cstdint>
+#include <limits>
 #include <mutex>
 
 #include "controller_test_utils.hpp"
@@ -28,6 +30,8 @@ class Feeder {
         range_timer_(nh.createTimer(ros::Duration(0.1), &Feeder::rangeTick, this)) {}
 
   std::atomic<bool> send_estimates{true};
+  /// What the range timer sends, m.
+  std::atomic<double> range_value{4.0};
   /// What the timer sends: a far OK target, an AMBIGUOUS one, or an all-zero message.
   enum class Kind { kFarOk, kAmbiguous, kAllZero };
   std::atomic<Kind> kind{Kind::kFarOk};
@@ -63,7 +67,7 @@ class Feeder {
       publishEstimate(ros::Time::now());
     }
   }
-  void rangeTick(const ros::TimerEvent&) { publishRange(ros::Time::now(), 4.0); }
+  void rangeTick(const ros::TimerEvent&) { publishRange(ros::Time::now(), range_value); }
 
   std::mutex mutex_;
   ros::Publisher estimate_pub_;
@@ -108,6 +112,7 @@ class SafetyAttacks : public ::testing::Test {
   void SetUp() override {
     feeder_->send_estimates = true;
     feeder_->kind = Feeder::Kind::kFarOk;
+    feeder_->range_value = 4.0;
     ASSERT_TRUE(waitFor([&] { return recorder_->lastCmd().linear.x > 0.2; }, 20.0))
         << "the controller never drove toward a far target";
   }
@@ -130,6 +135,38 @@ TEST_F(SafetyAttacks, OneEstimateFromTheFutureThenSilence) {
       << "still driving after a future-stamped estimate and a dead locator";
   EXPECT_TRUE(staysStopped(*recorder_, 3.0));
   EXPECT_EQ(recorder_->lastStatus().state, FollowerStatus::STATE_TARGET_LOST);
+}
+
+// Issue 34, defect 1: one estimate stamped 2^32-1 s made the warning's (stamp - now)
+// overflow ros::Duration; the exception escaped the callback and the controller aborted
+// with 1.025 m/s as the last command on the wire. Now the robot stops, the node lives on
+// and follows again once good estimates come back.
+TEST_F(SafetyAttacks, EstimateStampedAtTheEndOfTimeStopsAndTheNodeLivesOn) {
+  feeder_->send_estimates = false;
+  for (const std::uint32_t secs : {4294967295u, 2147483648u, 2147483647u}) {
+    feeder_->publishEstimate(ros::Time(secs, 0));
+  }
+  ASSERT_TRUE(waitFor([&] { return isZero(recorder_->lastCmd()); }, 1.0))
+      << "still driving after estimates stamped at the end of time";
+  EXPECT_TRUE(staysStopped(*recorder_, 1.5));  // and still publishing: alive
+  feeder_->send_estimates = true;
+  EXPECT_TRUE(waitFor([&] { return recorder_->lastCmd().linear.x > 0.2; }, 10.0))
+      << "the controller did not follow again after the attack";
+}
+
+// Issue 34, defect 3: ranges of inf or 1e300 kept the range watchdog alive and the robot
+// followed at 1.5 m/s without any real range. An implausible range is no live range, and
+// it stops the robot.
+TEST_F(SafetyAttacks, ImplausibleRangesAreNoLiveRanges) {
+  for (const double range : {std::numeric_limits<double>::infinity(), 1e300, 301.0}) {
+    feeder_->range_value = range;
+    ASSERT_TRUE(waitFor([&] { return isZero(recorder_->lastCmd()); }, 1.0))
+        << "still driving on ranges of " << range;
+    EXPECT_TRUE(staysStopped(*recorder_, 1.5)) << range;
+  }
+  EXPECT_EQ(recorder_->lastStatus().state, FollowerStatus::STATE_TARGET_LOST);
+  EXPECT_NE(recorder_->lastStatus().text.find("no sensor can report"), std::string::npos)
+      << recorder_->lastStatus().text;
 }
 
 // A publisher that fills nothing sends zeros: status 0 used to be STATUS_OK, range 0 at

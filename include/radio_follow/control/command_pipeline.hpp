@@ -77,11 +77,14 @@ class CommandPipeline {
   /// A raw range of module `module_id` to anchor `anchor_id` stamped `stamp`, received at
   /// `now`, from `source` (e.g. "<topic>/<module>"). Ranges to other anchors than the
   /// target's are ignored; the module's calibration is applied. Returns true when this
-  /// range alone blocks motion (too close, NaN or from the future): send zero at once.
+  /// range alone blocks motion (too close, implausible or from the future): send zero at once.
   bool onRange(double stamp, double now, const std::string& source, const std::string& module_id,
                const std::string& anchor_id, double raw_range);
   /// An estimate (or bearing, for homing); false when refused (from the future).
   bool onEstimate(double stamp, double now, EstimateQuality quality);
+  /// The node failed while handling an input (a callback threw): motion is blocked for
+  /// hold_time (SafetyMonitor::onFault). Send stop(StopReason::kInternalFault) at once.
+  void onFault(double now) { monitor_.onFault(now); }
   /// A laser scan's sectors, stamped `stamp`.
   void onScan(const SectorRanges& sectors, double stamp);
   void setEnabled(bool enabled) { monitor_.setEnabled(enabled); }

@@ -42,6 +42,11 @@ enum class StopReason {
   kFutureStamp,
   /// This node's clock ran backwards (bag loop, simulator restart): state was reset.
   kClockJumped,
+  /// A range no module can report (non-finite, negative or beyond kMaxUwbRange,
+  /// common/plausibility.hpp): a faulty publisher, so the ranges cannot be trusted.
+  kImplausibleRange,
+  /// A callback of the node threw (CallbackBarrier): whatever it was handling is unknown.
+  kInternalFault,
 };
 
 /// The state's name as diagnostics and logs show it: "disabled", "waiting_for_target",
@@ -59,17 +64,38 @@ std::string stopText(StopReason reason);
 /// Default sentence for a state (used when the controller gives no more specific one).
 std::string defaultText(FollowerState state);
 
-/// Remembers the last reported (state, text) so the node publishes status only on a
-/// change, as the announcer speaks each message it receives.
+/// How long a status must hold before it is announced, s. Inputs at the edge of two stop
+/// reasons (steady future-stamped ranges: "Clock mismatch" / "No range to the target")
+/// used to flip the status 20 times a second, and the announcer spoke both in turn. Half
+/// a second is shorter than any stop's hold (hold_time, 1 s shipped), so every stop is
+/// still announced; cmd_vel does not wait for it.
+constexpr double kStatusSettleTime = 0.5;
+
+/// Decides when the node announces its status (FollowerStatus, the announcer speaks each
+/// one). The first status and "disabled" (an operator's command) are announced at once.
+/// Otherwise a new state is announced once it has held kStatusSettleTime, or once the
+/// announced state has not been the current one for kStatusSettleTime (states that flap
+/// faster than that are announced as the one current then, not left untold); a new text
+/// within the announced state once it has held kStatusSettleTime.
 class StatusTracker {
  public:
-  /// True when (state, text) differs from the last call (always true the first time).
-  bool update(FollowerState state, const std::string& text);
+  /// The current (state, text) at `now` (s, the node's clock): true when it is to be
+  /// announced now.
+  bool update(FollowerState state, const std::string& text, double now);
 
  private:
-  bool has_last_ = false;
-  FollowerState last_state_ = FollowerState::kDisabled;
-  std::string last_text_;
+  bool announce(FollowerState state, const std::string& text);
+
+  bool has_announced_ = false;
+  FollowerState announced_state_ = FollowerState::kDisabled;
+  std::string announced_text_;
+  bool has_current_ = false;
+  FollowerState current_state_ = FollowerState::kDisabled;
+  std::string current_text_;
+  double state_since_ = 0.0;      ///< the current state holds since
+  double text_since_ = 0.0;       ///< the current text holds since
+  double contradicted_since_ = 0.0;  ///< the announced state is not current since
+  bool contradicted_ = false;
 };
 
 /// What a control law wants this tick.

@@ -90,7 +90,7 @@ class HomingController {
   enum class BearingResult {
     kUsed,
     kNoOdometry,  ///< no pose within odom_timeout of the bearing's stamp
-    kNotFinite,   ///< the azimuth is NaN or infinite
+    kNotFinite,   ///< the azimuth is no angle: NaN, infinite or beyond +-pi
   };
   /// One angle of arrival in the board frame (rad, CCW) with its RSSI (dBm; NaN when
   /// none), stamped `stamp`: feeds the hybrid estimate with the board's pose in the

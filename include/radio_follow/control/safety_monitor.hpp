@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <cstdint>
+#include <limits>
 #include <map>
 #include <string>
 
@@ -61,6 +63,14 @@ class SafetyMonitor {
   /// future); the node then publishes zero at once, before the next control tick.
   bool onRange(double stamp, double now, const std::string& source, double range);
 
+  /// A range received at `now` that no module can report (common/plausibility.hpp):
+  /// blocks motion and is not stored, so it never counts as a live range.
+  void onImplausibleRange(double now);
+  /// The node failed while handling an input at `now` (a callback threw): blocks motion
+  /// for hold_time, as a violation does.
+  void onFault(double now);
+  std::uint64_t implausibleRanges() const { return implausible_ranges_; }
+
   /// An estimate stamped `stamp` received at `now`, of the given quality.
   /// Returns false when it was refused (from the future; motion is then blocked).
   bool onEstimate(double stamp, double now, EstimateQuality quality);
@@ -99,6 +109,9 @@ class SafetyMonitor {
   bool blocked_once_ = false;
   double last_block_time_ = 0.0;
   StopReason last_block_reason_ = StopReason::kNoEstimateYet;
+  std::uint64_t implausible_ranges_ = 0;
+  /// Receive time of the latest implausible range.
+  double last_implausible_ = -std::numeric_limits<double>::infinity();
 };
 
 /// The command actually sent: `command` when the decision allows motion, else zero.

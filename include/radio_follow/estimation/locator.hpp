@@ -153,10 +153,6 @@ struct LocatorEstimate {
   Eigen::Vector3d alternative = Eigen::Vector3d::Zero();
 };
 
-/// A range or distance difference beyond this is no measurement (a DWM1001C ranges to
-/// some tens of metres; a corrupted line can carry 1e154), m.
-constexpr double kMaxPlausibleRange = 300.0;
-
 struct LocatorStats {
   std::size_t updates = 0;
   std::size_t solves = 0;

@@ -69,13 +69,13 @@ AnnouncerNode::AnnouncerNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
              params_.command.c_str());
   }
   for (const auto& topic : params_.status_topics) {
-    subs_.push_back(nh.subscribe(topic, 10, &AnnouncerNode::onStatus, this));
+    subs_.push_back(barrier_.subscribe(nh, topic, 10, &AnnouncerNode::onStatus, this));
   }
   if (!params_.diagnostics_topic.empty()) {
-    subs_.push_back(
-        nh.subscribe(params_.diagnostics_topic, 10, &AnnouncerNode::onDiagnostics, this));
+    subs_.push_back(barrier_.subscribe(nh, params_.diagnostics_topic, 10,
+                                       &AnnouncerNode::onDiagnostics, this));
   }
-  timer_ = nh.createTimer(ros::Duration(0.1), &AnnouncerNode::onTimer, this);
+  timer_ = barrier_.timer(nh, ros::Duration(0.1), "speech", &AnnouncerNode::onTimer, this);
 }
 
 AnnouncerNode::~AnnouncerNode() {

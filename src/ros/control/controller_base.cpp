@@ -10,6 +10,7 @@
 
 #include "radio_follow/FollowerStatus.h"
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/common/plausibility.hpp"
 #include "radio_follow/common/param_keys.hpp"
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/ros/common/params.hpp"
@@ -27,6 +28,10 @@ std::atomic<bool> stop_requested{false};
 void requestStop(int /*signal*/) {
   stop_requested = true;
 }
+
+/// The private parameter a running controller sets and a clean stop deletes; a new
+/// instance that finds it replaces one that died (respawn) and comes back disabled.
+constexpr char kRunningMarker[] = "running";
 
 }  // namespace
 
@@ -65,6 +70,7 @@ ControllerBase::ControllerBase(ros::NodeHandle& nh, ros::NodeHandle& private_nh,
         }
         allowTuning<ControllerTuningConfig>(params_in_);
         params_in_.own("law");  // the follow law's live-tuning server (doc/live_tuning.md)
+        params_in_.own(kRunningMarker);  // set by the node itself (markRunning)
         p.load(params_in_);
         p.safety.watch_ranges = !p.range_topics.empty();
         p.validate();
@@ -85,11 +91,35 @@ void ControllerBase::requireKnownParams() {
   params_checked_ = true;
 }
 
+void ControllerBase::lastWords(const char* /*reason*/) {
+  dying_ = true;  // from here on no other thread sends a motion command
+  if (cmd_pub_) {
+    cmd_pub_.publish(geometry_msgs::Twist());
+  }
+}
+
+bool ControllerBase::markRunning() {
+  const bool replaced = private_nh_.hasParam(kRunningMarker);
+  private_nh_.setParam(kRunningMarker, true);
+  return replaced;
+}
+
+void ControllerBase::clearRunningMarker() {
+  private_nh_.deleteParam(kRunningMarker);
+}
+
 void ControllerBase::start() {
   if (!params_checked_) {
     throw std::logic_error("ControllerBase::start() before requireKnownParams()");
   }
   cmd_pub_ = nh_.advertise<geometry_msgs::Twist>(common_.cmd_vel_topic, 1);
+  // A callback that throws (a stamp no ros::Time arithmetic can hold, a bug) stops the
+  // robot at once and for hold_time; the node keeps running and keeps publishing.
+  barrier_.setFaultAction([this](const std::string& /*where*/, const std::string& /*what*/) {
+    const std::lock_guard<std::mutex> lock(safety_mutex_);
+    pipeline_.onFault(ros::Time::now().toSec());
+    publishStopLocked(control::StopReason::kInternalFault);
+  });
   status_pub_ = private_nh_.advertise<FollowerStatus>("status", 10, true);
   debugAdvertised(status_pub_);
   // The safety path has its own queue and thread: a range below safe_distance stops the
@@ -98,8 +128,10 @@ void ControllerBase::start() {
     first_range_[topic];  // before the safety thread reads the map
     ros::SubscribeOptions options = ros::SubscribeOptions::create<UwbRanges>(
         topic, kRangeQueueSize,
-        [this, topic](const UwbRanges::ConstPtr& msg) { onRanges(topic, msg); }, ros::VoidPtr(),
-        &safety_queue_);
+        [this, topic](const UwbRanges::ConstPtr& msg) {
+          barrier_.run(topic, [&] { onRanges(topic, msg); });
+        },
+        ros::VoidPtr(), &safety_queue_);
     options.transport_hints = ros::TransportHints().tcpNoDelay();
     range_subs_.push_back(nh_.subscribe(options));
     debugSubscribed(range_subs_.back());
@@ -109,10 +141,10 @@ void ControllerBase::start() {
     safety_spinner_->start();
   }
   if (common_.use_scan) {
-    scan_sub_ = nh_.subscribe("scan", 1, &ControllerBase::onScan, this);
+    scan_sub_ = barrier_.subscribe(nh_, "scan", 1, &ControllerBase::onScan, this);
     debugSubscribed(scan_sub_);
   }
-  enable_sub_ = private_nh_.subscribe("enable", 10, &ControllerBase::onEnableTopic, this);
+  enable_sub_ = barrier_.subscribe(private_nh_, "enable", 10, &ControllerBase::onEnableTopic, this);
   debugSubscribed(enable_sub_);
   enable_srv_ = private_nh_.advertiseService("set_enabled", &ControllerBase::onEnableService, this);
 
@@ -136,12 +168,24 @@ void ControllerBase::start() {
         common_ = params;
       });
 
-  setEnabled(common_.start_enabled);
-  timer_ = nh_.createTimer(ros::Duration(1.0 / common_.rate), &ControllerBase::onTick, this);
+  if (markRunning() && common_.start_enabled) {
+    ROS_WARN(
+        "%s: starting disabled although start_enabled is true: a previous %s did not stop "
+        "cleanly (crashed or was killed, and was respawned). Enable it when the robot is "
+        "safe: rosservice call %s true",
+        ros::this_node::getName().c_str(), ros::this_node::getName().c_str(),
+        enable_srv_.getService().c_str());
+    setEnabled(false);
+  } else {
+    setEnabled(common_.start_enabled);
+  }
+  timer_ = barrier_.timer(nh_, ros::Duration(1.0 / common_.rate), "control tick",
+                          &ControllerBase::onTick, this);
   // The stop request is watched on wall time: on simulated time the clock may already
   // have stopped (its publisher shut down first) and a sim-time timer would never fire.
-  stop_check_timer_ =
-      nh_.createWallTimer(ros::WallDuration(0.05), &ControllerBase::onStopCheck, this);
+  stop_check_timer_ = barrier_.wallTimer(
+      nh_, ros::WallDuration(0.05), "stop check",
+      [this](const ros::WallTimerEvent& event) { onStopCheck(event); });
 }
 
 bool ControllerBase::noteEstimate(const ros::Time& stamp, control::EstimateQuality quality) {
@@ -151,8 +195,9 @@ bool ControllerBase::noteEstimate(const ros::Time& stamp, control::EstimateQuali
   if (pipeline_.onEstimate((stamp.isZero() ? now : stamp).toSec(), now.toSec(), quality)) {
     return true;
   }
+  // Seconds as double: a stamp 2^32 s ahead overflows ros::Duration (issue 34).
   ROS_WARN_THROTTLE(2.0, "%s: estimate stamped %.3f s ahead of this node's clock refused; stopping",
-                    ros::this_node::getName().c_str(), (stamp - now).toSec());
+                    ros::this_node::getName().c_str(), stamp.toSec() - now.toSec());
   return false;
 }
 
@@ -168,6 +213,7 @@ void ControllerBase::onRanges(const std::string& topic, const UwbRanges::ConstPt
   first_range_.at(topic)(topic);
   const std::lock_guard<std::mutex> lock(safety_mutex_);
   const std::uint64_t future_before = pipeline_.monitor().time().futureRefused();
+  const std::uint64_t implausible_before = pipeline_.monitor().implausibleRanges();
   bool violation = false;
   for (const auto& r : msg->ranges) {
     violation |= pipeline_.onRange(stamp, now.toSec(), topic + "/" + msg->tag_id, msg->tag_id,
@@ -181,8 +227,16 @@ void ControllerBase::onRanges(const std::string& topic, const UwbRanges::ConstPt
   // Do not wait for the next tick: a person stepping in front of the robot must stop
   // it within one range update. The law's own reset (onStopped) follows on the main
   // thread at the next tick, which sees the same verdict.
+  const bool implausible = pipeline_.monitor().implausibleRanges() != implausible_before;
+  if (implausible) {
+    ROS_WARN_THROTTLE(2.0, "%s: range on %s that no module can report (non-finite, negative or "
+                      "beyond %.0f m) refused; stopping",
+                      ros::this_node::getName().c_str(), topic.c_str(), kMaxUwbRange);
+  }
   if (violation && pipeline_.enabled()) {
-    publishStopLocked(future ? control::StopReason::kFutureStamp : control::StopReason::kTooClose);
+    publishStopLocked(future        ? control::StopReason::kFutureStamp
+                      : implausible ? control::StopReason::kImplausibleRange
+                                    : control::StopReason::kTooClose);
   }
 }
 
@@ -248,6 +302,7 @@ void ControllerBase::onStopCheck(const ros::WallTimerEvent& /*event*/) {
   timer_.stop();
   stop_check_timer_.stop();
   setEnabled(false);
+  clearRunningMarker();  // a clean stop: the next start honours start_enabled
   // Give the zero command time to leave the process before the connections close.
   ros::WallDuration(0.2).sleep();
   ros::shutdown();
@@ -293,6 +348,9 @@ void ControllerBase::onTick(const ros::TimerEvent& event) {
 }
 
 void ControllerBase::publishCommand(const control::VelocityCommand& cmd) {
+  if (dying_) {
+    return;  // the last words sent zero; a tick on another thread must not undo it
+  }
   geometry_msgs::Twist twist;
   twist.linear.x = cmd.linear;
   twist.angular.z = cmd.angular;
@@ -303,7 +361,7 @@ void ControllerBase::publishCommand(const control::VelocityCommand& cmd) {
 void ControllerBase::publishStatus(control::FollowerState state, const std::string& text) {
   state_ = state;
   status_text_ = text;
-  if (!status_tracker_.update(state, text)) {
+  if (!status_tracker_.update(state, text, ros::Time::now().toSec())) {
     return;
   }
   FollowerStatus msg;
@@ -328,6 +386,11 @@ void ControllerBase::diagnose(diagnostic_updater::DiagnosticStatusWrapper& statu
   status.add("stopped ticks", stopped_ticks_);
   status.add("stamps from the future refused", pipeline_.monitor().time().futureRefused());
   status.add("clock jumps back", pipeline_.monitor().time().clockJumps());
+  status.add("implausible ranges refused", pipeline_.monitor().implausibleRanges());
+  status.add("callback faults", barrier_.faults());
+  if (barrier_.faults() > 0) {
+    status.add("last callback fault", barrier_.lastFault());
+  }
 }
 
 }  // namespace radio_follow

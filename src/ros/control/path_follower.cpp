@@ -38,7 +38,7 @@ PathFollowerNode::PathFollowerNode(ros::NodeHandle& nh, ros::NodeHandle& private
       motion_(tf_buffer_, params_.odom_frame, params_.tf_timeout) {
   requireKnownParams();
   path_pub_ = private_nh_.advertise<nav_msgs::Path>("path", 1, true);
-  estimate_sub_ = nh_.subscribe("target", 5, &PathFollowerNode::onEstimate, this);
+  estimate_sub_ = barrier_.subscribe(nh_, "target", 5, &PathFollowerNode::onEstimate, this);
   debugSubscribed(estimate_sub_);
   debugAdvertised(path_pub_);
   law_reconfigure_ = makeFollowLawReconfigure(
@@ -59,8 +59,10 @@ void PathFollowerNode::onStopped() {
 }
 
 void PathFollowerNode::onEstimate(const TargetEstimate::ConstPtr& msg) {
+  if (!noteEstimate(msg->header.stamp, estimateQuality(*msg))) {
+    return;  // from the future: the robot stops, and nothing of it reaches the law or TF
+  }
   estimate_ = msg;
-  noteEstimate(msg->header.stamp, estimateQuality(*msg));
   // Only full positions extend the path: a HEADING_ONLY position is a guess.
   if (!hasPosition(*msg)) {
     return;

@@ -30,9 +30,10 @@ std::optional<Eigen::Vector2d> TargetMotionTracker::add(const TargetEstimate& es
       t = buffer_.lookupTransform(odom_frame_, estimate.header.frame_id, estimate.header.stamp);
     } else {
       t = buffer_.lookupTransform(odom_frame_, estimate.header.frame_id, ros::Time(0));
-      const ros::Duration offset = t.header.stamp - estimate.header.stamp;
-      if (!(std::abs(offset.toSec()) <= tf_timeout_.toSec())) {
-        last_error_ = "newest transform " + std::to_string(offset.toSec()) +
+      // Seconds as double: stamps 2^32 s apart overflow ros::Duration (issue 34).
+      const double offset = t.header.stamp.toSec() - estimate.header.stamp.toSec();
+      if (!(std::abs(offset) <= tf_timeout_.toSec())) {
+        last_error_ = "newest transform " + std::to_string(offset) +
                       " s from the estimate, more than tf_timeout";
         return std::nullopt;
       }

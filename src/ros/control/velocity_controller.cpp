@@ -33,7 +33,7 @@ VelocityControllerNode::VelocityControllerNode(ros::NodeHandle& nh, ros::NodeHan
       tf_listener_(tf_buffer_),
       motion_(tf_buffer_, params_.odom_frame, params_.tf_timeout) {
   requireKnownParams();
-  estimate_sub_ = nh_.subscribe("target", 5, &VelocityControllerNode::onEstimate, this);
+  estimate_sub_ = barrier_.subscribe(nh_, "target", 5, &VelocityControllerNode::onEstimate, this);
   debugSubscribed(estimate_sub_);
   // Speed caps come from the common limits; the law's own fields are tuned on ~law.
   law_reconfigure_ = makeFollowLawReconfigure(private_nh, law_.params(),
@@ -54,8 +54,10 @@ void VelocityControllerNode::onCommonChange(const ControllerCommonParams& next) 
 }
 
 void VelocityControllerNode::onEstimate(const TargetEstimate::ConstPtr& msg) {
+  if (!noteEstimate(msg->header.stamp, estimateQuality(*msg))) {
+    return;  // from the future: the robot stops, and nothing of it reaches the law or TF
+  }
   estimate_ = msg;
-  noteEstimate(msg->header.stamp, estimateQuality(*msg));
   if (!params_.odom_frame.empty() && !motion_.add(*msg) && !motion_.lastError().empty()) {
     ROS_WARN_THROTTLE(10.0, "%s: no transform %s <- %s, following without speed feed-forward (%s)",
                       ros::this_node::getName().c_str(), params_.odom_frame.c_str(),

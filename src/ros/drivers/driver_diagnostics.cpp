@@ -17,7 +17,7 @@ DriverDiagnostics::DriverDiagnostics(ros::NodeHandle& nh, ros::NodeHandle& priva
       updater_(nh, private_nh) {
   updater_.setHardwareID(hardware_id);
   updater_.add(name, this, &DriverDiagnostics::produce);
-  timer_ = nh.createTimer(ros::Duration(1.0), &DriverDiagnostics::tick, this);
+  timer_ = barrier_.timer(nh, ros::Duration(1.0), "diagnostics", &DriverDiagnostics::tick, this);
 }
 
 void DriverDiagnostics::tick(const ros::TimerEvent&) {

@@ -64,7 +64,8 @@ Dwm1001DriverNode::Dwm1001DriverNode(ros::NodeHandle& nh, ros::NodeHandle& priva
   // A module may give no position: no lower rate on tag_location.
   location_output_ = &watchOutput(location_pub_, kMaxLineRate, false);
   if (params_.configure) {
-    shell_timer_ = nh.createTimer(ros::Duration(0.25), &Dwm1001DriverNode::onShellTimer, this);
+    shell_timer_ =
+        barrier_.timer(nh, ros::Duration(0.25), "shell", &Dwm1001DriverNode::onShellTimer, this);
   }
   start();
 }

@@ -34,9 +34,15 @@ OutputDiagnostic& SerialLineDriver::watchOutput(const ros::Publisher& publisher,
 
 void SerialLineDriver::start() {
   drivers::SerialTransport::Callbacks callbacks;
-  callbacks.on_bytes = [this](const char* data, std::size_t size) { onBytes(data, size); };
-  callbacks.on_connected = [this] { onConnected(); };
-  callbacks.on_disconnected = [this](const std::string& reason) { onDisconnected(reason); };
+  // The I/O thread's callbacks run inside the barrier: an exception would end io_.run()
+  // and with it the process.
+  callbacks.on_bytes = [this](const char* data, std::size_t size) {
+    barrier_.run("serial input", [&] { onBytes(data, size); });
+  };
+  callbacks.on_connected = [this] { barrier_.run("serial connect", [&] { onConnected(); }); };
+  callbacks.on_disconnected = [this](const std::string& reason) {
+    barrier_.run("serial disconnect", [&] { onDisconnected(reason); });
+  };
   transport_ = std::make_unique<drivers::SerialTransport>(options_, callbacks);
   transport_->start();
 }

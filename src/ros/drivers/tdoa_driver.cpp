@@ -28,12 +28,14 @@ TdoaDriverNode::TdoaDriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
   pub_ = nh.advertise<TdoaMeasurements>("measurements", kQueueDepth);
   queue_ = std::make_unique<drivers::DeliveryQueue<TdoaMeasurements>>(
       kQueueDepth, [this](TdoaMeasurements& msg) {
-        pub_.publish(msg);
-        output_diagnostic_->tick(msg.header.stamp);
-        if (blinks_published_++ == 0) {
-          ROS_DEBUG_NAMED("wiring", "%s: first blink published on %s",
-                          ros::this_node::getName().c_str(), pub_.getTopic().c_str());
-        }
+        barrier_.run("publish", [&] {
+          pub_.publish(msg);
+          output_diagnostic_->tick(msg.header.stamp);
+          if (blinks_published_++ == 0) {
+            ROS_DEBUG_NAMED("wiring", "%s: first blink published on %s",
+                            ros::this_node::getName().c_str(), pub_.getTopic().c_str());
+          }
+        });
       });
   diagnostics_.setHardwareIDf("tdoa udp %s:%d", params_.address.c_str(), params_.port);
   diagnostics_.add("TDoA anchors", this, &TdoaDriverNode::diagnose);
@@ -44,8 +46,8 @@ TdoaDriverNode::TdoaDriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
       OutputDiagnostic::Bounds::forDriver(params_.data_timeout, kMaxBlinkRate), true);
   last_datagram_ = last_diagnosis_ = ros::WallTime::now();
   // Incomplete blinks are published when their window passes; check twice per window.
-  timer_ =
-      nh.createTimer(ros::Duration(params_.group_window / 2.0), &TdoaDriverNode::onTimer, this);
+  timer_ = barrier_.timer(nh, ros::Duration(params_.group_window / 2.0), "grouping",
+                          &TdoaDriverNode::onTimer, this);
 
   drivers::TdoaUdpTransport::Config config;
   config.address = params_.address;
@@ -53,8 +55,13 @@ TdoaDriverNode::TdoaDriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
   config.initial_backoff = params_.initial_backoff;
   config.max_backoff = params_.max_backoff;
   transport_ = std::make_unique<drivers::TdoaUdpTransport>(
-      config, [this](const std::uint8_t* data, std::size_t size) { onDatagram(data, size); },
-      [this](const std::string& what, double retry_in) { onSocketError(what, retry_in); });
+      config,
+      [this](const std::uint8_t* data, std::size_t size) {
+        barrier_.run("udp input", [&] { onDatagram(data, size); });
+      },
+      [this](const std::string& what, double retry_in) {
+        barrier_.run("socket error", [&] { onSocketError(what, retry_in); });
+      });
   transport_->start();
   ROS_INFO("tdoa_driver: listening on %s:%d for %zu anchors (master %s)", params_.address.c_str(),
            params_.port, params_.anchors.size(), params_.master.c_str());

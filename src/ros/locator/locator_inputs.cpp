@@ -2,12 +2,20 @@
 #include "radio_follow/ros/locator/locator_inputs.hpp"
 
 #include "radio_follow/common/param_keys.hpp"
+#include "radio_follow/common/time_policy.hpp"
 
 namespace radio_follow {
 
 bool LocatorInputs::poseFor(const ros::Time& stamp, std::optional<Pose2>* pose) {
   pose->reset();
   if (!lookup_) {
+    return true;
+  }
+  // TF is asked only about stamps the locator can use. One it drops anyway by its stamp
+  // (older than max_age, from the future; counted there) would only make tf2 write an
+  // error text, and for a stamp 2^32 s away that text overflows ros::Duration (issue 34).
+  const double age = clock_() - stamp.toSec();
+  if (!(age <= locator_.config().max_age && age >= -kFutureStampTolerance)) {
     return true;
   }
   *pose = lookup_(stamp);

@@ -120,7 +120,8 @@ LocatorNode::LocatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
   target_diagnostic_.emplace(diagnostics_, "locator output", target_pub_, bounds, true);
   bounds.min_hz = 0.0;
   pose_diagnostic_.emplace(diagnostics_, "locator output", pose_pub_, bounds, true);
-  timer_ = nh.createTimer(ros::Duration(1.0 / params_.rate), &LocatorNode::onTimer, this);
+  timer_ = barrier_.timer(nh, ros::Duration(1.0 / params_.rate), "locator update",
+                          &LocatorNode::onTimer, this);
   ROS_INFO("locator: %s mode, %zu TWR modules, %zu AoA boards, %zu TDoA anchors, %.1f Hz",
            params_.locator.planar ? "2D" : "3D", layout_.twr_modules.size(),
            layout_.aoa_boards.size(), layout_.tdoa_anchors.size(), params_.rate);
@@ -136,9 +137,11 @@ void LocatorNode::subscribe(ros::NodeHandle& nh, const std::string& topic,
                             void (LocatorNode::*callback)(const typename Message::ConstPtr&)) {
   const std::size_t index = subscribers_.size();
   const boost::function<void(const typename Message::ConstPtr&)> handler =
-      [this, index, callback](const typename Message::ConstPtr& msg) {
-        noteInput(index);
-        (this->*callback)(msg);
+      [this, index, callback, topic](const typename Message::ConstPtr& msg) {
+        barrier_.run(topic, [&] {
+          noteInput(index);
+          (this->*callback)(msg);
+        });
       };
   subscribers_.push_back(nh.subscribe<Message>(topic, 50, handler));
   debugSubscribed(subscribers_.back());
@@ -251,9 +254,11 @@ void LocatorNode::onTimer(const ros::TimerEvent& /*event*/) {
 
 void LocatorNode::publish(const estimation::LocatorEstimate& estimate, const ros::Time& now) {
   // The estimate is stamped with its newest measurement; LOST with the current time.
-  const ros::Time stamp = estimate.status == estimation::TargetStatus::kLost
+  // A stamp ros::Time cannot hold (NaN, negative, past 2^32 s) would throw: it gets now.
+  const bool representable = estimate.stamp >= 0.0 && estimate.stamp < 4294967295.0;
+  const ros::Time stamp = estimate.status == estimation::TargetStatus::kLost || !representable
                               ? now
-                              : ros::Time(std::max(0.0, estimate.stamp));
+                              : ros::Time(estimate.stamp);
   // Always published, LOST included: a controller must hear that the target is gone.
   target_pub_.publish(toMessage(estimate, layout_.fixed_frame, stamp));
   if (target_odom_pub_ && estimate.in_odom && estimate.status != estimation::TargetStatus::kLost) {
@@ -350,6 +355,10 @@ void LocatorNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) 
   status.add("solver failures", s.solver_failures);
   status.add("stale measurements dropped", s.stale_dropped);
   status.add("future-stamped measurements dropped", s.future_dropped);
+  status.add("callback faults", barrier_.faults());
+  if (barrier_.faults() > 0) {
+    status.add("last callback fault", barrier_.lastFault());
+  }
   status.add("non-finite epochs", s.non_finite);
   status.add("ambiguous epochs (mirror test)", s.ambiguous);
   status.add("invalid measurements", s.invalid_measurements);

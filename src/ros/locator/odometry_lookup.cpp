@@ -21,7 +21,8 @@ std::optional<Pose2> odometryPoseAt(const tf2::BufferCore& tf, const std::string
     } catch (const tf2::TransformException&) {
       return std::nullopt;
     }
-    if (std::abs((stamp - t.header.stamp).toSec()) > tolerance) {
+    // Seconds as double: stamps 2^32 s apart overflow ros::Duration (issue 34).
+    if (!(std::abs(stamp.toSec() - t.header.stamp.toSec()) <= tolerance)) {
       return std::nullopt;
     }
   } catch (const tf2::TransformException&) {

@@ -98,12 +98,13 @@ FollowEvaluatorNode::FollowEvaluatorNode(ros::NodeHandle& nh, ros::NodeHandle& p
   }
   metrics_ = evaluation::FollowMetrics(params_.settings);
 
-  odom_sub_ = nh.subscribe<nav_msgs::Odometry>(
+  odom_sub_ = barrier_.subscribe<nav_msgs::Odometry>(nh, 
       "odom", 10, [this](const nav_msgs::OdometryConstPtr& m) { odom_ = m; });
-  truth_sub_ = nh.subscribe<geometry_msgs::PointStamped>(
-      "ground_truth/target", 10, [this](const geometry_msgs::PointStampedConstPtr& m) {
+  truth_sub_ = barrier_.subscribe<geometry_msgs::PointStamped>(
+      nh, "ground_truth/target", 10, [this](const geometry_msgs::PointStampedConstPtr& m) {
         if (truth_) {
-          const double dt = (m->header.stamp - truth_->header.stamp).toSec();
+          // Seconds as double: stamps 2^32 s apart overflow ros::Duration.
+          const double dt = m->header.stamp.toSec() - truth_->header.stamp.toSec();
           if (dt > 0.0) {
             target_speed_ =
                 std::hypot(m->point.x - truth_->point.x, m->point.y - truth_->point.y) / dt;
@@ -111,24 +112,26 @@ FollowEvaluatorNode::FollowEvaluatorNode(ros::NodeHandle& nh, ros::NodeHandle& p
         }
         truth_ = m;
       });
-  relative_sub_ = nh.subscribe<geometry_msgs::PointStamped>(
-      "ground_truth/target_relative", 10, [this](const geometry_msgs::PointStampedConstPtr& m) {
+  relative_sub_ = barrier_.subscribe<geometry_msgs::PointStamped>(
+      nh, "ground_truth/target_relative", 10, [this](const geometry_msgs::PointStampedConstPtr& m) {
         relative_history_.push_back(m);
         while (relative_history_.size() > 1 &&
-               (m->header.stamp - relative_history_.front()->header.stamp).toSec() >
+               m->header.stamp.toSec() - relative_history_.front()->header.stamp.toSec() >
                    kTruthHistory) {
           relative_history_.pop_front();
         }
       });
-  estimate_sub_ = nh.subscribe<TargetEstimate>(
-      "target", 10, [this](const TargetEstimateConstPtr& m) { estimate_ = m; });
-  cmd_sub_ = nh.subscribe<geometry_msgs::Twist>(
-      "cmd_vel", 10, [this](const geometry_msgs::TwistConstPtr& m) { cmd_ = *m; });
+  estimate_sub_ = barrier_.subscribe<TargetEstimate>(
+      nh, "target", 10, [this](const TargetEstimateConstPtr& m) { estimate_ = m; });
+  cmd_sub_ = barrier_.subscribe<geometry_msgs::Twist>(
+      nh, "cmd_vel", 10, [this](const geometry_msgs::TwistConstPtr& m) { cmd_ = *m; });
   report_pub_ = nh.advertise<std_msgs::String>("evaluation/report", 1, true);
-  finished_sub_ = nh.subscribe("ground_truth/finished", 1, &FollowEvaluatorNode::onFinished, this);
-  timer_ = nh.createTimer(ros::Duration(1.0 / params_.rate), &FollowEvaluatorNode::onTick, this);
+  finished_sub_ = barrier_.subscribe(nh, "ground_truth/finished", 1,
+                                     &FollowEvaluatorNode::onFinished, this);
+  timer_ = barrier_.timer(nh, ros::Duration(1.0 / params_.rate), "evaluation tick",
+                          &FollowEvaluatorNode::onTick, this);
   if (!params_.report_dir.empty()) {
-    write_timer_ = nh.createTimer(ros::Duration(params_.write_period),
+    write_timer_ = barrier_.timer(nh, ros::Duration(params_.write_period), "report files",
                                   [this](const ros::TimerEvent&) { writeFiles(); });
   }
 }
@@ -211,13 +214,16 @@ void FollowEvaluatorNode::onTick(const ros::TimerEvent& event) {
       usable && time_.check(estimate_->header.stamp.toSec(), event.current_real.toSec()) ==
                     TimePolicy::Verdict::kFresh;
   if (trusted &&
-      (event.current_real - estimate_->header.stamp).toSec() <= evaluation::kSampleEstimateMaxAge) {
+      event.current_real.toSec() - estimate_->header.stamp.toSec() <=
+          evaluation::kSampleEstimateMaxAge) {
     // Compare with the truth closest to the estimate's stamp.
     const ros::Time stamp = estimate_->header.stamp;
     const auto closest = std::min_element(relative_history_.begin(), relative_history_.end(),
                                           [&stamp](const auto& a, const auto& b) {
-                                            return std::abs((a->header.stamp - stamp).toSec()) <
-                                                   std::abs((b->header.stamp - stamp).toSec());
+                                            return std::abs(a->header.stamp.toSec() -
+                                                            stamp.toSec()) <
+                                                   std::abs(b->header.stamp.toSec() -
+                                                            stamp.toSec());
                                           });
     s.truth_x = (*closest)->point.x;
     s.truth_y = (*closest)->point.y;

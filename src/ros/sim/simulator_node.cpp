@@ -81,13 +81,14 @@ SimulatorNode::SimulatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
     clearance_pub_ = nh.advertise<std_msgs::Float64>("ground_truth/obstacle_clearance", 5);
   }
   finished_pub_ = nh.advertise<std_msgs::Bool>("ground_truth/finished", 1, true);
-  cmd_sub_ = nh.subscribe("cmd_vel", 10, &SimulatorNode::onCmdVel, this);
+  cmd_sub_ = barrier_.subscribe(nh, "cmd_vel", 10, &SimulatorNode::onCmdVel, this);
 
   // On sim time the node owns the clock and runs time_factor x real time; on wall time
   // it runs in real time and stamps from the wall clock.
   const double wall_period = 1.0 / (params_.step_rate * (sim_time_ ? params_.time_factor : 1.0));
   start_ = sim_time_ ? ros::Time(1.0) : ros::Time::now();
-  timer_ = nh.createWallTimer(ros::WallDuration(wall_period), &SimulatorNode::onTick, this);
+  timer_ = barrier_.wallTimer(nh, ros::WallDuration(wall_period), "simulation step",
+                             [this](const ros::WallTimerEvent& event) { onTick(event); });
   ROS_INFO(
       "simulator: scenario '%s' (%.1f s), %zu UWB modules, %zu AoA boards, %zu TDoA anchors, "
       "%s time x%.1f, output %s, %s sensors (hardware seed %llu)",

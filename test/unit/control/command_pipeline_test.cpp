@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,52 @@ TEST(CommandPipelineParams, AcceptsARealModulesBiasAndRefusesATypo) {
       EXPECT_EQ(e.name(), "~layout_file twr_modules[5722].calibration");
     }
   }
+}
+
+// Issue 34, defect 3: the drivers' bounds hold in the safety path. A range no module can
+// report (inf, 1e300, NaN, negative, beyond kMaxUwbRange) stops the robot, never keeps the
+// range watchdog alive, and is named when it is all that arrives.
+TEST(CommandPipeline, ImplausibleRangesStopAndAreNoLiveRanges) {
+  for (const double bad : {std::numeric_limits<double>::infinity(), 1e300, 300.5,
+                           std::numeric_limits<double>::quiet_NaN(), -1.0}) {
+    CommandPipelineParams params;
+    params.safety.watch_ranges = true;
+    CommandPipeline pipeline(params);
+    pipeline.setEnabled(true);
+    pipeline.onRange(0.0, 0.0, "t/5722", "5722", "", 4.0);
+    pipeline.onEstimate(0.0, 0.0, EstimateQuality::kUsable);
+    ASSERT_TRUE(pipeline.check(0.1).may_move) << bad;
+    EXPECT_TRUE(pipeline.onRange(0.2, 0.2, "t/5722", "5722", "", bad)) << bad;
+    EXPECT_FALSE(pipeline.check(0.2).may_move) << bad;
+    // Only implausible ranges from now on, fresh estimates: never moves again.
+    for (double t = 0.3; t < 5.0; t += 0.1) {
+      pipeline.onRange(t, t, "t/5722", "5722", "", bad);
+      pipeline.onEstimate(t, t, EstimateQuality::kUsable);
+      const SafetyDecision d = pipeline.check(t);
+      ASSERT_FALSE(d.may_move) << bad << " at " << t;
+      if (t > 1.5) {
+        EXPECT_EQ(d.reason, StopReason::kImplausibleRange) << bad << " at " << t;
+      }
+    }
+    EXPECT_GT(pipeline.monitor().implausibleRanges(), 40u);
+  }
+}
+
+// A callback that threw (the node's CallbackBarrier) blocks motion for hold_time.
+TEST(CommandPipeline, AFaultBlocksMotionForHoldTime) {
+  CommandPipelineParams params;
+  params.safety.watch_ranges = false;
+  CommandPipeline pipeline(params);
+  pipeline.setEnabled(true);
+  pipeline.onEstimate(0.0, 0.0, EstimateQuality::kUsable);
+  ASSERT_TRUE(pipeline.check(0.05).may_move);
+  pipeline.onFault(0.1);
+  pipeline.onEstimate(0.2, 0.2, EstimateQuality::kUsable);
+  const SafetyDecision d = pipeline.check(0.2);
+  EXPECT_FALSE(d.may_move);
+  EXPECT_EQ(d.reason, StopReason::kInternalFault);
+  pipeline.onEstimate(1.15, 1.15, EstimateQuality::kUsable);
+  EXPECT_TRUE(pipeline.check(1.15).may_move);  // hold_time 1 s after the fault
 }
 
 }  // namespace

@@ -29,12 +29,61 @@ TEST(FollowerState, NamesAreTheMessageConstantsInLowerCase) {
   EXPECT_STREQ(toString(static_cast<FollowerState>(200)), "unknown");
 }
 
-TEST(StatusTracker, ReportsOnlyChanges) {
+TEST(StatusTracker, AnnouncesTheFirstAndDisabledAtOnceOthersOnceSettled) {
   StatusTracker tracker;
-  EXPECT_TRUE(tracker.update(FollowerState::kDisabled, "a"));
-  EXPECT_FALSE(tracker.update(FollowerState::kDisabled, "a"));
-  EXPECT_TRUE(tracker.update(FollowerState::kDisabled, "b"));
-  EXPECT_TRUE(tracker.update(FollowerState::kFollowing, "b"));
+  EXPECT_TRUE(tracker.update(FollowerState::kDisabled, "a", 0.0));
+  EXPECT_FALSE(tracker.update(FollowerState::kDisabled, "a", 0.1));
+  EXPECT_TRUE(tracker.update(FollowerState::kDisabled, "b", 0.2));  // an operator's command
+  EXPECT_FALSE(tracker.update(FollowerState::kFollowing, "f", 1.0));
+  EXPECT_FALSE(tracker.update(FollowerState::kFollowing, "f", 1.0 + kStatusSettleTime / 2));
+  EXPECT_TRUE(tracker.update(FollowerState::kFollowing, "f", 1.0 + kStatusSettleTime));
+  EXPECT_FALSE(tracker.update(FollowerState::kFollowing, "f", 3.0));
+}
+
+// A state held for less than kStatusSettleTime is never announced.
+TEST(StatusTracker, ShortStatesAreNotAnnounced) {
+  StatusTracker tracker;
+  EXPECT_TRUE(tracker.update(FollowerState::kFollowing, "f", 0.0));
+  EXPECT_FALSE(tracker.update(FollowerState::kTooClose, "close", 1.0));
+  EXPECT_FALSE(tracker.update(FollowerState::kFollowing, "f", 1.0 + kStatusSettleTime / 2));
+  EXPECT_FALSE(tracker.update(FollowerState::kFollowing, "f", 5.0));
+}
+
+// Issue 34: steady future-stamped ranges flipped the text between two stop reasons of one
+// state at 20 Hz and the announcer spoke both in turn. Now: the state once, when it has
+// held, and no text that never holds.
+TEST(StatusTracker, FlappingTextsOfOneStateAreAnnouncedOnce) {
+  StatusTracker tracker;
+  EXPECT_TRUE(tracker.update(FollowerState::kFollowing, "Following.", 0.0));
+  int announced = 0;
+  for (int tick = 0; tick < 40; ++tick) {  // 2 s at 20 Hz
+    const bool clock = tick % 2 == 0;
+    announced += tracker.update(FollowerState::kTargetLost, clock ? "Clock mismatch" : "No range",
+                                1.0 + 0.05 * tick);
+  }
+  EXPECT_EQ(announced, 1);
+}
+
+// States that flap faster than the settle time are still told: the one current when the
+// announced state has not been current for kStatusSettleTime, and then it stays.
+TEST(StatusTracker, FlappingStatesAreToldNotHidden) {
+  StatusTracker tracker;
+  EXPECT_TRUE(tracker.update(FollowerState::kFollowing, "Following.", 0.0));
+  int announced = 0;
+  for (int tick = 0; tick < 40; ++tick) {
+    const bool close = tick % 2 == 0;
+    announced += tracker.update(close ? FollowerState::kTooClose : FollowerState::kTargetLost,
+                                close ? "Too close" : "Lost", 1.0 + 0.05 * tick);
+  }
+  EXPECT_EQ(announced, 1);
+}
+
+TEST(StatusTracker, ClockJumpBackRestartsTheSpans) {
+  StatusTracker tracker;
+  EXPECT_TRUE(tracker.update(FollowerState::kFollowing, "f", 100.0));
+  EXPECT_FALSE(tracker.update(FollowerState::kTargetLost, "lost", 101.0));
+  EXPECT_FALSE(tracker.update(FollowerState::kTargetLost, "lost", 1.0));  // jumped back
+  EXPECT_TRUE(tracker.update(FollowerState::kTargetLost, "lost", 1.0 + kStatusSettleTime));
 }
 
 TEST(AnnouncementQueue, OneAtATimeInOrder) {

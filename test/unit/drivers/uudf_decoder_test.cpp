@@ -115,8 +115,6 @@ TEST(UudfDecoder, RejectsImplausibleValuesAndRecovers) {
       {thesisWith(2, "200"), "azimuth 200 deg"},
       {thesisWith(3, "95"), "elevation 95 deg"},
       {thesisWith(3, "-180"), "elevation -180 deg"},
-      {thesisWith(4, "-300"), "second RSSI -300 dBm"},
-      {thesisWith(4, "12"), "positive second RSSI"},
   };
   UudfEvent e;
   for (const auto& [line, what] : implausible) {
@@ -126,6 +124,30 @@ TEST(UudfDecoder, RejectsImplausibleValuesAndRecovers) {
     EXPECT_DOUBLE_EQ(e.rssi, -42.0);
   }
   EXPECT_STREQ(toString(UudfLineStatus::kImplausible), "implausible value");
+}
+
+// The fifth field (reserved on older firmware, the second polarisation's RSSI on newer)
+// decides nothing but rssi_second: real boards send small positive values in it (issue 34:
+// 6 was seen and the whole bearing was lost).
+TEST(UudfDecoder, FifthFieldDecidesOnlyTheSecondRssi) {
+  const std::vector<std::pair<std::string, std::string>> not_rssi = {
+      {"6", "small positive value (seen on a real board)"},
+      {"12", "positive value"},
+      {"-300", "below -127 dBm"},
+      {"-1" + std::string(154, '0'), "-1e154 as plain digits"},
+      {"nan", "not a number"},
+      {"x", "text"},
+      {"", "empty"},
+  };
+  UudfEvent e;
+  for (const auto& [value, what] : not_rssi) {
+    ASSERT_EQ(decodeUudfLine(thesisWith(4, value), e), UudfLineStatus::kEvent) << what;
+    EXPECT_TRUE(std::isnan(e.rssi_second)) << what;
+    EXPECT_DOUBLE_EQ(e.azimuth, deg2rad(20.0)) << what;
+    EXPECT_DOUBLE_EQ(e.rssi, -42.0) << what;
+  }
+  ASSERT_EQ(decodeUudfLine(thesisWith(4, "-61"), e), UudfLineStatus::kEvent);
+  EXPECT_DOUBLE_EQ(e.rssi_second, -61.0);
 }
 
 TEST(UudfDecoder, AcceptsValuesAtThePlausibilityBounds) {

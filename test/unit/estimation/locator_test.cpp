@@ -8,6 +8,7 @@
 
 #include "../../support/true_ranges.hpp"
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/common/plausibility.hpp"
 
 namespace radio_follow {
 namespace estimation {
@@ -80,7 +81,7 @@ TEST(Locator, ClockJumpBackStartsOver) {
 TEST(Locator, ImplausibleRangesAreRefused) {
   Locator locator(layoutFile("spot_twr.yaml"), test::solverBackend());
   EXPECT_FALSE(locator.addRange("5722", 1e154, 0.0));  // a long plain number from a device
-  EXPECT_FALSE(locator.addRange("5722", kMaxPlausibleRange + 1.0, 0.0));
+  EXPECT_FALSE(locator.addRange("5722", kMaxUwbRange + 1.0, 0.0));
   EXPECT_EQ(locator.stats().invalid_measurements, 2u);
 }
 

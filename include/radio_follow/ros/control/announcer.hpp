@@ -12,6 +12,7 @@
 #include "radio_follow/control/announcement_queue.hpp"
 #include "radio_follow/control/fault_speech.hpp"
 #include "radio_follow/ros/common/params.hpp"
+#include "radio_follow/ros/common/callback_barrier.hpp"
 
 namespace radio_follow {
 
@@ -54,6 +55,7 @@ class AnnouncerNode {
   control::FaultSpeech faults_;
   std::string executable_;  // resolved path, empty when not installed
   pid_t child_ = -1;
+  CallbackBarrier barrier_;  // every subscriber and the timer run inside it
   std::vector<ros::Subscriber> subs_;
   ros::Timer timer_;
 };

@@ -8,6 +8,7 @@
 #include <std_msgs/Bool.h>
 #include <std_srvs/SetBool.h>
 
+#include <atomic>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -19,6 +20,7 @@
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/control/command_pipeline.hpp"
 #include "radio_follow/control/follower_state.hpp"
+#include "radio_follow/ros/common/callback_barrier.hpp"
 #include "radio_follow/ros/common/output_diagnostic.hpp"
 #include "radio_follow/ros/common/params.hpp"
 #include "radio_follow/ros/common/wiring_debug.hpp"
@@ -62,6 +64,9 @@ struct ControllerCommonParams : control::CommandPipelineParams {
 class ControllerBase {
  public:
   virtual ~ControllerBase();
+  /// The process is dying (runNode's fatal handlers): sends zero cmd_vel without taking
+  /// any lock, so that the robot is not left on its last command.
+  void lastWords(const char* reason);
   ControllerBase(const ControllerBase&) = delete;
   ControllerBase& operator=(const ControllerBase&) = delete;
 
@@ -98,6 +103,10 @@ class ControllerBase {
 
   const ControllerCommonParams& common() const { return common_; }
 
+  /// Every subscriber and timer of a controller goes through it: a callback that throws
+  /// stops the robot for hold_time (StopReason::kInternalFault) and the node goes on.
+  CallbackBarrier barrier_;
+
   /// Nearest fresh (calibrated) module range minus safe_distance at `now`, m; +inf when
   /// ranges are not watched or none is fresh (the safety layer stops the robot then).
   double moduleGap(const ros::Time& now) const;
@@ -123,6 +132,10 @@ class ControllerBase {
   void publishCommand(const control::VelocityCommand& cmd);
   void publishStatus(control::FollowerState state, const std::string& text);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
+  /// A respawned controller comes back disabled: true when a previous instance of this
+  /// node left its running marker (it did not stop cleanly). Sets the marker.
+  bool markRunning();
+  void clearRunningMarker();
 
   ParamReader params_in_;
   /// Guards what the safety thread (range callbacks) and the main thread share: the
@@ -155,6 +168,7 @@ class ControllerBase {
   /// Live tuning of common_ (controller_reconfigure.hpp).
   std::unique_ptr<ReconfigureServer<ControllerTuningConfig, ControllerCommonParams>> reconfigure_;
   bool shutting_down_ = false;
+  std::atomic<bool> dying_{false};  ///< set by lastWords, on whichever thread dies
 };
 
 }  // namespace radio_follow

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "radio_follow/drivers/driver_stats.hpp"
+#include "radio_follow/ros/common/callback_barrier.hpp"
 
 namespace radio_follow {
 
@@ -37,6 +38,7 @@ class DriverDiagnostics {
   double silence_timeout_;
   Extra extra_;
   diagnostic_updater::Updater updater_;
+  CallbackBarrier barrier_;
   ros::Timer timer_;
   drivers::DriverStatsSnapshot previous_;
   double previous_time_ = 0.0;

@@ -16,6 +16,7 @@
 #include "radio_follow/drivers/line_driver.hpp"
 #include "radio_follow/drivers/serial_line_params.hpp"
 #include "radio_follow/drivers/serial_transport.hpp"
+#include "radio_follow/ros/common/callback_barrier.hpp"
 #include "radio_follow/ros/common/output_diagnostic.hpp"
 #include "radio_follow/ros/drivers/driver_diagnostics.hpp"
 
@@ -79,6 +80,10 @@ class SerialLineDriver {
   /// Connected, and nothing received for longer than silence_timeout.
   bool silent(double now) const;
 
+  /// The I/O thread's, the delivery thread's and the node's timers' callbacks run inside
+  /// it: an exception is logged and counted, the stream goes on.
+  CallbackBarrier barrier_;
+
   /// Guards the line state: the framer and whatever the hooks keep.
   std::mutex& mutex() { return mutex_; }
   const std::string& port() const { return options_.port; }
@@ -111,8 +116,10 @@ class QueuedSerialLineDriver : public SerialLineDriver {
                          const std::string& hardware_id, std::size_t queue_depth)
       : SerialLineDriver(nh, private_nh, params, name, hardware_id),
         queue_(queue_depth, [this](Item& item) {
-          publish(item);
-          published();
+          barrier_.run("publish", [&] {
+            publish(item);
+            published();
+          });
         }) {}
 
   /// Publishes one item (delivery thread).

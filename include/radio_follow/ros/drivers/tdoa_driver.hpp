@@ -16,6 +16,7 @@
 #include "radio_follow/drivers/delivery_queue.hpp"
 #include "radio_follow/drivers/tdoa_receiver.hpp"
 #include "radio_follow/drivers/tdoa_udp_transport.hpp"
+#include "radio_follow/ros/common/callback_barrier.hpp"
 #include "radio_follow/ros/common/output_diagnostic.hpp"
 #include "radio_follow/ros/common/params.hpp"
 
@@ -62,6 +63,7 @@ class TdoaDriverNode {
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
 
   Params params_;
+  CallbackBarrier barrier_;  // the I/O, delivery and timer callbacks run inside it
   std::mutex mutex_;  // guards receiver_, blinks_, last_datagram_, rate counters
   std::unique_ptr<drivers::TdoaReceiver> receiver_;
   std::vector<drivers::TdoaBlink> blinks_;

@@ -20,6 +20,7 @@
 #include "radio_follow/UwbRanges.h"
 #include "radio_follow/common/input_watch.hpp"
 #include "radio_follow/estimation/locator.hpp"
+#include "radio_follow/ros/common/callback_barrier.hpp"
 #include "radio_follow/ros/common/output_diagnostic.hpp"
 #include "radio_follow/ros/common/params.hpp"
 #include "radio_follow/ros/locator/locator_inputs.hpp"
@@ -87,6 +88,9 @@ class LocatorNode {
   std::unique_ptr<estimation::Locator> locator_;
   std::unique_ptr<LocatorInputs> inputs_;
   std::unique_ptr<LocatorReconfigure> reconfigure_;  ///< live tuning, after the params load
+  /// Every subscriber and the update timer run inside it: a message that makes a
+  /// callback throw is logged, counted in diagnostics and dropped; the node goes on.
+  CallbackBarrier barrier_;
   std::vector<ros::Subscriber> subscribers_;
   ros::Publisher target_pub_;
   ros::Publisher target_odom_pub_;

@@ -13,6 +13,7 @@
 
 #include "radio_follow/common/time_policy.hpp"
 #include "radio_follow/evaluation/follow_metrics.hpp"
+#include "radio_follow/ros/common/callback_barrier.hpp"
 
 namespace radio_follow {
 
@@ -51,6 +52,7 @@ class FollowEvaluatorNode {
   Params params_;
   evaluation::FollowMetrics metrics_;
   TimePolicy time_;
+  CallbackBarrier barrier_;  // every subscriber and timer runs inside it
   ros::Subscriber odom_sub_, truth_sub_, relative_sub_, estimate_sub_, cmd_sub_;
   ros::Timer timer_;
   ros::Timer write_timer_;

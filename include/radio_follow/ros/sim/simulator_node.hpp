@@ -15,6 +15,7 @@
 #include "radio_follow/sim/obstacles.hpp"
 #include "radio_follow/sim/serial_devices.hpp"
 #include "radio_follow/sim/world.hpp"
+#include "radio_follow/ros/common/callback_barrier.hpp"
 
 namespace radio_follow {
 
@@ -64,6 +65,7 @@ class SimulatorNode {
   bool sim_time_ = false;
   ros::Time start_;
 
+  CallbackBarrier barrier_;  // the subscriber and the step timer run inside it
   ros::Subscriber cmd_sub_;
   std::vector<ros::Publisher> range_pubs_;
   std::vector<ros::Publisher> bearing_pubs_;

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-namespace radio_follow::drivers {
+namespace radio_follow {
 
 /// Physical limits of what the radio devices can report. A decoded value outside them is
 /// not a measurement but a corrupted or misbehaving device (the parsers accept any finite
@@ -81,4 +81,4 @@ inline bool plausibleVariance(double variance) {
   return std::isfinite(variance) && variance > 0.0;
 }
 
-}  // namespace radio_follow::drivers
+}  // namespace radio_follow
