@@ -70,7 +70,7 @@ ControllerBase::ControllerBase(ros::NodeHandle& nh, ros::NodeHandle& private_nh,
         }
         allowTuning<ControllerTuningConfig>(params_in_);
         params_in_.own("law");  // the follow law's live-tuning server (doc/live_tuning.md)
-        params_in_.own(kRunningMarker);  // set by the node itself (markRunning)
+        params_in_.allow(kRunningMarker);  // set by the node itself (markRunning)
         p.load(params_in_);
         p.safety.watch_ranges = !p.range_topics.empty();
         p.validate();
