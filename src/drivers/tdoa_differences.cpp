@@ -29,8 +29,7 @@ void TdoaDifferenceConfig::validate() const {
     require(addresses.insert(anchors[i].address).second, name + ".address", anchors[i].address,
             "a unique address");
     const Eigen::Vector3d& p = anchors[i].position;
-    require(plausibleCoordinate(p.x()) && plausibleCoordinate(p.y()) &&
-                plausibleCoordinate(p.z()),
+    require(plausibleCoordinate(p.x()) && plausibleCoordinate(p.y()) && plausibleCoordinate(p.z()),
             name + ".position",
             std::to_string(p.x()) + ", " + std::to_string(p.y()) + ", " + std::to_string(p.z()),
             "three finite coordinates within 10 km, m");

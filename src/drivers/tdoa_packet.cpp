@@ -164,8 +164,7 @@ TdoaDecodeError decodeTdoaPacket(const std::uint8_t* data, std::size_t size, Tdo
     return TdoaDecodeError::kLengthMismatch;
   }
   // Values are judged once the structure is known to be whole.
-  if (r.has_quality &&
-      !(plausibleRssi(r.rssi_dbm) && plausibleRssi(r.first_path_dbm))) {
+  if (r.has_quality && !(plausibleRssi(r.rssi_dbm) && plausibleRssi(r.first_path_dbm))) {
     return TdoaDecodeError::kImplausible;
   }
   return TdoaDecodeError::kOk;

@@ -235,8 +235,8 @@ bool Locator::addTdoaCalibration(const std::string& module_id, const std::string
   const std::optional<std::size_t> module = tdoa_calibration_.moduleOf(module_id);
   if (a == nullptr || b == nullptr || !module || !plausibleDistanceDifference(difference) ||
       !tdoa_calibration_.add(*module, static_cast<std::size_t>(a - layout_.tdoa_anchors.data()),
-                             static_cast<std::size_t>(b - layout_.tdoa_anchors.data()),
-                             difference, t)) {
+                             static_cast<std::size_t>(b - layout_.tdoa_anchors.data()), difference,
+                             t)) {
     ++stats_.invalid_measurements;
     return false;
   }

@@ -15,8 +15,6 @@
 #include <thread>
 
 #include "controller_test_utils.hpp"
-#include "radio_follow/TargetEstimate.h"
-#include "radio_follow/UwbRanges.h"
 
 namespace {
 
@@ -46,7 +44,8 @@ int pidOf(const std::string& node) {
   XmlRpc::XmlRpcValue pid_args;
   XmlRpc::XmlRpcValue pid_result;
   pid_args[0] = ros::this_node::getName();
-  if (!client.execute("getPid", pid_args, pid_result) || pid_result.getType() != XmlRpc::XmlRpcValue::TypeArray ||
+  if (!client.execute("getPid", pid_args, pid_result) ||
+      pid_result.getType() != XmlRpc::XmlRpcValue::TypeArray ||
       static_cast<int>(pid_result[0]) != 1) {
     return 0;
   }
@@ -63,20 +62,9 @@ class Feeder {
 
  private:
   void tick(const ros::WallTimerEvent&) {
-    radio_follow::TargetEstimate e;
-    e.header.stamp = ros::Time::now();
-    e.header.frame_id = "base_link";
-    e.position.x = 4.0;
-    e.range = 4.0;
-    e.status = radio_follow::TargetEstimate::STATUS_OK;
-    estimate_pub_.publish(e);
-    radio_follow::UwbRanges r;
-    r.header.stamp = e.header.stamp;
-    r.tag_id = "5722";
-    r.ranges.resize(1);
-    r.ranges[0].anchor_id = "ABCD";
-    r.ranges[0].range = 4.0;
-    range_pub_.publish(r);
+    const ros::Time now = ros::Time::now();
+    estimate_pub_.publish(radio_follow_test::aheadEstimate(now));
+    range_pub_.publish(radio_follow_test::anchorRange(now));
   }
 
   ros::Publisher estimate_pub_;

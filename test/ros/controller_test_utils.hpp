@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "radio_follow/FollowerStatus.h"
+#include "radio_follow/TargetEstimate.h"
+#include "radio_follow/UwbRanges.h"
 
 namespace radio_follow_test {
 
@@ -77,6 +79,28 @@ inline bool waitFor(const std::function<bool()>& condition, double timeout) {
     ros::WallDuration(0.02).sleep();
   }
   return condition();
+}
+
+/// An OK estimate of a target `distance` m straight ahead in base_link, stamped `stamp`.
+inline radio_follow::TargetEstimate aheadEstimate(const ros::Time& stamp, double distance = 4.0) {
+  radio_follow::TargetEstimate e;
+  e.header.stamp = stamp;
+  e.header.frame_id = "base_link";
+  e.position.x = distance;
+  e.range = distance;
+  e.status = radio_follow::TargetEstimate::STATUS_OK;
+  return e;
+}
+
+/// A raw range of module 5722 to the tests' target anchor ABCD.
+inline radio_follow::UwbRanges anchorRange(const ros::Time& stamp, double range = 4.0) {
+  radio_follow::UwbRanges r;
+  r.header.stamp = stamp;
+  r.tag_id = "5722";
+  r.ranges.resize(1);
+  r.ranges[0].anchor_id = "ABCD";
+  r.ranges[0].range = range;
+  return r;
 }
 
 inline bool isZero(const geometry_msgs::Twist& t) {

@@ -8,6 +8,7 @@
 #include <nav_msgs/Path.h>
 #include <ros/ros.h>
 #include <rosgraph_msgs/Log.h>
+#include <tf2_ros/transform_broadcaster.h>
 #include <tf2_ros/transform_listener.h>
 #include <visualization_msgs/MarkerArray.h>
 
@@ -21,6 +22,7 @@
 #include <mutex>
 #include <thread>
 
+#include "controller_test_utils.hpp"
 #include "radio_follow/AoaBearing.h"
 #include "radio_follow/TargetEstimate.h"
 #include "radio_follow/UwbRanges.h"
@@ -185,27 +187,15 @@ TEST(Locator, EstimatesTheTargetAndIgnoresTheBoardBehind) {
   EXPECT_NEAR(std::atan2(mean.y(), mean.x()), std::atan2(kTruth.y(), kTruth.x()), 0.03);
 }
 
-/// Polls `condition` on wall time until it holds or `timeout` s pass: under load a
-/// message may arrive any time later than its sibling on another connection.
-bool eventually(const std::function<bool()>& condition, double timeout) {
-  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(timeout);
-  while (ros::ok() && ros::WallTime::now() < end) {
-    if (condition()) {
-      return true;
-    }
-    ros::WallDuration(0.02).sleep();
-  }
-  return condition();
-}
-
 // The pose and the TF carry the estimate itself: the same stamp, the same numbers.
 // Nothing here waits a fixed time: on a loaded machine (issue 34: 2 failures in 19 runs)
-// the log's connection and each message may come late, so every wait polls with a bound.
+// the log's connection and each message may come late, so every wait polls with a bound
+// (waitFor).
 TEST(Locator, PublishesPoseAndTf) {
   ros::NodeHandle nh;
   const EstimateLog log;
   // Connected before the pose it is compared with: the log holds estimates.
-  ASSERT_TRUE(eventually([&] { return !log.get().empty(); }, 20.0));
+  ASSERT_TRUE(radio_follow_test::waitFor([&] { return !log.get().empty(); }, 20.0));
   const auto pose = ros::topic::waitForMessage<geometry_msgs::PoseWithCovarianceStamped>(
       "target_pose", nh, ros::Duration(5.0));
   ASSERT_TRUE(pose);
@@ -218,13 +208,13 @@ TEST(Locator, PublishesPoseAndTf) {
       << error;
   const auto t = buffer.lookupTransform("base_link", "target", ros::Time(0));
   const auto& p = pose->pose.pose.position;
-  EXPECT_TRUE(eventually(
+  EXPECT_TRUE(radio_follow_test::waitFor(
       [&] { return published(log.get(), pose->header.stamp, p.x, p.y, p.z); }, 10.0))
       << "no estimate stamped " << pose->header.stamp << " at (" << p.x << ", " << p.y << ", "
       << p.z << ")";
   const auto& v = t.transform.translation;
-  EXPECT_TRUE(
-      eventually([&] { return published(log.get(), t.header.stamp, v.x, v.y, v.z); }, 10.0))
+  EXPECT_TRUE(radio_follow_test::waitFor(
+      [&] { return published(log.get(), t.header.stamp, v.x, v.y, v.z); }, 10.0))
       << "no estimate stamped " << t.header.stamp << " at (" << v.x << ", " << v.y << ", " << v.z
       << ")";
   EXPECT_NEAR(v.x, kTruth.x(), 3.0 * kTolerance);  // and it is the target
@@ -345,8 +335,21 @@ TEST(Locator, DiagnosticsNameTheSilentInputAndTheHardware) {
 TEST(Locator, ARangeStampedAtTheEndOfTimeIsDroppedAndTrackingGoesOn) {
   ASSERT_TRUE(waitForStatus(radio_follow::TargetEstimate::STATUS_OK, 30.0));
   ros::NodeHandle nh;
+  // Odometry, as on a robot: the locator places each measurement with TF at its stamp,
+  // and tf2's "extrapolation into the future" text for 2^32-1 s is what overflowed.
+  tf2_ros::TransformBroadcaster odometry;
+  const ros::WallTimer odometry_timer =
+      nh.createWallTimer(ros::WallDuration(0.02), [&](const ros::WallTimerEvent&) {
+        geometry_msgs::TransformStamped t;
+        t.header.stamp = ros::Time::now();
+        t.header.frame_id = "odom";
+        t.child_frame_id = "base_link";
+        t.transform.rotation.w = 1.0;
+        odometry.sendTransform(t);
+      });
+  ros::WallDuration(1.0).sleep();  // the locator has odometry
   ros::Publisher uwb = nh.advertise<radio_follow::UwbRanges>("uwb/ranges", 10);
-  ASSERT_TRUE(eventually([&] { return uwb.getNumSubscribers() > 0; }, 10.0));
+  ASSERT_TRUE(radio_follow_test::waitFor([&] { return uwb.getNumSubscribers() > 0; }, 10.0));
   std::string layout_file;
   ros::param::get("/locator/layout_file", layout_file);
   const radio_follow::Layout layout = radio_follow::loadLayoutFile(layout_file);

@@ -135,7 +135,9 @@ TEST(PathFollower, StoresPathFollowsAndFallsBack) {
       [&] { return rec.lastStatus().text == "No odometry, driving straight to the target."; },
       10.0))
       << "last status: " << rec.lastStatus().text;
-  EXPECT_EQ(rec.lastStatus().state, FollowerStatus::STATE_FOLLOWING);
+  EXPECT_TRUE(
+      waitFor([&] { return rec.lastStatus().state == FollowerStatus::STATE_FOLLOWING; }, 2.0))
+      << "status " << int(rec.lastStatus().state);  // announced once settled (kStatusSettleTime)
 }
 
 }  // namespace

@@ -82,7 +82,9 @@ TEST(VelocityController, SafetyLayerAroundFollowing) {
   Feeder feeder(nh);
 
   ASSERT_TRUE(waitFor([&] { return rec.hasStatus() && rec.cmdCount() > 0; }, 20.0));
-  EXPECT_EQ(rec.lastStatus().state, FollowerStatus::STATE_DISABLED);
+  EXPECT_TRUE(
+      waitFor([&] { return rec.lastStatus().state == FollowerStatus::STATE_DISABLED; }, 2.0))
+      << "status " << int(rec.lastStatus().state);  // announced once settled (kStatusSettleTime)
   EXPECT_TRUE(isZero(rec.lastCmd()));
 
   ros::ServiceClient enable =
@@ -95,7 +97,9 @@ TEST(VelocityController, SafetyLayerAroundFollowing) {
 
   ASSERT_TRUE(waitFor([&] { return rec.lastCmd().linear.x > 0.2; }, 10.0))
       << "no forward command while enabled with a far target";
-  EXPECT_EQ(rec.lastStatus().state, FollowerStatus::STATE_FOLLOWING);
+  EXPECT_TRUE(
+      waitFor([&] { return rec.lastStatus().state == FollowerStatus::STATE_FOLLOWING; }, 2.0))
+      << "status " << int(rec.lastStatus().state);  // announced once settled (kStatusSettleTime)
   // Acceleration limit: the speed builds up gradually, never a jump to the maximum.
   EXPECT_LE(rec.cmdsSince(0).front().linear.x, 0.1);
 
@@ -115,7 +119,9 @@ TEST(VelocityController, SafetyLayerAroundFollowing) {
 
   feeder.range = 4.0;
   ASSERT_TRUE(waitFor([&] { return rec.lastCmd().linear.x > 0.05; }, 10.0));
-  EXPECT_EQ(rec.lastStatus().state, FollowerStatus::STATE_FOLLOWING);
+  EXPECT_TRUE(
+      waitFor([&] { return rec.lastStatus().state == FollowerStatus::STATE_FOLLOWING; }, 2.0))
+      << "status " << int(rec.lastStatus().state);  // announced once settled (kStatusSettleTime)
 
   // No estimates: stale -> target lost, zero.
   feeder.send_estimates = false;

@@ -92,8 +92,8 @@ class StatusTracker {
   bool has_current_ = false;
   FollowerState current_state_ = FollowerState::kDisabled;
   std::string current_text_;
-  double state_since_ = 0.0;      ///< the current state holds since
-  double text_since_ = 0.0;       ///< the current text holds since
+  double state_since_ = 0.0;         ///< the current state holds since
+  double text_since_ = 0.0;          ///< the current text holds since
   double contradicted_since_ = 0.0;  ///< the announced state is not current since
   bool contradicted_ = false;
 };

@@ -72,8 +72,8 @@ AnnouncerNode::AnnouncerNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
     subs_.push_back(barrier_.subscribe(nh, topic, 10, &AnnouncerNode::onStatus, this));
   }
   if (!params_.diagnostics_topic.empty()) {
-    subs_.push_back(barrier_.subscribe(nh, params_.diagnostics_topic, 10,
-                                       &AnnouncerNode::onDiagnostics, this));
+    subs_.push_back(
+        barrier_.subscribe(nh, params_.diagnostics_topic, 10, &AnnouncerNode::onDiagnostics, this));
   }
   timer_ = barrier_.timer(nh, ros::Duration(0.1), "speech", &AnnouncerNode::onTimer, this);
 }

@@ -10,8 +10,8 @@
 
 #include "radio_follow/FollowerStatus.h"
 #include "radio_follow/common/param_error.hpp"
-#include "radio_follow/common/plausibility.hpp"
 #include "radio_follow/common/param_keys.hpp"
+#include "radio_follow/common/plausibility.hpp"
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/ros/common/params.hpp"
 #include "radio_follow/ros/common/wiring_debug.hpp"
@@ -183,9 +183,9 @@ void ControllerBase::start() {
                           &ControllerBase::onTick, this);
   // The stop request is watched on wall time: on simulated time the clock may already
   // have stopped (its publisher shut down first) and a sim-time timer would never fire.
-  stop_check_timer_ = barrier_.wallTimer(
-      nh_, ros::WallDuration(0.05), "stop check",
-      [this](const ros::WallTimerEvent& event) { onStopCheck(event); });
+  stop_check_timer_ =
+      barrier_.wallTimer(nh_, ros::WallDuration(0.05), "stop check",
+                         [this](const ros::WallTimerEvent& event) { onStopCheck(event); });
 }
 
 bool ControllerBase::noteEstimate(const ros::Time& stamp, control::EstimateQuality quality) {
@@ -229,7 +229,8 @@ void ControllerBase::onRanges(const std::string& topic, const UwbRanges::ConstPt
   // thread at the next tick, which sees the same verdict.
   const bool implausible = pipeline_.monitor().implausibleRanges() != implausible_before;
   if (implausible) {
-    ROS_WARN_THROTTLE(2.0, "%s: range on %s that no module can report (non-finite, negative or "
+    ROS_WARN_THROTTLE(2.0,
+                      "%s: range on %s that no module can report (non-finite, negative or "
                       "beyond %.0f m) refused; stopping",
                       ros::this_node::getName().c_str(), topic.c_str(), kMaxUwbRange);
   }

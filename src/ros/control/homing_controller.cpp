@@ -31,13 +31,12 @@ HomingControllerNode::HomingControllerNode(ros::NodeHandle& nh, ros::NodeHandle&
   requireKnownParams();
   goal_pub_ = private_nh_.advertise<geometry_msgs::PoseStamped>("goal", 1, true);
   odom_sub_ = barrier_.subscribe(nh_, "odom", 10, &HomingControllerNode::onOdom, this);
-  bearing_sub_ =
-      barrier_.subscribe(nh_, "aoa_bearing", 20, &HomingControllerNode::onBearing, this);
+  bearing_sub_ = barrier_.subscribe(nh_, "aoa_bearing", 20, &HomingControllerNode::onBearing, this);
   debugSubscribed(odom_sub_);
   debugSubscribed(bearing_sub_);
   if (law_.params().usesUwb()) {
     distance_sub_ = barrier_.subscribe(nh_, params_.distance_range_topic, 10,
-                                  &HomingControllerNode::onDistanceRanges, this);
+                                       &HomingControllerNode::onDistanceRanges, this);
   }
   start();
 }

@@ -23,7 +23,8 @@ constexpr double kMaxBlinkRate = 100.0;
 
 TdoaDriverNode::TdoaDriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh) {
   params_ = loadStrict<Params>(private_nh);
-  receiver_ = std::make_unique<drivers::TdoaReceiver>(params_.differenceConfig(), params_.group_window);
+  receiver_ =
+      std::make_unique<drivers::TdoaReceiver>(params_.differenceConfig(), params_.group_window);
 
   pub_ = nh.advertise<TdoaMeasurements>("measurements", kQueueDepth);
   queue_ = std::make_unique<drivers::DeliveryQueue<TdoaMeasurements>>(
@@ -86,8 +87,9 @@ void TdoaDriverNode::onDatagram(const std::uint8_t* data, std::size_t size) {
     last_logged_rejections_ = stats.rejected();
     // One line per 5 s at most, however many packets are bad.
     ROS_WARN_THROTTLE(5.0, "tdoa_driver: dropped a datagram (%s); %llu of %llu dropped so far",
-                      error == drivers::TdoaDecodeError::kOk ? "unknown anchor, missing TLV or duplicate"
-                                                    : toString(error),
+                      error == drivers::TdoaDecodeError::kOk
+                          ? "unknown anchor, missing TLV or duplicate"
+                          : toString(error),
                       static_cast<unsigned long long>(stats.rejected()),
                       static_cast<unsigned long long>(stats.packets));
   }

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/ros/locator/locator_inputs.hpp"
 
+#include <cmath>
+
 #include "radio_follow/common/param_keys.hpp"
-#include "radio_follow/common/time_policy.hpp"
 
 namespace radio_follow {
 
@@ -11,14 +12,13 @@ bool LocatorInputs::poseFor(const ros::Time& stamp, std::optional<Pose2>* pose) 
   if (!lookup_) {
     return true;
   }
-  // TF is asked only about stamps the locator can use. One it drops anyway by its stamp
-  // (older than max_age, from the future; counted there) would only make tf2 write an
-  // error text, and for a stamp 2^32 s away that text overflows ros::Duration (issue 34).
+  // A stamp further than kTfHorizon from the receiver's clock has no transform in any TF
+  // buffer (tf2 keeps 10 s): the lookup's answer is known, nothing, and asking tf2 about a
+  // stamp 2^32 s away overflows ros::Duration in its error text (issue 34).
   const double age = clock_() - stamp.toSec();
-  if (!(age <= locator_.config().max_age && age >= -kFutureStampTolerance)) {
-    return true;
+  if (std::abs(age) <= kTfHorizon) {
+    *pose = lookup_(stamp);
   }
-  *pose = lookup_(stamp);
   const auto decision = placement_.decide(*pose, clock_());
   if (decision == estimation::OdometryPlacement::Decision::kRobotFrame) {
     pose->reset();

@@ -98,8 +98,8 @@ FollowEvaluatorNode::FollowEvaluatorNode(ros::NodeHandle& nh, ros::NodeHandle& p
   }
   metrics_ = evaluation::FollowMetrics(params_.settings);
 
-  odom_sub_ = barrier_.subscribe<nav_msgs::Odometry>(nh, 
-      "odom", 10, [this](const nav_msgs::OdometryConstPtr& m) { odom_ = m; });
+  odom_sub_ = barrier_.subscribe<nav_msgs::Odometry>(
+      nh, "odom", 10, [this](const nav_msgs::OdometryConstPtr& m) { odom_ = m; });
   truth_sub_ = barrier_.subscribe<geometry_msgs::PointStamped>(
       nh, "ground_truth/target", 10, [this](const geometry_msgs::PointStampedConstPtr& m) {
         if (truth_) {
@@ -126,8 +126,8 @@ FollowEvaluatorNode::FollowEvaluatorNode(ros::NodeHandle& nh, ros::NodeHandle& p
   cmd_sub_ = barrier_.subscribe<geometry_msgs::Twist>(
       nh, "cmd_vel", 10, [this](const geometry_msgs::TwistConstPtr& m) { cmd_ = *m; });
   report_pub_ = nh.advertise<std_msgs::String>("evaluation/report", 1, true);
-  finished_sub_ = barrier_.subscribe(nh, "ground_truth/finished", 1,
-                                     &FollowEvaluatorNode::onFinished, this);
+  finished_sub_ =
+      barrier_.subscribe(nh, "ground_truth/finished", 1, &FollowEvaluatorNode::onFinished, this);
   timer_ = barrier_.timer(nh, ros::Duration(1.0 / params_.rate), "evaluation tick",
                           &FollowEvaluatorNode::onTick, this);
   if (!params_.report_dir.empty()) {
@@ -213,18 +213,15 @@ void FollowEvaluatorNode::onTick(const ros::TimerEvent& event) {
   const bool trusted =
       usable && time_.check(estimate_->header.stamp.toSec(), event.current_real.toSec()) ==
                     TimePolicy::Verdict::kFresh;
-  if (trusted &&
-      event.current_real.toSec() - estimate_->header.stamp.toSec() <=
-          evaluation::kSampleEstimateMaxAge) {
+  if (trusted && event.current_real.toSec() - estimate_->header.stamp.toSec() <=
+                     evaluation::kSampleEstimateMaxAge) {
     // Compare with the truth closest to the estimate's stamp.
     const ros::Time stamp = estimate_->header.stamp;
-    const auto closest = std::min_element(relative_history_.begin(), relative_history_.end(),
-                                          [&stamp](const auto& a, const auto& b) {
-                                            return std::abs(a->header.stamp.toSec() -
-                                                            stamp.toSec()) <
-                                                   std::abs(b->header.stamp.toSec() -
-                                                            stamp.toSec());
-                                          });
+    const auto closest = std::min_element(
+        relative_history_.begin(), relative_history_.end(), [&stamp](const auto& a, const auto& b) {
+          return std::abs(a->header.stamp.toSec() - stamp.toSec()) <
+                 std::abs(b->header.stamp.toSec() - stamp.toSec());
+        });
     s.truth_x = (*closest)->point.x;
     s.truth_y = (*closest)->point.y;
     s.estimate_x = estimate_->position.x;

@@ -88,7 +88,7 @@ SimulatorNode::SimulatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
   const double wall_period = 1.0 / (params_.step_rate * (sim_time_ ? params_.time_factor : 1.0));
   start_ = sim_time_ ? ros::Time(1.0) : ros::Time::now();
   timer_ = barrier_.wallTimer(nh, ros::WallDuration(wall_period), "simulation step",
-                             [this](const ros::WallTimerEvent& event) { onTick(event); });
+                              [this](const ros::WallTimerEvent& event) { onTick(event); });
   ROS_INFO(
       "simulator: scenario '%s' (%.1f s), %zu UWB modules, %zu AoA boards, %zu TDoA anchors, "
       "%s time x%.1f, output %s, %s sensors (hardware seed %llu)",

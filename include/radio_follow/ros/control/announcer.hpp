@@ -11,8 +11,8 @@
 #include "radio_follow/FollowerStatus.h"
 #include "radio_follow/control/announcement_queue.hpp"
 #include "radio_follow/control/fault_speech.hpp"
-#include "radio_follow/ros/common/params.hpp"
 #include "radio_follow/ros/common/callback_barrier.hpp"
+#include "radio_follow/ros/common/params.hpp"
 
 namespace radio_follow {
 

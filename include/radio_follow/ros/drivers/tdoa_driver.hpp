@@ -64,7 +64,7 @@ class TdoaDriverNode {
 
   Params params_;
   CallbackBarrier barrier_;  // the I/O, delivery and timer callbacks run inside it
-  std::mutex mutex_;  // guards receiver_, blinks_, last_datagram_, rate counters
+  std::mutex mutex_;         // guards receiver_, blinks_, last_datagram_, rate counters
   std::unique_ptr<drivers::TdoaReceiver> receiver_;
   std::vector<drivers::TdoaBlink> blinks_;
   ros::WallTime last_datagram_;

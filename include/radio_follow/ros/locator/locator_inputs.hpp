@@ -17,6 +17,11 @@
 
 namespace radio_follow {
 
+/// How far from the receiver's clock a measurement's stamp may be for its odometry pose to
+/// be looked up in TF, s. Far beyond any TF buffer's history (tf2's default is 10 s), so
+/// no lookup that could succeed is skipped.
+constexpr double kTfHorizon = 3600.0;
+
 /// Hands driver messages to a Locator the one way both the locator node and the offline
 /// evaluator do: only ranges to the target's anchor, only bearings of the target's tag
 /// (when the layout names one), only TDoA differences of the target's tag (the robot's own

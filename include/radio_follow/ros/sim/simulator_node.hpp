@@ -11,11 +11,11 @@
 #include <vector>
 
 #include "radio_follow/config/layout.hpp"
+#include "radio_follow/ros/common/callback_barrier.hpp"
 #include "radio_follow/ros/common/params.hpp"
 #include "radio_follow/sim/obstacles.hpp"
 #include "radio_follow/sim/serial_devices.hpp"
 #include "radio_follow/sim/world.hpp"
-#include "radio_follow/ros/common/callback_barrier.hpp"
 
 namespace radio_follow {
 
