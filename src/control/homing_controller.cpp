@@ -107,7 +107,8 @@ HomingController::OdometryResult HomingController::onOdometry(const Pose2& pose,
     reset();
     result.clock_jumped = true;
   }
-  if (!std::isfinite(pose.x) || !std::isfinite(pose.y) || !std::isfinite(pose.yaw) ||
+  if (!plausibleOdometryCoordinate(pose.x) || !plausibleOdometryCoordinate(pose.y) ||
+      !std::isfinite(pose.yaw) ||
       time_.check(stamp, now) == TimePolicy::Verdict::kFuture) {
     ++odom_refused_;
     return result;

@@ -56,6 +56,16 @@ inline bool plausibleCoordinate(double c) {
   return std::isfinite(c) && std::abs(c) <= kMaxCoordinate;
 }
 
+/// Largest odometry coordinate magnitude, m, per axis: a ground robot's odometry frame
+/// starts where it was switched on; 1000 km is more than any mission drives, and keeps
+/// squared distances far from overflow (a pose of 1.8e308 m made homing's goal inf).
+constexpr double kMaxOdometryCoordinate = 1e6;
+
+/// An odometry position coordinate: finite and |c| <= kMaxOdometryCoordinate.
+inline bool plausibleOdometryCoordinate(double c) {
+  return std::isfinite(c) && std::abs(c) <= kMaxOdometryCoordinate;
+}
+
 /// A received signal strength, dBm: finite and in [kMinRssi, kMaxRssi].
 inline bool plausibleRssi(double dbm) {
   return std::isfinite(dbm) && dbm >= kMinRssi && dbm <= kMaxRssi;

@@ -74,8 +74,9 @@ class HomingController {
     bool clock_jumped = false;
   };
   /// Robot pose in the odometry frame, stamped `stamp`, received at `now`. A non-finite
-  /// pose or a stamp from the future (TimePolicy) is refused and counted: one NaN pose
-  /// would otherwise enter every later goal through the parallax estimate.
+  /// pose, a position beyond kMaxOdometryCoordinate (plausibility.hpp) or a stamp from
+  /// the future (TimePolicy) is refused and counted: one NaN pose would otherwise enter
+  /// every later goal through the parallax estimate, and one of 1.8e308 m made it inf.
   OdometryResult onOdometry(const Pose2& pose, double stamp, double now);
 
   /// A range to the target, m (used with distance_source "uwb"), measured by an antenna

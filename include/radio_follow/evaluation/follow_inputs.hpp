@@ -7,6 +7,7 @@
 #include <cmath>
 #include <optional>
 
+#include "radio_follow/common/plausibility.hpp"
 #include "radio_follow/control/safety_monitor.hpp"
 #include "radio_follow/control/velocity_law.hpp"
 #include "radio_follow/estimation/target_status.hpp"
@@ -14,16 +15,18 @@
 namespace radio_follow {
 namespace evaluation {
 
-/// AMBIGUOUS is its own quality; a position or a direction with a finite range and
-/// bearing is usable; anything else is lost.
+/// AMBIGUOUS is its own quality; a position or a direction with a range a module could
+/// measure (plausibility.hpp) and a bearing within a half turn is usable; anything else
+/// is lost.
 inline control::EstimateQuality estimateQuality(estimation::TargetStatus status, double range,
                                                 double bearing) {
   if (status == estimation::TargetStatus::kAmbiguous) {
     return control::EstimateQuality::kAmbiguous;
   }
   const bool known = hasPosition(status) || status == estimation::TargetStatus::kHeadingOnly;
-  return known && std::isfinite(bearing) && std::isfinite(range) ? control::EstimateQuality::kUsable
-                                                                 : control::EstimateQuality::kLost;
+  return known && std::abs(bearing) <= M_PI && plausibleRange(range)
+             ? control::EstimateQuality::kUsable
+             : control::EstimateQuality::kLost;
 }
 
 /// The velocity law's input: HEADING_ONLY has no range, DEGRADED is flagged, the

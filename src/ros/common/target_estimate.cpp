@@ -29,8 +29,14 @@ bool hasPosition(const TargetEstimate& estimate) {
 }
 
 control::EstimateQuality estimateQuality(const TargetEstimate& estimate) {
-  return evaluation::estimateQuality(static_cast<estimation::TargetStatus>(estimate.status),
-                                     estimate.range, estimate.bearing);
+  const auto status = static_cast<estimation::TargetStatus>(estimate.status);
+  // A position no UWB network spans (non-finite, beyond kMaxCoordinate) is no target.
+  const auto& p = estimate.position;
+  if (hasPosition(status) && !(plausibleCoordinate(p.x) && plausibleCoordinate(p.y) &&
+                               plausibleCoordinate(p.z))) {
+    return control::EstimateQuality::kLost;
+  }
+  return evaluation::estimateQuality(status, estimate.range, estimate.bearing);
 }
 
 }  // namespace radio_follow

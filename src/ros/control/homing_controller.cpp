@@ -53,7 +53,7 @@ void HomingControllerNode::onOdom(const nav_msgs::Odometry::ConstPtr& msg) {
     ROS_WARN("%s: the clock jumped back, homing starts over", ros::this_node::getName().c_str());
   }
   if (!result.accepted) {
-    ROS_WARN_THROTTLE(5.0, "%s: odometry refused (non-finite pose or stamp from the future)",
+    ROS_WARN_THROTTLE(5.0, "%s: odometry refused (non-finite or implausible pose, or stamp from the future)",
                       ros::this_node::getName().c_str());
     return;
   }

@@ -10,6 +10,7 @@
 
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/common/plausibility.hpp"
 #include "radio_follow/common/yaml_params.hpp"
 
 namespace radio_follow {
@@ -275,12 +276,15 @@ TEST(HomingController, ArrivesAndStopsAtTheArrivalDistance) {
   EXPECT_LT(t, 30.0);
 }
 
-TEST(HomingController, NonFiniteOdometryIsRefusedAndCounted) {
+TEST(HomingController, NonFiniteOrImplausibleOdometryIsRefusedAndCounted) {
   HomingController law(uwbParams());
   ASSERT_TRUE(law.onOdometry(pose(1.0, 0.0), 0.0, 0.0).accepted);
   EXPECT_FALSE(law.onOdometry(pose(kNaN, 0.0), 0.1, 0.1).accepted);
   EXPECT_FALSE(law.onOdometry(pose(2.0, 0.0), 5.0, 0.1).accepted);  // from the future
-  EXPECT_EQ(law.odometryRefused(), 2u);
+  // Finite but no robot's odometry: 1.8e308 m made the goal inf (issue 34's fuzzer).
+  EXPECT_FALSE(law.onOdometry(pose(0.0, 1.797e308), 0.1, 0.1).accepted);
+  EXPECT_FALSE(law.onOdometry(pose(kMaxOdometryCoordinate * 1.01, 0.0), 0.1, 0.1).accepted);
+  EXPECT_EQ(law.odometryRefused(), 4u);
   law.onRange(2.0, 0.1);
   law.onBearing(0.0, kNaN, 0.1);
   ASSERT_TRUE(law.goal());
