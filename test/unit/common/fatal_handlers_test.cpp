@@ -2,7 +2,6 @@
 #include "radio_follow/common/fatal_handlers.hpp"
 
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include <csignal>
@@ -24,8 +23,9 @@ TEST(FatalHandlersDeathTest, UncaughtExceptionSpeaksThenAborts) {
   EXPECT_EXIT(
       {
         installFatalHandlers(sayLastWords, 0.01);
-        std::thread([] { throw std::runtime_error("Duration is out of dual 32-bit range"); })
-            .join();
+        std::thread([] {
+          throw std::runtime_error("Duration is out of dual 32-bit range");
+        }).join();
       },
       ::testing::KilledBySignal(SIGABRT),
       "LAST WORDS \\(uncaught exception: Duration is out of dual 32-bit range\\)");
