@@ -51,12 +51,7 @@ class Feeder {
   }
 
   void publishRange(const ros::Time& stamp, double range) {
-    radio_follow::UwbRanges r;
-    r.header.stamp = stamp;
-    r.tag_id = "5722";
-    r.ranges.resize(1);
-    r.ranges[0].anchor_id = "ABCD";
-    r.ranges[0].range = range;
+    const radio_follow::UwbRanges r = radio_follow_test::anchorRange(stamp, range);
     std::lock_guard<std::mutex> lock(mutex_);
     range_pub_.publish(r);
   }
