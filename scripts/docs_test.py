@@ -42,7 +42,13 @@ BLOCK_TIMEOUT = 600  # s, a whole block (scripts/demo.sh builds, then runs a 60 
 UNTIL_STOPPED = 8  # s a long-running command runs before it is stopped
 DEMO_PORT = int(os.environ.get("RF_DOCS_PORT", "11671"))
 # Launch arguments a user must give: everything else has a default.
-REQUIRED_ARGS = {"replay.launch": {"bag"}}
+REQUIRED_ARGS = {
+    "replay.launch": {"bag", "layout_file"},
+    "follower.launch": {"layout_file"},
+    "robot.launch": {"layout_file"},
+    "layout.launch": {"layout_file"},
+    "layout_drivers.launch": {"layout_file"},
+}
 
 
 def blocks():

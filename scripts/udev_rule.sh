@@ -10,6 +10,17 @@ if [ $# -ne 2 ]; then
 fi
 tty="$1"
 name="$2"
+# Module IDs are hex and the layout upper-cases them (robot.launch opens
+# /dev/dwm1001_<ID> with the layout's ID): write the name the same way.
+case "$name" in
+  dwm1001_*)
+    upper="dwm1001_$(printf '%s' "${name#dwm1001_}" | tr '[:lower:]' '[:upper:]')"
+    if [ "$upper" != "$name" ]; then
+      echo "note: module IDs are upper case in the layout and in robot.launch: using $upper" >&2
+      name="$upper"
+    fi
+    ;;
+esac
 if [ ! -e "$tty" ]; then
   echo "$tty does not exist" >&2
   exit 1

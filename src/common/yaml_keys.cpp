@@ -2,6 +2,7 @@
 #include "radio_follow/common/yaml_keys.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -20,11 +21,30 @@ std::string flow(const YAML::Node& node) {
 
 }  // namespace
 
+std::string unreadablePathHint(const std::string& path) {
+  std::error_code error;
+  const std::filesystem::path file(path);
+  if (std::filesystem::exists(file, error)) {
+    return "; " + path + " exists but cannot be read (permissions?)";
+  }
+  if (!path.empty() && path[0] == '~') {
+    return "; '~' is not expanded in a parameter: give the absolute path (/home/<user>/...)";
+  }
+  if (file.is_relative()) {
+    return "; a relative path is read from the node's working directory " +
+           std::filesystem::current_path(error).string() +
+           " (roslaunch starts nodes in ROS_HOME): give an absolute path, e.g. "
+           "$(find my_robot)/config/" +
+           file.filename().string();
+  }
+  return "; there is no file " + path;
+}
+
 std::string readConfigFile(const std::string& path, const std::string& name,
                            const std::string& expected) {
   std::ifstream file(path);
   if (!file) {
-    throw ParamError(name, paramValueString(path), expected);
+    throw ParamError(name, paramValueString(path), expected + unreadablePathHint(path));
   }
   std::stringstream text;
   text << file.rdbuf();

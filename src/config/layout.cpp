@@ -59,13 +59,21 @@ double TwrModule::correctRange(double raw_range) const {
   return result;
 }
 
+std::string uwbNamespace(const std::string& module_id) {
+  return "uwb/" + module_id;
+}
+
+std::string aoaNamespace(const std::string& board_id) {
+  return "aoa/" + board_id;
+}
+
 SensorTopics conventionalTopics(const Layout& layout) {
   SensorTopics topics;
   for (const auto& m : layout.twr_modules) {
-    topics.uwb.push_back("uwb/" + m.id + "/ranges");
+    topics.uwb.push_back(uwbNamespace(m.id) + "/ranges");
   }
   for (const auto& b : layout.aoa_boards) {
-    topics.aoa.push_back("aoa/" + b.id + "/bearing");
+    topics.aoa.push_back(aoaNamespace(b.id) + "/bearing");
   }
   if (!layout.tdoa_anchors.empty()) {
     topics.tdoa.push_back("tdoa/measurements");
@@ -287,8 +295,8 @@ Layout parseLayout(const std::string& yaml_text, const std::string& origin) {
   return layout;
 }
 
-Layout loadLayoutFile(const std::string& path) {
-  return parseLayout(readConfigFile(path, "layout", "a readable layout YAML file"), path);
+Layout loadLayoutFile(const std::string& path, const std::string& param) {
+  return parseLayout(readConfigFile(path, param, "a readable layout YAML file"), path);
 }
 
 }  // namespace radio_follow

@@ -94,6 +94,36 @@ namespace {
 constexpr double kStandingSpeed = 0.05;
 }  // namespace
 
+void FollowMetrics::judgeFollowing(FollowReport& r) const {
+  std::ostringstream why;
+  why.precision(2);
+  if (std::isnan(r.gap_window_start)) {
+    why << "the robot never came within " << settings_.gap_tolerance << " m of the follow "
+        << "distance " << settings_.follow_distance << " m (final gap " << r.final_gap << " m)";
+    r.failures.push_back(why.str());
+    why.str("");
+  } else if (r.gap_samples > 0 && r.gap_within_tolerance < settings_.min_gap_held) {
+    why << "the gap was held " << 100.0 * r.gap_within_tolerance << " % of the walk (at least "
+        << 100.0 * settings_.min_gap_held << " % expected; mean gap " << r.gap_mean << " m for "
+        << settings_.follow_distance << " m)";
+    r.failures.push_back(why.str());
+    why.str("");
+  }
+  if (r.estimate_error_median > settings_.gap_tolerance) {
+    why << "the estimate's median error was " << r.estimate_error_median
+        << " m, more than the gap tolerance " << settings_.gap_tolerance
+        << " m (calibrate the layout: doc/calibration.md)";
+    r.failures.push_back(why.str());
+    why.str("");
+  }
+  if (r.min_gap_while_moving < settings_.safe_distance) {
+    why << "the robot came to " << r.min_gap_while_moving << " m of the person while moving, "
+        << "closer than safe_distance " << settings_.safe_distance
+        << " m (uncalibrated modules that read long stop it late: doc/calibration.md)";
+    r.failures.push_back(why.str());
+  }
+}
+
 FollowReport FollowMetrics::report() const {
   FollowReport r;
   r.min_gap = std::numeric_limits<double>::infinity();
@@ -213,6 +243,9 @@ FollowReport FollowMetrics::report() const {
   }
   if (errors.empty()) {
     r.failures.push_back("the estimate never became usable (no OK or DEGRADED estimate)");
+  }
+  if (settings_.judge_following && had_to_move) {
+    judgeFollowing(r);
   }
   r.path_samples = static_cast<int>(deviations.size());
   r.path_deviation_median = quantile(deviations, 0.5);

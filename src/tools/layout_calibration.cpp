@@ -49,7 +49,7 @@ int main(int argc, char** argv) {
         static_cast<int>(rf::toolCount("--hardware-seed", options["--hardware-seed"]));
     const auto seed = static_cast<int>(rf::toolCount("--seed", options["--seed"]));
     const std::string path = config_dir + "/layouts/" + layout_name + ".yaml";
-    const rf::Layout layout = rf::loadLayoutFile(path);
+    const rf::Layout layout = rf::loadLayoutFile(path, "--layout");
     rf::sim::WorldConfig world;
     world.load(rf::YamlParams::fromFile(config_dir + "/simulator.yaml"));
     world.profile = rf::sim::SensorProfile::kRealistic;

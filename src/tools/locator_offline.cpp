@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -110,7 +111,57 @@ void writeFile(const std::string& path, const std::string& text) {
   }
 }
 
-void printSummary(const rf::ReplayResult& r, const std::string& odom_frame) {
+// The layout's sensors the bag has no message of, and the bag's sensors the layout does
+// not name: a layout that matches none of the bag explains an empty replay.
+void printSensorMatch(const rf::BagData& bag, const rf::Layout& layout) {
+  std::set<std::string> heard;      // layout IDs with a message
+  std::set<std::string> strangers;  // the bag's IDs or frames the layout does not know
+  for (const auto& msg : bag.ranges) {
+    const std::string& id = msg.tag_id.empty() ? msg.header.frame_id : msg.tag_id;
+    if (const rf::TwrModule* module = layout.findTwrModule(id)) {
+      heard.insert(module->id);
+    } else {
+      strangers.insert("module " + id);
+    }
+  }
+  for (const auto& msg : bag.bearings) {
+    if (const rf::AoaBoard* board = layout.findAoaBoard(msg.header.frame_id)) {
+      heard.insert(board->id);
+    } else {
+      strangers.insert("board frame " + msg.header.frame_id);
+    }
+  }
+  const rf::SensorTopics topics = rf::conventionalTopics(layout);
+  std::vector<std::string> silent;
+  for (std::size_t i = 0; i < layout.twr_modules.size(); ++i) {
+    if (heard.count(layout.twr_modules[i].id) == 0) {
+      silent.push_back(layout.twr_modules[i].id + " (" + topics.uwb[i] + ")");
+    }
+  }
+  for (std::size_t i = 0; i < layout.aoa_boards.size(); ++i) {
+    if (heard.count(layout.aoa_boards[i].id) == 0) {
+      silent.push_back(layout.aoa_boards[i].id + " (" + topics.aoa[i] + ")");
+    }
+  }
+  if (!silent.empty()) {
+    std::cout << "layout sensors with no message in the bag:";
+    for (const std::string& name : silent) {
+      std::cout << " " << name;
+    }
+    std::cout << "\n";
+  }
+  if (!strangers.empty()) {
+    std::cout << "sensors in the bag that the layout does not name (is --layout the recorded "
+                 "robot's?):";
+    for (const std::string& name : strangers) {
+      std::cout << " " << name;
+    }
+    std::cout << "\n";
+  }
+}
+
+void printSummary(const rf::ReplayResult& r, const rf::BagData& bag, const std::string& odom_frame,
+                  const std::string& truth_topic) {
   const rf::estimation::OdometryPlacement& placed = r.placement;
   if (odom_frame.empty()) {
     std::cout << "tracking in the robot frame (odom_frame \"\")\n";
@@ -122,8 +173,14 @@ void printSummary(const rf::ReplayResult& r, const std::string& odom_frame) {
   const rf::evaluation::ErrorSummary all = r.statistics.overall();
   std::cout << "updates " << r.rows.size() << ", with a position " << r.availability * 100.0
             << " %, compared with the ground truth " << all.count << "\n";
+  if (bag.truth.empty()) {
+    std::cout << "no ground truth in the bag (no message on " << truth_topic
+              << "): estimates only\n";
+    return;
+  }
   if (all.count == 0) {
-    std::cout << "no ground truth in the bag: estimates only\n";
+    std::cout << "the bag has " << bag.truth.size() << " ground-truth points on " << truth_topic
+              << ", but no estimate had a position to compare\n";
     return;
   }
   std::cout << "error (m): mean " << all.mean << ", median " << all.median << ", p95 " << all.p95
@@ -211,7 +268,7 @@ int main(int argc, char** argv) {
   try {
     const YAML::Node base = mergedParams(o.params);
     const rf::LocatorNode::Params params = loadParams(base, o.layout);
-    const rf::Layout layout = rf::loadLayoutFile(o.layout);
+    const rf::Layout layout = rf::loadLayoutFile(o.layout, "--layout");
     if (!o.out.empty()) {
       std::filesystem::create_directories(o.out);
     }
@@ -227,7 +284,8 @@ int main(int argc, char** argv) {
     std::cout << "bag " << o.bag << ": " << bag.duration() << " s, " << bag.entries.size()
               << " sensor messages, replayed in " << wall << " s ("
               << bag.duration() / std::max(wall, 1e-9) << " x real time)\n";
-    printSummary(result, params.odom_frame);
+    printSensorMatch(bag, layout);
+    printSummary(result, bag, params.odom_frame, o.truth_topic);
     if (result.refused > 0) {
       std::cout << result.refused << " measurements refused (sensors not in the layout?)\n";
     }

@@ -311,7 +311,7 @@ void print(const Evaluated& e, const rf::estimation::AdvisorConfig& config) {
 Evaluated evaluate(const std::string& path, const Options& opt, const fs::path& out) {
   Evaluated e;
   e.name = fs::path(path).stem().string();
-  e.layout = rf::loadLayoutFile(path);
+  e.layout = rf::loadLayoutFile(path, "--layout");
   e.summary = rf::estimation::summarize(e.layout, opt.config);
   const std::string csv = e.name + "_map.csv";
   writeMap(out / csv, rf::estimation::computeMap(e.layout, opt.config));

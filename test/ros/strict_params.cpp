@@ -113,6 +113,27 @@ TEST(StrictParams, LayoutKeyTyposAreRefused) {
                 {"'twr_modules[0].calibraton'", "did you mean 'twr_modules[0].calibration'"});
 }
 
+TEST(StrictParams, LayoutPathErrorsSayWhatToDo) {
+  // Nodes run in ROS_HOME: a relative path or a `~` there is the user's most likely slip.
+  expectRefused("locator", "_layout_file:=my_robot.yaml",
+                {"'~layout_file'", "relative path", "absolute path"});
+  expectRefused("layout_publisher", "'_layout_file:=~/my_robot.yaml'",
+                {"'~layout_file'", "'~' is not expanded"});
+  expectRefused("layout_drivers", "_layout_file:=/nonexistent/my_robot.yaml",
+                {"'~layout_file'", "there is no file /nonexistent/my_robot.yaml"});
+}
+
+TEST(StrictParams, LayoutDriversTakeEveryDevicesIdentityFromTheLayout) {
+  const std::string layout = "_layout_file:=" + config("layouts/small_kit.yaml");
+  expectRefused("layout_drivers", layout + " _dwm1001/port:=/dev/ttyACM0",
+                {"'~dwm1001/port'", "from the layout"});
+  expectRefused("layout_drivers", layout + " _ublox_aoa/frame_id:=board",
+                {"'~ublox_aoa/frame_id'", "from the layout"});
+  expectRefused("layout_drivers", layout + " _dwm1001/baud_rate:=9600",
+                {"'~dwm1001/baud_rate'", "a known key"});
+  expectRefused("layout_drivers", layout + " _ublox_aoa/tag_ids:=[1234]", {"'~ublox_aoa/tag_ids'"});
+}
+
 TEST(StrictParams, ShippedFilesAreAccepted) {
   // The same mechanism must accept what the package ships: the node runs until killed.
   const NodeRun run =

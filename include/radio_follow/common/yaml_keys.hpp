@@ -18,6 +18,11 @@ namespace radio_follow {
 void requireYamlKeys(const YAML::Node& map, const std::set<std::string>& allowed,
                      const std::string& path);
 
+/// What to do about a configuration file that cannot be read, as "; ..." to append to
+/// the expectation: `~` is not expanded, a relative path is read from the node's working
+/// directory (ROS_HOME under roslaunch), the file does not exist, or it is not readable.
+std::string unreadablePathHint(const std::string& path);
+
 /// The text of a configuration file; throws ParamError(`name`, path, `expected`) when it
 /// cannot be read (e.g. "layout", "a readable layout YAML file").
 std::string readConfigFile(const std::string& path, const std::string& name,

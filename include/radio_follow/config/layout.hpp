@@ -78,8 +78,9 @@ struct Layout {
 /// the source in messages (a file path, usually).
 Layout parseLayout(const std::string& yaml_text, const std::string& origin);
 
-/// Reads and validates a layout file. Throws ParamError when it cannot be read.
-Layout loadLayoutFile(const std::string& path);
+/// Reads and validates a layout file. Throws ParamError naming `param` (the node's
+/// parameter or the tool's flag that gave the path) when it cannot be read.
+Layout loadLayoutFile(const std::string& path, const std::string& param = "~layout_file");
 
 std::string toString(AoaBoardKind kind);
 
@@ -99,5 +100,9 @@ struct SensorTopics {
   std::vector<std::string> tdoa;
 };
 SensorTopics conventionalTopics(const Layout& layout);
+/// The namespace of a module's driver in that convention, `uwb/<id>`.
+std::string uwbNamespace(const std::string& module_id);
+/// The namespace of a board's driver in that convention, `aoa/<id>`.
+std::string aoaNamespace(const std::string& board_id);
 
 }  // namespace radio_follow

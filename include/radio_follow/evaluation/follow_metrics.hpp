@@ -60,6 +60,14 @@ struct FollowSettings {
   /// person walked more than a metre, or started farther than follow_distance +
   /// gap_tolerance away), m.
   double min_robot_distance = 0.3;
+  /// The demo's verdict on how well the robot followed (follow_evaluator; the experiments
+  /// assert thresholds of their own, test/experiments.yaml). With it the run also fails
+  /// when the robot held the gap less than `min_gap_held` of the walk (once it had caught
+  /// up while the person walked), when the median estimate error exceeds `gap_tolerance`
+  /// (an estimate that far off cannot hold the gap within it), or when it came closer
+  /// than `safe_distance` while commanded to move.
+  bool judge_following = false;
+  double min_gap_held = 0.5;  ///< share of the walk
 };
 
 struct FollowReport {
@@ -118,6 +126,9 @@ class FollowMetrics {
   std::string toCsv() const;
 
  private:
+  /// Adds the judge_following failures to `r` (a run in which the robot had to move).
+  void judgeFollowing(FollowReport& r) const;
+
   FollowSettings settings_;
   std::vector<FollowSample> samples_;
   double min_clearance_ = std::numeric_limits<double>::infinity();

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/common/param_keys.hpp"
@@ -41,7 +42,7 @@ std::string render(const XmlRpcValue& value) {
 
 [[noreturn]] void wrongType(const std::string& name, const XmlRpcValue& value,
                             const std::string& expected) {
-  throw ParamError("~" + name, render(value), expected);
+  throw ParamError(name, render(value), expected);
 }
 
 bool isNumber(const XmlRpcValue& v) {
@@ -111,7 +112,8 @@ void convert(const std::string& name, XmlRpcValue& v, std::vector<double>& out) 
 
 }  // namespace
 
-ParamReader::ParamReader(const ros::NodeHandle& private_nh) : nh_(private_nh) {}
+ParamReader::ParamReader(const ros::NodeHandle& private_nh, std::string shown_as)
+    : nh_(private_nh), shown_as_(std::move(shown_as)) {}
 
 template <typename T>
 bool ParamReader::readAs(const std::string& name, T& out) const {
@@ -120,7 +122,7 @@ bool ParamReader::readAs(const std::string& name, T& out) const {
   if (!nh_.getParam(name, value)) {
     return false;
   }
-  convert(name, value, out);
+  convert(shown_as_ + name, value, out);
   return true;
 }
 
@@ -165,7 +167,7 @@ void ParamReader::requireAllKnown() const {
     nh_.getParam(name, value);
     present.push_back({name, render(value)});
   }
-  requireKnownKeys(present, known_, owned_, "~");
+  requireKnownKeys(present, known_, owned_, shown_as_);
 }
 
 void requireMembers(const XmlRpcValue& item, const std::set<std::string>& allowed,

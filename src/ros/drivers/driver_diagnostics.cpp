@@ -12,9 +12,11 @@ DriverDiagnostics::DriverDiagnostics(ros::NodeHandle& nh, ros::NodeHandle& priva
                                      const drivers::DriverStats& stats, double silence_timeout,
                                      Extra extra)
     : stats_(stats),
+      name_(name),
       silence_timeout_(silence_timeout),
       extra_(std::move(extra)),
-      updater_(nh, private_nh) {
+      updater_(nh, private_nh),
+      silence_log_(silence_timeout) {
   updater_.setHardwareID(hardware_id);
   updater_.add(name, this, &DriverDiagnostics::produce);
   timer_ = barrier_.timer(nh, ros::Duration(1.0), "diagnostics", &DriverDiagnostics::tick, this);
@@ -27,17 +29,17 @@ void DriverDiagnostics::tick(const ros::TimerEvent&) {
     rate_ = static_cast<double>(now_stats.messages - previous_.messages) / (now - previous_time_);
   }
   dropping_ = now_stats.dropped > previous_.dropped;
-  if (dropping_) {
-    ROS_WARN_THROTTLE(5.0, "%s: publish queue full, %llu measurements dropped so far",
-                      ros::this_node::getName().c_str(),
-                      static_cast<unsigned long long>(now_stats.dropped));
+  if (dropping_ && dropping_log_.ready(now)) {
+    ROS_WARN("%s: %s: publish queue full, %llu measurements dropped so far",
+             ros::this_node::getName().c_str(), name_.c_str(),
+             static_cast<unsigned long long>(now_stats.dropped));
   }
   previous_ = now_stats;
   previous_time_ = now;
   if (now_stats.connected && now_stats.last_data_time > 0.0 &&
-      now - now_stats.last_data_time > silence_timeout_) {
-    ROS_WARN_THROTTLE(silence_timeout_, "%s: no data from the device for %.1f s",
-                      ros::this_node::getName().c_str(), now - now_stats.last_data_time);
+      now - now_stats.last_data_time > silence_timeout_ && silence_log_.ready(now)) {
+    ROS_WARN("%s: %s: no data from the device for %.1f s", ros::this_node::getName().c_str(),
+             name_.c_str(), now - now_stats.last_data_time);
   }
   updater_.update();
 }

@@ -77,7 +77,7 @@ void SerialLineDriver::diagnose(diagnostic_updater::DiagnosticStatusWrapper&) {}
 
 void SerialLineDriver::onConnected() {
   const double now = ros::Time::now().toSec();
-  ROS_INFO("%s: opened %s", ros::this_node::getName().c_str(), options_.port.c_str());
+  ROS_INFO("%s: %s: opened", ros::this_node::getName().c_str(), name_.c_str());
   std::string text;
   {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -93,8 +93,8 @@ void SerialLineDriver::onDisconnected(const std::string& reason) {
     line_.onDisconnected();
     onClosed();
   }
-  ROS_WARN("%s: device unavailable (%s); retrying", ros::this_node::getName().c_str(),
-           reason.c_str());
+  ROS_WARN("%s: %s: device unavailable (%s); retrying", ros::this_node::getName().c_str(),
+           name_.c_str(), reason.c_str());
 }
 
 void SerialLineDriver::onBytes(const char* data, std::size_t size) {
@@ -112,11 +112,12 @@ void SerialLineDriver::onBytes(const char* data, std::size_t size) {
 void SerialLineDriver::count(drivers::LineVerdict verdict, std::string_view line,
                              const char* reason) {
   const std::uint64_t rejected = line_.count(verdict);
-  if (verdict == drivers::LineVerdict::kRejected || verdict == drivers::LineVerdict::kImplausible) {
-    ROS_WARN_THROTTLE(5.0, "%s: rejected line (%s, %lu so far): '%.*s'",
-                      ros::this_node::getName().c_str(), reason,
-                      static_cast<unsigned long>(rejected),
-                      static_cast<int>(std::min<std::size_t>(line.size(), 120)), line.data());
+  if ((verdict == drivers::LineVerdict::kRejected ||
+       verdict == drivers::LineVerdict::kImplausible) &&
+      rejected_log_.ready(ros::WallTime::now().toSec())) {
+    ROS_WARN("%s: %s: rejected line (%s, %lu so far): '%.*s'", ros::this_node::getName().c_str(),
+             name_.c_str(), reason, static_cast<unsigned long>(rejected),
+             static_cast<int>(std::min<std::size_t>(line.size(), 120)), line.data());
   }
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/ros/sim/follow_evaluator_node.hpp"
 
+#include <ros/names.h>
 #include <signal.h>
 #include <std_msgs/String.h>
 #include <unistd.h>
@@ -73,6 +74,8 @@ void FollowEvaluatorNode::Params::validate() const {
   require(settings.gap_tolerance > 0.0, "~gap_tolerance", settings.gap_tolerance, "metres > 0");
   require(settings.robot_max_speed > 0.0, "~robot_max_speed", settings.robot_max_speed, "m/s > 0");
   require(settings.settle_time >= 0.0, "~settle_time", settings.settle_time, "seconds >= 0");
+  require(settings.min_gap_held >= 0.0 && settings.min_gap_held <= 1.0, "~min_gap_held",
+          settings.min_gap_held, "a share in [0, 1]");
 }
 
 FollowEvaluatorNode::FollowEvaluatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
@@ -82,12 +85,28 @@ FollowEvaluatorNode::FollowEvaluatorNode(ros::NodeHandle& nh, ros::NodeHandle& p
   reader.param("rate", params_.rate, params_.rate);
   reader.param("write_period", params_.write_period, params_.write_period);
   reader.param("end_launch", params_.end_launch, params_.end_launch);
+  reader.param("controller", params_.controller, params_.controller);
   evaluation::FollowSettings& s = params_.settings;
-  reader.param("follow_distance", s.follow_distance, s.follow_distance);
-  reader.param("safe_distance", s.safe_distance, s.safe_distance);
+  s.judge_following = true;
+  if (params_.controller.empty()) {
+    reader.param("follow_distance", s.follow_distance, s.follow_distance);
+    reader.param("safe_distance", s.safe_distance, s.safe_distance);
+  } else {
+    // The distances the controller really runs with, not a second copy of them.
+    requireGraphName("~controller", params_.controller);
+    const std::string ns = ros::names::resolve(params_.controller);
+    require(ros::param::has(ns + "/follow_distance") && ros::param::has(ns + "/safe_distance"),
+            "~controller", params_.controller,
+            "a controller node whose follow_distance and safe_distance are set");
+    const ParamReader controller{ros::NodeHandle(ns), ns + "/"};
+    controller.param("follow_distance", s.follow_distance, s.follow_distance);
+    controller.param("safe_distance", s.safe_distance, s.safe_distance);
+  }
   reader.param("gap_tolerance", s.gap_tolerance, s.gap_tolerance);
   reader.param("robot_max_speed", s.robot_max_speed, s.robot_max_speed);
   reader.param("settle_time", s.settle_time, s.settle_time);
+  reader.param("judge_following", s.judge_following, s.judge_following);
+  reader.param("min_gap_held", s.min_gap_held, s.min_gap_held);
   reader.requireAllKnown();
   params_.validate();
   if (!params_.report_dir.empty()) {

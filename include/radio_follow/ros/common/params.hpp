@@ -23,7 +23,9 @@ namespace radio_follow {
 /// The same loading code runs on a YamlParams (tools without a master).
 class ParamReader : public TypedParamSource<ParamReader> {
  public:
-  explicit ParamReader(const ros::NodeHandle& private_nh);
+  /// `shown_as` prefixes a parameter's name in messages: "~" for the node's private
+  /// namespace, "~dwm1001/" for a reader on a sub-namespace of it.
+  explicit ParamReader(const ros::NodeHandle& private_nh, std::string shown_as = "~");
 
   /// Raw access for structured values (lists of mappings); marks `name` as known.
   /// Returns false when the parameter is not set.
@@ -48,6 +50,7 @@ class ParamReader : public TypedParamSource<ParamReader> {
   ros::NodeHandle nh_;
   mutable std::set<std::string> known_;
   mutable std::vector<std::string> owned_;
+  std::string shown_as_;
 };
 
 /// Throws ParamError for a member of the mapping `item` (an element of a structured list

@@ -7,6 +7,7 @@
 #include <functional>
 #include <string>
 
+#include "radio_follow/common/throttle.hpp"
 #include "radio_follow/drivers/driver_stats.hpp"
 #include "radio_follow/ros/common/callback_barrier.hpp"
 
@@ -35,6 +36,7 @@ class DriverDiagnostics {
   void produce(diagnostic_updater::DiagnosticStatusWrapper& status);
 
   const drivers::DriverStats& stats_;
+  std::string name_;  // the status name, which names the device in the log lines
   double silence_timeout_;
   Extra extra_;
   diagnostic_updater::Updater updater_;
@@ -44,6 +46,8 @@ class DriverDiagnostics {
   double previous_time_ = 0.0;
   double rate_ = 0.0;
   bool dropping_ = false;  // measurements were dropped since the previous tick
+  Throttle dropping_log_{5.0};
+  Throttle silence_log_;
 };
 
 }  // namespace radio_follow

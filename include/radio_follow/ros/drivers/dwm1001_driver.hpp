@@ -47,11 +47,12 @@ class Dwm1001DriverNode : public QueuedSerialLineDriver<Dwm1001Output> {
   };
 
   Dwm1001DriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh);
+  /// With `params` loaded and validated by the caller (layout_drivers: one driver per
+  /// device of a layout in one process); `private_nh` holds the diagnostics settings.
+  Dwm1001DriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const Params& params);
   ~Dwm1001DriverNode() override;
 
  private:
-  Dwm1001DriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const Params& params);
-
   std::string onOpened(double now) override;
   void onClosed() override;
   std::string onLine(std::string_view line, double stamp) override;

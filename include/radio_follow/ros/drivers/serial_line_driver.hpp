@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "radio_follow/common/throttle.hpp"
 #include "radio_follow/drivers/delivery_queue.hpp"
 #include "radio_follow/drivers/line_driver.hpp"
 #include "radio_follow/drivers/serial_line_params.hpp"
@@ -100,7 +101,8 @@ class SerialLineDriver {
   drivers::LineDriver line_;
   DriverDiagnostics diagnostics_;
   std::vector<std::unique_ptr<OutputDiagnostic>> outputs_;
-  std::string first_topic_;  // of the first watched output, for the wiring log
+  std::string first_topic_;     // of the first watched output, for the wiring log
+  Throttle rejected_log_{5.0};  // I/O thread
   std::unique_ptr<drivers::SerialTransport> transport_;
 };
 

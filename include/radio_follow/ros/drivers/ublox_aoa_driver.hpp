@@ -33,11 +33,12 @@ class UbloxAoaDriverNode : public QueuedSerialLineDriver<AoaBearing> {
   };
 
   UbloxAoaDriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh);
+  /// With `params` loaded and validated by the caller (layout_drivers: one driver per
+  /// device of a layout in one process); `private_nh` holds the diagnostics settings.
+  UbloxAoaDriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const Params& params);
   ~UbloxAoaDriverNode() override;
 
  private:
-  UbloxAoaDriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh, const Params& params);
-
   std::string onOpened(double now) override;
   std::string onLine(std::string_view line, double stamp) override;
   void publish(AoaBearing& msg) override;

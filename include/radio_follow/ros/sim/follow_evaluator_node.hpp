@@ -29,6 +29,9 @@ class FollowEvaluatorNode {
     /// When the scenario ends, end the roslaunch that started this node (demo.launch;
     /// false under rostest, whose test node ends the run).
     bool end_launch = false;
+    /// The controller node whose follow_distance and safe_distance the run is judged by
+    /// (read from its private namespace); empty: `~follow_distance`, `~safe_distance`.
+    std::string controller;
     evaluation::FollowSettings settings;
 
     void validate() const;
