@@ -65,7 +65,41 @@ const ParamTable<TdoaCalibrationConfig>& tdoaCalibrationTable() {
   return t;
 }
 
+// What only one estimator reads (estimation::Locator: the particle path returns before
+// the solve and the Kalman filter; the solver path never feeds the particle tracker).
+const std::vector<std::string>& solverOnlyKeys() {
+  static const std::vector<std::string> keys{
+      "range_loss",        "range_loss_scale", "tdoa_loss",
+      "tdoa_loss_scale",   "bearing_loss",     "bearing_loss_scale",
+      "ceres_covariance",  "motion_model",     "measurement_covariance",
+      "measurement_noise", "gate_probability", "max_consecutive_rejections"};
+  return keys;
+}
+
+const std::vector<std::string>& particleOnlyKeys() {
+  static const std::vector<std::string> keys{
+      "particles",   "range_outlier_share",     "range_outlier_length", "bearing_outlier_share",
+      "lost_sigma",  "mirror_memory",           "stand_time",           "walk_time",
+      "stand_noise", "range_decorrelation_time"};
+  return keys;
+}
+
 }  // namespace
+
+std::vector<std::string> LocatorConfig::ignoredSettings() const {
+  const bool particle = estimator == Estimator::kParticle;
+  const LocatorConfig defaults;
+  std::vector<std::string> lines;
+  for (const std::string& key : particle ? solverOnlyKeys() : particleOnlyKeys()) {
+    const auto* entry = table().find(key);
+    if (entry != nullptr && !(entry->get(*this) == entry->get(defaults))) {
+      lines.push_back("~" + key + " = " + paramValueText(entry->get(*this)) +
+                      " has no effect with estimator " + (particle ? "particle" : "solver") +
+                      " (only the " + (particle ? "solver" : "particle") + " estimator reads it)");
+    }
+  }
+  return lines;
+}
 
 const ParamTable<LocatorConfig>& LocatorConfig::table() {
   using C = LocatorConfig;

@@ -100,6 +100,9 @@ rf::LocatorNode::Params loadParams(const YAML::Node& yaml, const std::string& la
   source.requireAllKnown();  // a misspelt key in --params or --sweep is an error, as on a node
   p.layout_file = layout;
   p.validate();
+  for (const std::string& line : p.locator.ignoredSettings()) {
+    std::cerr << "locator_offline: warning: " << line << "\n";
+  }
   return p;
 }
 

@@ -121,6 +121,11 @@ struct LocatorConfig {
   static const ParamTable<LocatorConfig>& table();
   /// Throws ParamError naming the first invalid field (names match the ROS parameters).
   void validate() const;
+  /// One line per parameter that is set away from its default but that `estimator` never
+  /// reads (the solver's robust losses and Kalman filter under the particle estimator,
+  /// the particle filter's settings under the solver), naming it, its value and the
+  /// estimator that reads it: tuning it changes nothing.
+  std::vector<std::string> ignoredSettings() const;
 };
 
 struct LocatorEstimate {

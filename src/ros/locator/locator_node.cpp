@@ -18,6 +18,15 @@ namespace {
 // At most one warning per silent input in this period, s.
 constexpr double kSilentWarnPeriod = 10.0;
 
+// Tuning advice that changes nothing is worse than none (issue 33): say so at start and
+// on every live change.
+void warnIgnoredSettings(const estimation::LocatorConfig& config) {
+  for (const std::string& line : config.ignoredSettings()) {
+    ROS_WARN("locator: %s; doc/nodes/locator.md says which settings each estimator reads",
+             line.c_str());
+  }
+}
+
 }  // namespace
 
 TargetEstimate toMessage(const estimation::LocatorEstimate& estimate, const std::string& frame,
@@ -58,6 +67,7 @@ LocatorNode::LocatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
     params.requireAllKnown();
     params_.validate();
   }
+  warnIgnoredSettings(params_.locator);
   layout_ = loadLayoutFile(params_.layout_file);  // validated: target anchor set with TWR
   locator_ = std::make_unique<estimation::Locator>(layout_, params_.locator);
   if (params_.odom_frame.empty()) {
@@ -101,6 +111,7 @@ LocatorNode::LocatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
   inputs_watch_.emplace(resolved, params_.input_timeout, kSilentWarnPeriod, 0.0);
   reconfigure_ = makeLocatorReconfigure(
       private_nh, params_.locator, [this](const estimation::LocatorConfig& config) {
+        warnIgnoredSettings(config);
         if (!locator_->setConfig(config)) {
           ROS_INFO("locator: motion model changed, the filter restarts from the next solve");
         }

@@ -231,5 +231,31 @@ TEST(ParamTables, LocatorIsInItsYamlAndDoc) {
   expectCovered(estimation::LocatorConfig::table(), {"locator.yaml"}, "locator.md");
 }
 
+// Issue 33: a sweep over the robust losses under the particle estimator was identical to
+// six digits. Such a setting is named at start; the shipped files name none.
+TEST(ParamTables, LocatorNamesSettingsItsEstimatorIgnores) {
+  for (const char* file : {"locator.yaml", "locator_standing.yaml"}) {
+    estimation::LocatorConfig shipped;
+    shipped.load(YamlParams(YAML::LoadFile(std::string(RF_CONFIG_DIR) + "/" + file)));
+    EXPECT_TRUE(shipped.ignoredSettings().empty()) << file << ": " << shipped.ignoredSettings()[0];
+  }
+  estimation::LocatorConfig particle;
+  particle.load(YamlParams(YAML::Load("{range_loss: huber, bearing_loss_scale: 3.0}")));
+  const std::vector<std::string> lines = particle.ignoredSettings();
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_NE(lines[0].find("~range_loss = 'huber' has no effect with estimator particle"),
+            std::string::npos)
+      << lines[0];
+  EXPECT_NE(lines[1].find("~bearing_loss_scale"), std::string::npos) << lines[1];
+
+  estimation::LocatorConfig solver;
+  solver.load(YamlParams(YAML::Load("{estimator: solver, range_loss: huber, particles: 900}")));
+  ASSERT_EQ(solver.ignoredSettings().size(), 1u);
+  EXPECT_NE(
+      solver.ignoredSettings()[0].find("~particles = 900 has no effect with estimator solver"),
+      std::string::npos)
+      << solver.ignoredSettings()[0];
+}
+
 }  // namespace
 }  // namespace radio_follow
