@@ -59,6 +59,16 @@ double TwrModule::correctRange(double raw_range) const {
   return result;
 }
 
+std::vector<std::string> uncalibratedModules(const Layout& layout) {
+  std::vector<std::string> ids;
+  for (const auto& m : layout.twr_modules) {
+    if (m.calibration == std::vector<double>{0.0, 1.0}) {
+      ids.push_back(m.id);
+    }
+  }
+  return ids;
+}
+
 std::string uwbNamespace(const std::string& module_id) {
   return "uwb/" + module_id;
 }

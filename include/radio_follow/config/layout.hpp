@@ -100,6 +100,9 @@ struct SensorTopics {
   std::vector<std::string> tdoa;
 };
 SensorTopics conventionalTopics(const Layout& layout);
+/// The IDs of the modules whose calibration is still the identity `[0, 1]` (never fitted).
+std::vector<std::string> uncalibratedModules(const Layout& layout);
+
 /// The namespace of a module's driver in that convention, `uwb/<id>`.
 std::string uwbNamespace(const std::string& module_id);
 /// The namespace of a board's driver in that convention, `aoa/<id>`.

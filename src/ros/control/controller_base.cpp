@@ -76,7 +76,26 @@ ControllerBase::ControllerBase(ros::NodeHandle& nh, ros::NodeHandle& private_nh,
         p.validate();
         return p;
       }()),
-      pipeline_(common_) {}
+      pipeline_(common_) {
+  warnUncalibrated();
+}
+
+void ControllerBase::warnUncalibrated() const {
+  if (!common_.layout || !common_.safety.watch_ranges) {
+    return;
+  }
+  std::string ids;
+  for (const std::string& id : uncalibratedModules(*common_.layout)) {
+    ids += (ids.empty() ? "" : ", ") + id;
+  }
+  if (!ids.empty()) {
+    ROS_WARN(
+        "%s: module(s) %s of %s are uncalibrated (calibration [0, 1]): real modules are off "
+        "by 0.1-0.3 m, and one that reads long stops the robot that much inside "
+        "safe_distance. Fit them with calibrate_layout (doc/calibration.md).",
+        ros::this_node::getName().c_str(), ids.c_str(), common_.layout_file.c_str());
+  }
+}
 
 ControllerBase::~ControllerBase() {
   // The safety thread calls into this object: end it before any member goes.

@@ -194,10 +194,27 @@ TEST(Layout, MissingFileIsAParamError) {
 }
 
 TEST(Layout, ShippedLayoutsAreValid) {
-  for (const char* name : {"spot", "spot_twr", "tracked", "cube"}) {
+  for (const char* name : {"spot", "spot_twr", "tracked", "cube", "small_kit"}) {
     SCOPED_TRACE(name);
     const Layout layout = loadLayoutFile(std::string(RF_CONFIG_DIR) + "/layouts/" + name + ".yaml");
     EXPECT_FALSE(layout.twr_modules.empty());
+  }
+}
+
+TEST(Layout, UncalibratedModulesAreTheIdentityOnes) {
+  const std::string dir = std::string(RF_CONFIG_DIR) + "/layouts/";
+  EXPECT_TRUE(uncalibratedModules(loadLayoutFile(dir + "spot.yaml")).empty());
+  EXPECT_EQ(uncalibratedModules(loadLayoutFile(dir + "small_kit.yaml")),
+            (std::vector<std::string>{"2B01", "2B02"}));
+}
+
+TEST(Layout, AnUnreadablePathSaysWhatToDo) {
+  try {
+    loadLayoutFile("my_robot.yaml");
+    FAIL() << "no error";
+  } catch (const ParamError& e) {
+    EXPECT_NE(std::string(e.what()).find("'~layout_file'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("give an absolute path"), std::string::npos) << e.what();
   }
 }
 

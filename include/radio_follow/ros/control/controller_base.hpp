@@ -115,6 +115,9 @@ class ControllerBase {
   ros::NodeHandle private_nh_;
 
  private:
+  /// Warns at start when the layout's modules were never calibrated: the raw-range stop
+  /// at safe_distance is only as right as their calibration.
+  void warnUncalibrated() const;
   void onRanges(const std::string& topic, const UwbRanges::ConstPtr& msg);
   void onScan(const sensor_msgs::LaserScan::ConstPtr& msg);
   void onEnableTopic(const std_msgs::Bool::ConstPtr& msg);
