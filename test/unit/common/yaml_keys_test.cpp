@@ -27,7 +27,17 @@ TEST(ConfigFiles, ReadAndParseOrNameTheFileAndTheProblem) {
   std::ofstream(path) << "a: [1, 2]\n";
   EXPECT_EQ(readConfigFile(path, "layout", "a readable file"), "a: [1, 2]\n");
   EXPECT_EQ(messageOf([] { readConfigFile("/nonexistent.yaml", "points", "a readable file"); }),
-            "parameter 'points' = '/nonexistent.yaml': expected a readable file");
+            "parameter 'points' = '/nonexistent.yaml': expected a readable file; there is no "
+            "file /nonexistent.yaml");
+  // Where a node looks for a relative path, and that `~` is not the home directory.
+  EXPECT_NE(messageOf([] {
+              readConfigFile("robot.yaml", "layout", "a readable file");
+            }).find("a relative path is read from the node's working directory"),
+            std::string::npos);
+  EXPECT_NE(messageOf([] {
+              readConfigFile("~/robot.yaml", "layout", "a readable file");
+            }).find("'~' is not expanded"),
+            std::string::npos);
   EXPECT_EQ(loadConfigYaml("a: [1, 2]\n", "layout", path)["a"].size(), 2u);
   EXPECT_NE(messageOf([] {
               loadConfigYaml("a: [1, 2\n", "layout", "x.yaml");
