@@ -44,6 +44,11 @@ python3 "$repo/scripts/real_recordings.py" --work "$real_work" --runs static --m
 rm -rf "$real_work"
 # Every command README.md and doc/ show, run against the simulator (scripts/docs_test.py).
 python3 "$repo/scripts/docs_test.py" || status=1
+# A new user's path (issue 33): the small kit's layout on simulated serial devices,
+# calibrated from tape points, following with the demo's verdict passed.
+kit_work="$(mktemp -d)"
+bash "$repo/scripts/kit_path.sh" "$kit_work" || status=1
+rm -rf "$kit_work"
 
 # Packaging (doc/packaging.md), from nothing the dev build made: radio_follow configures
 # and builds next to a package with clashing target names, and the .deb builds, installs

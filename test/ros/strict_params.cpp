@@ -79,6 +79,12 @@ TEST(StrictParams, MisspeltParameterIsRefusedWithASuggestion) {
   expectRefused("dwm1001_driver", "_port:=/dev/null _baud_rate:=9600", {"'~baud_rate'"});
 }
 
+TEST(StrictParams, ALowerCaseModuleNamespaceIsRefusedWithTheOneTheLocatorUses) {
+  // dwm1001_driver.launch id:=5a84 would publish on uwb/5a84/ranges, unheard.
+  expectRefused("dwm1001_driver", "__ns:=/uwb/5a84 _port:=/dev/null",
+                {"/uwb/5a84", "/uwb/5A84", "id:=5A84"});
+}
+
 TEST(StrictParams, WrongTypeIsRefusedNotReplacedByTheDefault) {
   expectRefused("velocity_controller", "_safe_distance:=abc", {"'~safe_distance'", "'abc'"});
   expectRefused("velocity_controller", "_rate:=fast", {"'~rate'", "'fast'"});

@@ -15,23 +15,32 @@ OutputDiagnostic::Bounds OutputDiagnostic::Bounds::forDriver(double silence_time
 OutputDiagnostic::OutputDiagnostic(diagnostic_updater::Updater& updater, const std::string& label,
                                    const ros::Publisher& publisher, const Bounds& bounds,
                                    bool stamped)
-    : bounds_(bounds) {
-  const std::string name = label + " " + publisher.getTopic();
-  const diagnostic_updater::FrequencyStatusParam rate(&bounds_.min_hz, &bounds_.max_hz, 0.1, 5);
-  if (stamped) {
-    stamped_ = std::make_unique<diagnostic_updater::TopicDiagnostic>(
-        name, updater, rate,
-        diagnostic_updater::TimeStampStatusParam(bounds_.min_age, bounds_.max_age));
-  } else {
-    headerless_ =
-        std::make_unique<diagnostic_updater::HeaderlessTopicDiagnostic>(name, updater, rate);
+    : updater_(updater),
+      name_(label + " " + publisher.getTopic()),
+      stamped_output_(stamped),
+      bounds_(bounds) {
+  if (bounds_.min_hz > 0.0) {
+    std::call_once(created_, [this] { create(); });
   }
   ROS_DEBUG_NAMED("wiring", "%s: publishes %s (rate diagnostic %.2f-%.2f Hz%s)",
                   ros::this_node::getName().c_str(), publisher.getTopic().c_str(), bounds_.min_hz,
                   bounds_.max_hz, stamped ? ", stamp age checked" : "");
 }
 
+void OutputDiagnostic::create() {
+  const diagnostic_updater::FrequencyStatusParam rate(&bounds_.min_hz, &bounds_.max_hz, 0.1, 5);
+  if (stamped_output_) {
+    stamped_ = std::make_unique<diagnostic_updater::TopicDiagnostic>(
+        name_, updater_, rate,
+        diagnostic_updater::TimeStampStatusParam(bounds_.min_age, bounds_.max_age));
+  } else {
+    headerless_ =
+        std::make_unique<diagnostic_updater::HeaderlessTopicDiagnostic>(name_, updater_, rate);
+  }
+}
+
 void OutputDiagnostic::tick(const ros::Time& stamp) {
+  std::call_once(created_, [this] { create(); });
   if (stamped_) {
     stamped_->tick(stamp);
   } else {
@@ -40,6 +49,7 @@ void OutputDiagnostic::tick(const ros::Time& stamp) {
 }
 
 void OutputDiagnostic::tick() {
+  std::call_once(created_, [this] { create(); });
   if (stamped_) {
     stamped_->tick(ros::Time::now());
   } else {

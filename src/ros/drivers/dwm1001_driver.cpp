@@ -26,6 +26,22 @@ std::string hardwareId(const Dwm1001DriverNode::Params& params) {
   return params.tag_id.empty() ? params.port : params.port + " (module " + params.tag_id + ")";
 }
 
+// The locator and the layout spell module IDs in upper case: a driver in uwb/5a84 would
+// publish where nobody listens, so it stops at start saying so (roslaunch cannot
+// upper-case an argument: its $(eval) turns "0123" into 123).
+const ros::NodeHandle& requireUpperCaseId(const ros::NodeHandle& private_nh) {
+  const std::string ns = ros::this_node::getNamespace();
+  const auto slash = ns.rfind('/');
+  const std::string parent = slash == std::string::npos ? "" : ns.substr(0, slash);
+  const std::string id = slash == std::string::npos ? ns : ns.substr(slash + 1);
+  if (parent.size() >= 4 && parent.compare(parent.size() - 4, 4, "/uwb") == 0) {
+    require(normalizeId(id) == id, "namespace", ns,
+            "the module ID in upper case, " + parent + "/" + normalizeId(id) +
+                ", where the locator listens (launch with id:=" + normalizeId(id) + ")");
+  }
+  return private_nh;
+}
+
 }  // namespace
 
 void Dwm1001DriverNode::Params::load(const ParamReader& private_nh) {
@@ -50,7 +66,7 @@ void Dwm1001DriverNode::Params::validate() const {
 }
 
 Dwm1001DriverNode::Dwm1001DriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
-    : Dwm1001DriverNode(nh, private_nh, loadStrict<Params>(private_nh)) {}
+    : Dwm1001DriverNode(nh, private_nh, loadStrict<Params>(requireUpperCaseId(private_nh))) {}
 
 Dwm1001DriverNode::Dwm1001DriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh,
                                      const Params& params)

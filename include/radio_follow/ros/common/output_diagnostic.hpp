@@ -6,6 +6,7 @@
 #include <ros/ros.h>
 
 #include <memory>
+#include <mutex>
 #include <string>
 
 namespace radio_follow {
@@ -30,7 +31,10 @@ class OutputDiagnostic {
     static Bounds forDriver(double silence_timeout, double max_hz);
   };
 
-  /// `stamped` = the messages have a header: the stamp's age is checked too.
+  /// `stamped` = the messages have a header: the stamp's age is checked too. An output
+  /// with no lower rate (`min_hz` 0: it may have nothing to say, like a module's own
+  /// position) gets its status only once it has published: before, diagnostic_updater
+  /// would report ERROR "No events recorded" for an output that is fine unused.
   OutputDiagnostic(diagnostic_updater::Updater& updater, const std::string& label,
                    const ros::Publisher& publisher, const Bounds& bounds, bool stamped);
   OutputDiagnostic(const OutputDiagnostic&) = delete;  // the updater holds pointers into it
@@ -42,6 +46,12 @@ class OutputDiagnostic {
   void tick();
 
  private:
+  void create();
+
+  diagnostic_updater::Updater& updater_;
+  std::string name_;
+  bool stamped_output_;
+  std::once_flag created_;
   Bounds bounds_;  // FrequencyStatusParam keeps pointers to min_hz / max_hz
   std::unique_ptr<diagnostic_updater::TopicDiagnostic> stamped_;
   std::unique_ptr<diagnostic_updater::HeaderlessTopicDiagnostic> headerless_;
