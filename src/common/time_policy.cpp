@@ -7,7 +7,7 @@ namespace radio_follow {
 
 TimePolicy::Verdict TimePolicy::check(double stamp, double now) {
   // A NaN stamp cannot be placed in time: as untrustworthy as one from the future.
-  if (!(stamp <= now + kFutureStampTolerance)) {
+  if (!(stamp <= now + future_tolerance_)) {
     ++future_refused_;
     return Verdict::kFuture;
   }

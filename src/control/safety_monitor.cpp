@@ -69,6 +69,7 @@ bool SafetyMonitor::onRange(double stamp, double now, const std::string& source,
     block(now, StopReason::kFutureStamp);
     return true;
   }
+  stamp = TimePolicy::received(stamp, now);
   // A NaN range cannot prove the target is far away: it counts as a violation. A stale
   // one too: it says the person was close, and the hold runs from when we heard it.
   const bool violation = !(range >= params_.safe_distance);
@@ -100,6 +101,7 @@ bool SafetyMonitor::onEstimate(double stamp, double now, EstimateQuality quality
     block(now, StopReason::kFutureStamp);
     return false;
   }
+  stamp = TimePolicy::received(stamp, now);
   if (!has_estimate_ || stamp >= estimate_stamp_) {
     has_estimate_ = true;
     estimate_stamp_ = stamp;

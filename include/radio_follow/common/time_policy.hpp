@@ -12,6 +12,20 @@ namespace radio_follow {
 /// freshness timeout (estimate_timeout 0.5 s, range_timeout 1 s) it could extend.
 constexpr double kFutureStampTolerance = 0.05;
 
+/// The same under simulated time (/use_sim_time: the simulator, a replayed bag), seconds
+/// of that clock. There each node's clock is the last /clock message its roscpp thread
+/// handled, so on a busy machine a receiver's clock trails its sender's by a scheduling
+/// delay: tens of milliseconds of wall time, times the time factor (the demo runs at 4x).
+/// 0.5 s admits 0.125 s of wall delay at 4x. A stamp within the tolerance is taken as
+/// received now (never as fresher), so a wider tolerance keeps nothing fresh for longer;
+/// a stamp beyond it still stops the robot.
+constexpr double kSimFutureStampTolerance = 0.5;
+
+/// The tolerance for a receiver on the wall clock (false) or on simulated time (true).
+constexpr double futureStampTolerance(bool simulated_time) {
+  return simulated_time ? kSimFutureStampTolerance : kFutureStampTolerance;
+}
+
 /// A clock that steps back by more than this has jumped (a bag played with --loop, a
 /// simulator restarted under /use_sim_time, a wall clock set back), seconds. Smaller
 /// steps are jitter between callbacks reading the clock.
@@ -19,8 +33,10 @@ constexpr double kClockJumpTolerance = 0.1;
 
 /// The project's one time rule for received stamps (doc/time.md): every freshness
 /// decision is `now - stamp` on the receiver's clock, and
-/// - a stamp more than kFutureStampTolerance ahead of `now` is refused and counted: it
-///   would otherwise look fresh for as long as it stays ahead;
+/// - a stamp more than the future tolerance (kFutureStampTolerance on the wall clock,
+///   futureStampTolerance()) ahead of `now` is refused and counted: it would otherwise
+///   look fresh for as long as it stays ahead; the consumer takes one within the
+///   tolerance as received at `now` (received());
 /// - a stamp that is old is stale by age, the consumer decides what that means (a short
 ///   range still stops the robot; it just does not count as fresh);
 /// - the receiver's own clock running backwards beyond kClockJumpTolerance is reported
@@ -30,8 +46,17 @@ class TimePolicy {
  public:
   enum class Verdict { kFresh, kFuture };
 
+  explicit TimePolicy(double future_tolerance = kFutureStampTolerance)
+      : future_tolerance_(future_tolerance) {}
+
   /// Classifies `stamp` received at `now`; counts refusals.
   Verdict check(double stamp, double now);
+  /// The time a stamp that check() accepted counts as: never later than `now`, so a
+  /// tolerated lead cannot keep it fresh for longer.
+  static double received(double stamp, double now) { return stamp < now ? stamp : now; }
+
+  double futureTolerance() const { return future_tolerance_; }
+  void setFutureTolerance(double seconds) { future_tolerance_ = seconds; }
 
   /// True once each time `now` is more than kClockJumpTolerance before the latest `now`
   /// seen; the latest time then restarts from `now`. Counts jumps.
@@ -41,6 +66,7 @@ class TimePolicy {
   std::uint64_t clockJumps() const { return clock_jumps_; }
 
  private:
+  double future_tolerance_;
   bool has_now_ = false;
   double latest_now_ = 0.0;
   std::uint64_t future_refused_ = 0;

@@ -107,6 +107,8 @@ class CommandPipeline {
   void setParams(const CommandPipelineParams& params);
   const CommandPipelineParams& params() const { return params_; }
   const SafetyMonitor& monitor() const { return monitor_; }
+  /// How far ahead of `now` a stamp may be (futureStampTolerance of the receiver's clock).
+  void setFutureTolerance(double seconds) { monitor_.setFutureTolerance(seconds); }
 
  private:
   CommandPipelineParams params_;

@@ -92,6 +92,8 @@ class SafetyMonitor {
 
   /// Stamps refused as from the future, clock jumps seen.
   const TimePolicy& time() const { return time_; }
+  /// How far ahead of `now` a stamp may be (futureStampTolerance of the receiver's clock).
+  void setFutureTolerance(double seconds) { time_.setFutureTolerance(seconds); }
 
  private:
   StopReason rawReason(double now);

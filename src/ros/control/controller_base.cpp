@@ -12,6 +12,7 @@
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/common/param_keys.hpp"
 #include "radio_follow/common/plausibility.hpp"
+#include "radio_follow/common/time_policy.hpp"
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/ros/common/params.hpp"
 #include "radio_follow/ros/common/wiring_debug.hpp"
@@ -77,6 +78,9 @@ ControllerBase::ControllerBase(ros::NodeHandle& nh, ros::NodeHandle& private_nh,
         return p;
       }()),
       pipeline_(common_) {
+  // The clock decides how far ahead a stamp may be (time_policy.hpp): a few ms between
+  // wall clocks, a scheduling delay times the time factor between simulated ones.
+  pipeline_.setFutureTolerance(futureStampTolerance(ros::Time::isSimTime()));
   warnUncalibrated();
 }
 

@@ -116,6 +116,7 @@ FollowEvaluatorNode::FollowEvaluatorNode(ros::NodeHandle& nh, ros::NodeHandle& p
             "a directory that exists or can be created (" + error.message() + ")");
   }
   metrics_ = evaluation::FollowMetrics(params_.settings);
+  time_.setFutureTolerance(futureStampTolerance(ros::Time::isSimTime()));  // as the controllers
 
   odom_sub_ = barrier_.subscribe<nav_msgs::Odometry>(
       nh, "odom", 10, [this](const nav_msgs::OdometryConstPtr& m) { odom_ = m; });

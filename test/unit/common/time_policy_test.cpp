@@ -19,6 +19,21 @@ TEST(TimePolicy, FutureBeyondToleranceIsRefusedAndCounted) {
   EXPECT_EQ(policy.futureRefused(), 2u);
 }
 
+// Issue 33: on simulated time a busy receiver's clock trails its sender's; the tolerance
+// comes from the clock, and a tolerated stamp never counts as newer than its receipt.
+TEST(TimePolicy, TheToleranceIsTheClocksAndALeadNeverExtendsFreshness) {
+  EXPECT_EQ(futureStampTolerance(false), kFutureStampTolerance);
+  EXPECT_EQ(futureStampTolerance(true), kSimFutureStampTolerance);
+  TimePolicy simulated(futureStampTolerance(true));
+  EXPECT_EQ(simulated.check(10.3, 10.0), TimePolicy::Verdict::kFresh);   // 0.3 s behind
+  EXPECT_EQ(simulated.check(10.6, 10.0), TimePolicy::Verdict::kFuture);  // truly ahead
+  EXPECT_EQ(simulated.check(40.0, 10.0), TimePolicy::Verdict::kFuture);
+  EXPECT_EQ(TimePolicy::received(10.3, 10.0), 10.0);
+  EXPECT_EQ(TimePolicy::received(9.7, 10.0), 9.7);
+  TimePolicy wall;
+  EXPECT_EQ(wall.check(10.3, 10.0), TimePolicy::Verdict::kFuture);
+}
+
 TEST(TimePolicy, ClockJumpBackIsReportedOnce) {
   TimePolicy policy;
   EXPECT_FALSE(policy.jumpedBack(100.0));

@@ -180,6 +180,23 @@ TEST(SafetyMonitorTime, RangeFromTheFutureStopsAtOnce) {
   EXPECT_FALSE(skewed.onRange(0.02, 0.0, "a", 3.0));
 }
 
+// Issue 33: on simulated time a busy controller's clock trails the locator's by tens of
+// ms times the time factor; such a lead must not stop the robot, and must not keep the
+// estimate fresh for longer either (its age runs from its receipt).
+TEST(SafetyMonitorTime, ASimulatedClocksLagIsToleratedButNeverExtendsFreshness) {
+  SafetyMonitor monitor = enabledMonitor();  // estimate_timeout 0.5 s
+  monitor.setFutureTolerance(kSimFutureStampTolerance);
+  monitor.onRange(10.3, 10.0, "a", 3.0);
+  EXPECT_TRUE(monitor.onEstimate(10.3, 10.0, EstimateQuality::kUsable));  // 0.3 s ahead
+  EXPECT_TRUE(monitor.evaluate(10.45).may_move);
+  EXPECT_FALSE(monitor.evaluate(10.55).may_move);  // 0.55 s after receipt: stale
+  EXPECT_EQ(monitor.time().futureRefused(), 0u);
+  // Truly ahead (beyond the simulated clock's tolerance) still stops.
+  EXPECT_FALSE(monitor.onEstimate(11.2, 10.6, EstimateQuality::kUsable));
+  EXPECT_FALSE(monitor.evaluate(10.6).may_move);
+  EXPECT_EQ(monitor.time().futureRefused(), 1u);
+}
+
 // A short range that arrives late (stamp older than range_timeout) used to stop the robot
 // for one tick in three: the hold ran from its stamp, already in the past.
 TEST(SafetyMonitorTime, StaleShortRangeHoldsFromItsReceiveTimeWithoutFlapping) {
