@@ -76,11 +76,7 @@ UbloxAoaDriverNode::Params boardDriverParams(const UbloxAoaDriverNode::Params& s
 }
 
 LayoutDriversNode::LayoutDriversNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh) {
-  const ParamReader reader(private_nh);
-  Params params;
-  params.load(reader);
-  reader.requireAllKnown();
-  params.validate();
+  const Params params = loadStrict<Params>(private_nh);
   const Layout layout = loadLayoutFile(params.layout_file);
   const auto module_shared = loadShared<Dwm1001DriverNode::Params>(private_nh, kModuleNamespace);
   const auto board_shared = loadShared<UbloxAoaDriverNode::Params>(private_nh, kBoardNamespace);
