@@ -154,7 +154,8 @@ LawOutput PathFollowLaw::step(const TargetPolar& target, const std::optional<Pos
   const double speed_ahead = walking_speed.value_or(0.0);
   double speed = gapSpeed(gap, speed_ahead, dt, speed_pid_, law_);
   speed *= std::max(0.0, std::cos(alpha));
-  if (target.degraded) {
+  const Caution why = caution(target, law_);
+  if (why != Caution::kNone) {
     speed *= law_.degraded_speed_factor;
   }
   out.command.linear = speed;
@@ -166,10 +167,8 @@ LawOutput PathFollowLaw::step(const TargetPolar& target, const std::optional<Pos
   if (arrived_) {
     out.state = FollowerState::kArrived;
     out.text = "At follow distance, waiting.";
-  } else if (target.degraded) {
-    out.text = "Following the path slowly, the position is uncertain.";
   } else {
-    out.text = "Following the path.";
+    out.text = followingText("Following the path", target, why);
   }
   return out;
 }

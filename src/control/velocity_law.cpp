@@ -27,7 +27,12 @@ const ParamTable<VelocityLawParams>& VelocityLawParams::table() {
           .add("feed_forward", &P::feed_forward, "",
                "Fraction of the target's own speed added to the command.", Range::closed(0.0, 1.0))
           .add("degraded_speed_factor", &P::degraded_speed_factor, "",
-               "Speed factor while the estimate is DEGRADED.", Range::closed(0.0, 1.0))
+               "Speed factor while a DEGRADED estimate is too uncertain to steer by.",
+               Range::closed(0.0, 1.0))
+          .add("max_follow_sigma", &P::max_follow_sigma, "m",
+               "A DEGRADED estimate within this range sigma, and bearing sigma sideways at the "
+               "follow distance, is followed at full speed.",
+               Range::above(0.0))
           .add("allow_backwards", &P::allow_backwards, "",
                "Drive backwards when the target stays behind (reversible robots only).")
           .addScaled("backwards_angle_deg", &P::backwards_angle, kPi / 180.0, "deg",
@@ -65,6 +70,38 @@ double slowdownCap(double gap, double slowdown_distance, double closing_distance
     return std::min(max_speed, v + (max_speed - v) * gap / slowdown_distance);
   }
   return v * std::max(0.0, 1.0 + gap / closing_distance);
+}
+
+Caution caution(const TargetPolar& target, const VelocityLawParams& params) {
+  if (!target.degraded) {
+    return Caution::kNone;
+  }
+  if (target.mirror) {
+    return Caution::kMirror;
+  }
+  if (!(target.range_sigma <= params.max_follow_sigma)) {
+    return Caution::kRange;
+  }
+  const bool steerable = target.bearing_sigma < 0.5 * kPi &&
+                         params.follow_distance * std::tan(target.bearing_sigma) <=
+                             params.max_follow_sigma;
+  return steerable ? Caution::kNone : Caution::kBearing;
+}
+
+std::string followingText(const std::string& what, const TargetPolar& target, Caution why) {
+  // No figures: the announcer speaks every new text, and a figure would change it with
+  // every estimate. The locator's diagnostics carry the sigmas.
+  switch (why) {
+    case Caution::kMirror:
+      return what + " slowly, the target may be at its mirror image.";
+    case Caution::kRange:
+      return what + " slowly, the distance is uncertain.";
+    case Caution::kBearing:
+      return what + " slowly, the direction is uncertain.";
+    case Caution::kNone:
+      break;
+  }
+  return target.degraded ? what + ", the direction is approximate." : what + ".";
 }
 
 bool updateArrived(bool arrived, double gap, double target_speed) {
@@ -142,7 +179,7 @@ VelocityCommand VelocityLaw::update(const TargetPolar& target, double dt) {
   // Do not drive forward while the target is off to the side: cos() fades speed to zero
   // at 90 deg so the robot turns first instead of circling.
   speed *= std::max(0.0, std::cos(heading_error));
-  if (target.degraded) {
+  if (caution(target, params_) != Caution::kNone) {
     speed *= params_.degraded_speed_factor;
   }
   cmd.linear = backwards_ ? -speed : speed;
@@ -157,11 +194,9 @@ LawOutput VelocityLaw::step(const TargetPolar& target, double dt) {
   } else if (arrived()) {
     out.state = FollowerState::kArrived;
     out.text = "At follow distance, waiting.";
-  } else if (target.degraded) {
-    out.text = driving_backwards() ? "Following backwards slowly, the position is uncertain."
-                                   : "Following slowly, the position is uncertain.";
   } else {
-    out.text = driving_backwards() ? "Following backwards." : "Following.";
+    out.text = followingText(driving_backwards() ? "Following backwards" : "Following", target,
+                             caution(target, params_));
   }
   return out;
 }

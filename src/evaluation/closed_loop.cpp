@@ -367,14 +367,18 @@ void ClosedLoop::runController(double now) {
     const double range = e.position.head<2>().norm();
     const double bearing = std::atan2(e.position.y(), e.position.x());
     const double module_gap = pipeline_.moduleGap(now);
+    const PolarSpread spread =
+        polarSpread(e.position.head<2>(), e.covariance.topLeftCorner<2, 2>());
     control::LawOutput out;
     if (config_.controller == FollowController::kVelocity) {
       const std::optional<double> receding =
           config_.feed_forward_from_odometry ? track_.recedingSpeed(now) : std::nullopt;
-      out = velocity_law_.step(targetPolar(e.status, range, bearing, receding, module_gap), dt);
+      out = velocity_law_.step(
+          targetPolar(e.status, range, bearing, spread, e.hypotheses, receding, module_gap), dt);
     } else {
-      out = path_law_.step(targetPolar(e.status, range, bearing, std::nullopt, module_gap),
-                           poses_.back().pose, track_.speed(now), dt);
+      out = path_law_.step(
+          targetPolar(e.status, range, bearing, spread, e.hypotheses, std::nullopt, module_gap),
+          poses_.back().pose, track_.speed(now), dt);
     }
     result = pipeline_.finish(out, now, dt);
   }

@@ -35,8 +35,16 @@ struct VelocityLawParams {
   /// It lets the robot match a walking person at the follow distance instead of trailing
   /// by the gap error the slow-down ramp needs.
   double feed_forward = 1.0;
-  /// Linear speed is multiplied by this while the estimate is DEGRADED.
+  /// Linear speed is multiplied by this while a DEGRADED estimate is too uncertain to
+  /// steer by (caution()): a mirror hypothesis, or a spread beyond max_follow_sigma.
   double degraded_speed_factor = 0.5;
+  /// A DEGRADED estimate is followed at full speed while its range sigma, and its bearing
+  /// sigma as a sideways distance at the follow distance, are at most this, metres. The
+  /// locator calls an estimate OK when its worst sigma is within 0.5 m (max_position_sigma)
+  /// or a share of the distance; far away, a bearing spread of a few degrees is metres
+  /// sideways and the estimate DEGRADED, though steering needs only the angle: the robot
+  /// heads along the bearing and the sideways error shrinks as it closes in.
+  double max_follow_sigma = 0.5;
   /// Maximum forward speed, m/s (also the linear PID's output limit).
   double max_linear = 1.5;
   /// The base's braking deceleration (MotionLimits::max_linear_decel, copied by the node),
@@ -67,7 +75,14 @@ struct TargetPolar {
   double bearing = 0.0;  ///< rad, CCW from the robot's x axis
   /// false for HEADING_ONLY estimates: turn towards the target, never drive forward.
   bool range_valid = true;
+  /// The estimate is DEGRADED: too wide to be OK where it is (see caution()).
   bool degraded = false;
+  /// 1-sigma spread of the position along the line of sight, m, and of the bearing, rad
+  /// (common/geometry.hpp polarSpread); +inf when unknown.
+  double range_sigma = 0.0;
+  double bearing_sigma = 0.0;
+  /// The locator holds a second hypothesis: the person may be at the mirror image.
+  bool mirror = false;
   /// The target's ground speed away from the robot along the line of sight, m/s
   /// (negative: walking towards it); 0 when unknown (no odometry).
   double receding_speed = 0.0;
@@ -107,6 +122,25 @@ class VelocityLaw {
   int behind_count_ = 0;
   bool arrived_ = false;
 };
+
+/// Why a DEGRADED estimate slows the robot to degraded_speed_factor, or kNone.
+enum class Caution {
+  kNone,     ///< OK, or DEGRADED but within max_follow_sigma: full speed
+  kMirror,   ///< a mirror hypothesis holds probability: either side may be the person
+  kRange,    ///< range sigma beyond max_follow_sigma
+  kBearing,  ///< bearing sigma beyond max_follow_sigma sideways at the follow distance
+};
+
+/// What the laws slow down for. Only a DEGRADED estimate can: one with a mirror
+/// hypothesis, else one whose range sigma or whose bearing sigma (as a sideways sigma at
+/// the follow distance, follow_distance * tan(bearing_sigma)) exceeds max_follow_sigma.
+/// An unknown (non-finite) spread is too wide.
+Caution caution(const TargetPolar& target, const VelocityLawParams& params);
+
+/// The status text of a follower that drives `what` ("Following", "Following the
+/// path", ...): plain for an OK estimate; "the direction is approximate" for a DEGRADED
+/// one followed at full speed; "slowly" and the reason otherwise.
+std::string followingText(const std::string& what, const TargetPolar& target, Caution why);
 
 /// Gap (m) beyond the follow distance at which an arrived follower reports following again.
 constexpr double kArrivalHysteresis = 0.1;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <optional>
 
+#include "radio_follow/common/geometry.hpp"
 #include "radio_follow/common/plausibility.hpp"
 #include "radio_follow/control/safety_monitor.hpp"
 #include "radio_follow/control/velocity_law.hpp"
@@ -29,12 +30,16 @@ inline control::EstimateQuality estimateQuality(estimation::TargetStatus status,
              : control::EstimateQuality::kLost;
 }
 
-/// The velocity law's input: HEADING_ONLY has no range, DEGRADED is flagged, the
-/// target's receding speed when known, the nearest module's gap to the stop.
+/// The velocity law's input: HEADING_ONLY has no range, DEGRADED is flagged with the
+/// way it is uncertain (`spread` of the position, a second hypothesis: `hypotheses` 2),
+/// the target's receding speed when known, the nearest module's gap to the stop.
 inline control::TargetPolar targetPolar(estimation::TargetStatus status, double range,
-                                        double bearing, std::optional<double> receding_speed,
-                                        double module_gap) {
+                                        double bearing, const PolarSpread& spread, int hypotheses,
+                                        std::optional<double> receding_speed, double module_gap) {
   control::TargetPolar t;
+  t.range_sigma = spread.range_sigma;
+  t.bearing_sigma = spread.bearing_sigma;
+  t.mirror = hypotheses >= 2;
   t.receding_speed = receding_speed.value_or(0.0);
   t.module_gap = module_gap;
   t.range = range;

@@ -2,6 +2,7 @@
 #include "radio_follow/ros/control/velocity_controller.hpp"
 
 #include "radio_follow/common/angles.hpp"
+#include "radio_follow/common/geometry.hpp"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/evaluation/follow_inputs.hpp"
 #include "radio_follow/ros/common/params.hpp"
@@ -12,8 +13,14 @@ namespace radio_follow {
 
 control::TargetPolar targetPolar(const TargetEstimate& estimate,
                                  std::optional<double> receding_speed, double module_gap) {
+  const auto& c = estimate.position_covariance;  // row-major 3x3
+  Eigen::Matrix2d covariance;
+  covariance << c[0], c[1], c[3], c[4];
+  const PolarSpread spread =
+      polarSpread(Eigen::Vector2d(estimate.position.x, estimate.position.y), covariance);
   return evaluation::targetPolar(static_cast<estimation::TargetStatus>(estimate.status),
-                                 estimate.range, estimate.bearing, receding_speed, module_gap);
+                                 estimate.range, estimate.bearing, spread, estimate.hypotheses,
+                                 receding_speed, module_gap);
 }
 
 void VelocityControllerNode::Params::load(const ParamReader& pnh) {

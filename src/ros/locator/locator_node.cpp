@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/ros/locator/locator_node.hpp"
 
+#include "radio_follow/common/geometry.hpp"
+
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <geometry_msgs/TransformStamped.h>
 
@@ -258,6 +260,7 @@ void LocatorNode::onTimer(const ros::TimerEvent& /*event*/) {
     ROS_INFO("locator: target %s -> %s", toString(last_status_), toString(estimate.status));
     last_status_ = estimate.status;
   }
+  last_spread_ = polarSpread(estimate.position.head<2>(), estimate.covariance.topLeftCorner<2, 2>());
   publish(estimate, now);
   watchInputs(now);
   diagnostics_.update();
@@ -361,6 +364,13 @@ void LocatorNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) 
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN, toString(last_status_));
   }
   status.add("status", toString(last_status_));
+  if (estimation::hasPosition(last_status_)) {
+    // Which way the estimate is uncertain: a DEGRADED range-only track is sure of the
+    // distance and not of the direction (the controllers follow it at full speed while
+    // the direction is within their max_follow_sigma).
+    status.addf("range sigma", "%.3f m", last_spread_.range_sigma);
+    status.addf("bearing sigma", "%.1f deg", last_spread_.bearing_sigma * 180.0 / M_PI);
+  }
   status.add("updates", s.updates);
   status.add("solves", s.solves);
   status.add("solver failures", s.solver_failures);

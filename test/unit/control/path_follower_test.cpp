@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "radio_follow/common/angles.hpp"
 
@@ -94,6 +95,34 @@ TEST(PathFollowLaw, DrivesStraightWithoutOdometryOrBeforeTheFirstPathPoint) {
   out = law.step(ahead, Pose2{}, std::nullopt, 0.05);
   EXPECT_EQ(out.text.find("driving straight"), std::string::npos) << out.text;
   EXPECT_GT(out.command.linear, 0.0);
+}
+
+TEST(PathFollowLaw, SlowsForADegradedEstimateOnlyWhenItCannotSteerByIt) {
+  const VelocityLawParams law_params;
+  TargetPolar far;
+  far.range = 6.0;
+  far.degraded = true;
+  far.range_sigma = 0.05;
+  far.bearing_sigma = 0.12;  // 7 deg: 0.19 m sideways at the follow distance
+  const auto speed = [&](const TargetPolar& t, std::string* text) {
+    PathFollowLaw law{PathFollowParams{}, law_params};
+    EXPECT_TRUE(law.addTarget(Eigen::Vector2d(6.0, 0.0)));
+    const LawOutput out = law.step(t, Pose2{}, 1.0, 0.05);
+    *text = out.text;
+    return out.command.linear;
+  };
+  std::string text;
+  TargetPolar ok = far;
+  ok.degraded = false;
+  const double full = speed(ok, &text);
+  EXPECT_EQ(text, "Following the path.");
+  EXPECT_GT(full, 1.0);
+  EXPECT_NEAR(speed(far, &text), full, 1e-12);
+  EXPECT_EQ(text, "Following the path, the direction is approximate.");
+  TargetPolar mirror = far;
+  mirror.mirror = true;
+  EXPECT_NEAR(speed(mirror, &text), law_params.degraded_speed_factor * full, 1e-12);
+  EXPECT_EQ(text, "Following the path slowly, the target may be at its mirror image.");
 }
 
 }  // namespace

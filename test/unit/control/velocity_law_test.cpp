@@ -223,13 +223,73 @@ TEST(VelocityLaw, HeadingOnlyTurnsButDoesNotDrive) {
   EXPECT_LT(cmd.angular, 0.0);
 }
 
-TEST(VelocityLaw, DegradedDrivesSlower) {
+// A DEGRADED estimate of a range-only robot far away: the range sure to 5 cm, the
+// bearing to 7 deg (tracked.yaml at 6 m: 0.7 m sideways, so not OK there), which at the
+// follow distance is 0.2 m sideways, within max_follow_sigma (0.5 m).
+TargetPolar farRangeOnly() {
+  TargetPolar t = target(6.0, 0.05);
+  t.degraded = true;
+  t.range_sigma = 0.05;
+  t.bearing_sigma = deg2rad(7.0);
+  return t;
+}
+
+TEST(VelocityLaw, ADegradedEstimateSureEnoughToSteerByIsFollowedAtFullSpeed) {
   VelocityLaw ok_law{VelocityLawParams()};
   VelocityLaw degraded_law{VelocityLawParams()};
-  TargetPolar t = target(4.0, 0.0);
-  const double ok = ok_law.update(t, 0.05).linear;
-  t.degraded = true;
-  EXPECT_NEAR(degraded_law.update(t, 0.05).linear, 0.5 * ok, 1e-12);
+  TargetPolar ok = farRangeOnly();
+  ok.degraded = false;
+  EXPECT_EQ(caution(farRangeOnly(), VelocityLawParams()), Caution::kNone);
+  const double full = ok_law.update(ok, 0.05).linear;
+  EXPECT_GT(full, 1.0);
+  EXPECT_NEAR(degraded_law.update(farRangeOnly(), 0.05).linear, full, 1e-12);
+  VelocityLaw law{VelocityLawParams()};
+  EXPECT_EQ(law.step(farRangeOnly(), 0.05).text, "Following, the direction is approximate.");
+  EXPECT_EQ(law.step(ok, 0.05).text, "Following.");
+}
+
+TEST(VelocityLaw, DegradedDrivesSlowerForAMirrorAWideBearingOrAWideRange) {
+  const VelocityLawParams params;
+  const double full = VelocityLaw(params).update(farRangeOnly(), 0.05).linear;
+  TargetPolar mirror = farRangeOnly();
+  mirror.mirror = true;
+  TargetPolar wide_bearing = farRangeOnly();
+  // 1.6 m x tan(18 deg) = 0.52 m sideways at the follow distance: beyond 0.5 m.
+  wide_bearing.bearing_sigma = deg2rad(18.0);
+  TargetPolar wide_range = farRangeOnly();
+  wide_range.range_sigma = 0.6;
+  TargetPolar unknown = farRangeOnly();
+  unknown.bearing_sigma = std::numeric_limits<double>::infinity();
+  const struct {
+    TargetPolar target;
+    Caution why;
+    const char* text;
+  } cases[] = {
+      {mirror, Caution::kMirror, "Following slowly, the target may be at its mirror image."},
+      {wide_bearing, Caution::kBearing, "Following slowly, the direction is uncertain."},
+      {wide_range, Caution::kRange, "Following slowly, the distance is uncertain."},
+      {unknown, Caution::kBearing, "Following slowly, the direction is uncertain."},
+  };
+  for (const auto& c : cases) {
+    EXPECT_EQ(caution(c.target, params), c.why) << c.text;
+    VelocityLaw law(params);
+    const LawOutput out = law.step(c.target, 0.05);
+    EXPECT_NEAR(out.command.linear, params.degraded_speed_factor * full, 1e-12) << c.text;
+    EXPECT_EQ(out.text, c.text);
+  }
+  // The same spreads on an OK estimate: the locator vouches for it, full speed.
+  mirror.degraded = false;
+  wide_bearing.degraded = false;
+  EXPECT_EQ(caution(mirror, params), Caution::kNone);
+  EXPECT_EQ(caution(wide_bearing, params), Caution::kNone);
+}
+
+TEST(VelocityLaw, MaxFollowSigmaIsLiveTunable) {
+  VelocityLawParams params;
+  params.max_follow_sigma = 0.1;  // 1.6 m x tan(7 deg) = 0.196 m: too wide now
+  EXPECT_EQ(caution(farRangeOnly(), params), Caution::kBearing);
+  params.max_follow_sigma = 0.0;
+  EXPECT_THROW(params.validate(), ParamError);
 }
 
 TEST(VelocityLaw, SwitchesToBackwardsAfterFiveCyclesBehind) {

@@ -24,8 +24,9 @@ class FollowLawTuningConfig;
 using control::lawWithCommon;
 using control::loadVelocityLawParams;
 
-/// Converts an estimate into the law's input (HEADING_ONLY -> no range, DEGRADED flag,
-/// the target's receding speed when known, the nearest module's gap to the stop:
+/// Converts an estimate into the law's input (HEADING_ONLY -> no range, DEGRADED flag
+/// with the position's spread along and across the line of sight and the mirror
+/// hypothesis, the target's receding speed when known, the nearest module's gap to the stop:
 /// ControllerBase::moduleGap()).
 control::TargetPolar targetPolar(const TargetEstimate& estimate,
                                  std::optional<double> receding_speed, double module_gap);

@@ -18,6 +18,7 @@
 #include "radio_follow/TargetEstimate.h"
 #include "radio_follow/TdoaMeasurements.h"
 #include "radio_follow/UwbRanges.h"
+#include "radio_follow/common/geometry.hpp"
 #include "radio_follow/common/input_watch.hpp"
 #include "radio_follow/estimation/locator.hpp"
 #include "radio_follow/ros/common/callback_barrier.hpp"
@@ -110,6 +111,7 @@ class LocatorNode {
   estimation::LocatorStats last_stats_;     ///< drop counters at the last tick
   ros::Timer timer_;
   estimation::TargetStatus last_status_ = estimation::TargetStatus::kLost;
+  PolarSpread last_spread_;  ///< of the newest estimate, for diagnostics
   std::size_t ignored_messages_ = 0;
   double solve_seconds_sum_ = 0.0;
   double solve_seconds_max_ = 0.0;
