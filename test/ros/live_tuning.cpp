@@ -6,6 +6,7 @@
 #include <dynamic_reconfigure/Reconfigure.h>
 #include <gtest/gtest.h>
 #include <ros/ros.h>
+#include <ros/topic.h>
 
 #include <limits>
 #include <string>
@@ -107,6 +108,28 @@ TEST_F(LiveTuning, LocatorRefusesAnInvalidChangeAndKeepsTheOldValue) {
   EXPECT_DOUBLE_EQ(param("range_sigma"), 0.05);
   const auto loss = call(withString("range_loss", "quadratic"));
   EXPECT_EQ(stringOf(loss, "range_loss"), "huber");
+}
+
+// The answer says why: `refused` names the parameter, the value and what is expected
+// (what the node logs), and an accepted change clears it. `dynparam get` shows it.
+TEST_F(LiveTuning, ARefusalIsInTheAnswerAndAnAcceptedChangeClearsIt) {
+  const auto refused = call(withDouble("gate_probability", 0.3));
+  const std::string why = stringOf(refused, "refused");
+  EXPECT_NE(why.find("~gate_probability"), std::string::npos) << why;
+  EXPECT_NE(why.find("0.3"), std::string::npos) << why;
+  EXPECT_NE(why.find("expected"), std::string::npos) << why;
+  // What `dynparam get` reads: the server's latched parameter_updates.
+  const auto published = ros::topic::waitForMessage<dynamic_reconfigure::Config>(
+      "locator/parameter_updates", ros::Duration(10.0));
+  ASSERT_TRUE(published);
+  EXPECT_EQ(stringOf(*published, "refused"), why);
+  EXPECT_EQ(stringOf(call(withDouble("gate_probability", 0.99)), "refused"), "");
+  EXPECT_DOUBLE_EQ(param("gate_probability"), 0.99);
+  call(withDouble("gate_probability", 0.999));
+  const auto law = call(withDouble("max_follow_sigma", -1.0), kLawService);
+  EXPECT_NE(stringOf(law, "refused").find("~max_follow_sigma"), std::string::npos)
+      << stringOf(law, "refused");
+  EXPECT_DOUBLE_EQ(doubleOf(law, "max_follow_sigma"), 0.5);
 }
 
 TEST_F(LiveTuning, ControllerSafeDistanceKeepsItsValidation) {

@@ -18,6 +18,9 @@ namespace radio_follow {
 /// request is converted to a `Params`, checked by the same validate() as at startup and
 /// handed to `apply`; a refused request is logged (parameter, value, expectation) and the
 /// old values are pushed back, so a live change can never install what startup refuses.
+/// The answer says so too: its `refused` field (every .cfg has it, kRefusedField) holds
+/// the same reason after a refusal and is empty after an accepted change, so a client
+/// (`dynparam get`, a script reading the service's response) sees the refusal.
 template <typename Tuning, typename Params>
 class ReconfigureServer {
  public:
@@ -45,9 +48,11 @@ class ReconfigureServer {
       next.validate();
       apply_(next);
       current_ = next;
+      request.refused.clear();
     } catch (const ParamError& e) {
       ROS_ERROR("%s: reconfigure refused, old values kept: %s", name_.c_str(), e.what());
       request = to_tuning_(current_);  // the server stores and publishes what is left here
+      request.refused = e.what();
     }
   }
 

@@ -24,6 +24,10 @@ inline std::string tuningName(const std::string& name) {
   return out;
 }
 
+/// The .cfg field every server answers in, not a parameter: the last refused change and
+/// why, empty after an accepted one (ReconfigureServer).
+constexpr char kRefusedField[] = "refused";
+
 /// The table entry behind the .cfg field `field`; throws std::logic_error when there is
 /// none (a .cfg field no parameter backs would be tuned into nothing).
 template <typename S>
@@ -43,6 +47,9 @@ template <typename Config, typename S>
 Config tuningFromTable(const ParamTable<S>& table, const S& s) {
   Config config = Config::__getDefault__();
   for (const auto& d : Config::__getParamDescriptions__()) {
+    if (d->name == kRefusedField) {
+      continue;
+    }
     dynamic_reconfigure::Config msg;
     std::visit(
         [&](const auto& v) { dynamic_reconfigure::ConfigTools::appendParameter(msg, d->name, v); },
@@ -57,6 +64,9 @@ Config tuningFromTable(const ParamTable<S>& table, const S& s) {
 template <typename Config, typename S>
 S tableFromTuning(const ParamTable<S>& table, const Config& config, S s) {
   for (const auto& d : Config::__getParamDescriptions__()) {
+    if (d->name == kRefusedField) {
+      continue;
+    }
     const auto& e = entryForTuning(table, d->name);
     boost::any any;
     d->getValue(config, any);
@@ -72,6 +82,9 @@ S tableFromTuning(const ParamTable<S>& table, const Config& config, S s) {
 template <typename Config, typename S>
 void writeTuned(const ros::NodeHandle& nh, const ParamTable<S>& table, const S& s) {
   for (const auto& d : Config::__getParamDescriptions__()) {
+    if (d->name == kRefusedField) {
+      continue;
+    }
     const auto& e = entryForTuning(table, d->name);
     std::visit([&](const auto& v) { nh.setParam(e.name, v); }, e.get(s));
   }
