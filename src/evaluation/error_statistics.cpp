@@ -150,5 +150,64 @@ std::string ErrorStatistics::toJson() const {
   return out.str();
 }
 
+double missAtTarget(const Eigen::Vector2d& target, double heading) {
+  const Eigen::Vector2d along(std::cos(heading), std::sin(heading));
+  const double ahead = target.dot(along);
+  return ahead > 0.0 ? std::abs(along.x() * target.y() - along.y() * target.x()) : target.norm();
+}
+
+void HeadingStatistics::add(const std::string& status, double heading_error_deg, double miss) {
+  if (!std::isfinite(heading_error_deg) || !std::isfinite(miss)) {
+    return;
+  }
+  for (Samples* s : {&all_, &by_status_[status]}) {
+    s->heading.push_back(heading_error_deg);
+    s->miss.push_back(miss);
+  }
+}
+
+ErrorSummary HeadingStatistics::headingError(const std::string& status) const {
+  if (status.empty()) {
+    return summarize(all_.heading);
+  }
+  const auto it = by_status_.find(status);
+  return summarize(it == by_status_.end() ? std::vector<double>() : it->second.heading);
+}
+
+ErrorSummary HeadingStatistics::miss(const std::string& status) const {
+  if (status.empty()) {
+    return summarize(all_.miss);
+  }
+  const auto it = by_status_.find(status);
+  return summarize(it == by_status_.end() ? std::vector<double>() : it->second.miss);
+}
+
+std::vector<std::string> HeadingStatistics::statuses() const {
+  std::vector<std::string> out;
+  for (const auto& kv : by_status_) {
+    out.push_back(kv.first);
+  }
+  return out;
+}
+
+std::string HeadingStatistics::toJson() const {
+  const auto summary = [](const ErrorSummary& s) {
+    std::ostringstream out;
+    out << "{\"mean\": " << jsonNumber(s.mean) << ", \"median\": " << jsonNumber(s.median)
+        << ", \"p95\": " << jsonNumber(s.p95) << ", \"max\": " << jsonNumber(s.max) << "}";
+    return out.str();
+  };
+  const auto entry = [&](const std::string& name, const std::string& status) {
+    return jsonString(name) + ": {\"count\": " + std::to_string(headingError(status).count) +
+           ", \"heading_error_deg\": " + summary(headingError(status)) +
+           ", \"miss_m\": " + summary(miss(status)) + "}";
+  };
+  std::string out = "{" + entry("all", "");
+  for (const std::string& status : statuses()) {
+    out += ", " + entry(status, status);
+  }
+  return out + "}";
+}
+
 }  // namespace evaluation
 }  // namespace radio_follow

@@ -2,7 +2,8 @@
 // locator_offline: replays the raw sensor messages of a bag through the locator library
 // as fast as the CPU allows, without a ROS master. Writes the estimates (CSV) and, when
 // the bag has the simulator's ground truth, error statistics overall, by direction and by
-// distance; with --sweep, tries every combination of a grid of parameter values and ranks
+// distance, and the heading error and miss at the target by status (HEADING_ONLY too: a
+// layout without ranges is judged on its direction); with --sweep, tries every combination of a grid of parameter values and ranks
 // them. Usage: doc/offline_evaluation.md.
 #include <yaml-cpp/yaml.h>
 
@@ -163,6 +164,26 @@ void printSensorMatch(const rf::BagData& bag, const rf::Layout& layout) {
   }
 }
 
+/// The direction against the truth, by status: what a layout without ranges is judged
+/// on (HEADING_ONLY has no position to compare), and what the robot steers by.
+void printHeading(const rf::evaluation::HeadingStatistics& h) {
+  if (h.empty()) {
+    return;
+  }
+  std::cout << "heading error (deg) and miss at the target (m, its distance from the "
+               "robot's heading ray), median / p95:\n";
+  const auto line = [&](const std::string& name, const std::string& status) {
+    const rf::evaluation::ErrorSummary e = h.headingError(status);
+    const rf::evaluation::ErrorSummary m = h.miss(status);
+    std::cout << "  " << name << ": " << e.median << " / " << e.p95 << " deg, " << m.median
+              << " / " << m.p95 << " m (" << e.count << ")\n";
+  };
+  line("all", "");
+  for (const std::string& status : h.statuses()) {
+    line(status, status);
+  }
+}
+
 void printSummary(const rf::ReplayResult& r, const rf::BagData& bag, const std::string& odom_frame,
                   const std::string& truth_topic) {
   const rf::estimation::OdometryPlacement& placed = r.placement;
@@ -181,9 +202,12 @@ void printSummary(const rf::ReplayResult& r, const rf::BagData& bag, const std::
               << "): estimates only\n";
     return;
   }
+  printHeading(r.heading);
   if (all.count == 0) {
     std::cout << "the bag has " << bag.truth.size() << " ground-truth points on " << truth_topic
-              << ", but no estimate had a position to compare\n";
+              << ", but no estimate had a position to compare"
+              << (r.heading.empty() ? "" : " (directions only: judged by their heading above)")
+              << "\n";
     return;
   }
   std::cout << "error (m): mean " << all.mean << ", median " << all.median << ", p95 " << all.p95
@@ -294,7 +318,7 @@ int main(int argc, char** argv) {
     }
     if (!o.out.empty()) {
       writeFile(o.out + "/estimates.csv", rf::toCsv(result));
-      writeFile(o.out + "/summary.json", result.statistics.toJson());
+      writeFile(o.out + "/summary.json", rf::summaryJson(result));
       std::cout << "wrote " << o.out << "/estimates.csv and summary.json\n";
     }
   } catch (const rf::ParamError& e) {

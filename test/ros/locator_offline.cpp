@@ -140,11 +140,61 @@ TEST_F(LocatorOffline, ToolWritesEstimatesAndStatistics) {
   EXPECT_NE(output.find("x real time"), std::string::npos) << output;
   EXPECT_NE(output.find("tracking in odom: "), std::string::npos) << output;
   const std::string csv = rf::test::readFile(out_ + "/estimates.csv");
-  EXPECT_EQ(csv.rfind("t,status,x,y,z,sigma_x,sigma_y,truth_x,truth_y,error\n", 0), 0u);
+  EXPECT_EQ(csv.rfind("t,status,x,y,z,sigma_x,sigma_y,truth_x,truth_y,error,bearing_deg,"
+                     "heading_error_deg,miss_m\n",
+                     0),
+            0u);
   EXPECT_GT(std::count(csv.begin(), csv.end(), '\n'), 700);
   const std::string json = rf::test::readFile(out_ + "/summary.json");
   EXPECT_NE(json.find("\"by_sector\""), std::string::npos);
   EXPECT_NE(json.find("\"by_distance\""), std::string::npos);
+  EXPECT_NE(json.find("\"heading\": {\"all\""), std::string::npos) << json;
+  EXPECT_NE(output.find("heading error (deg)"), std::string::npos) << output;
+}
+
+// Issue 35: a layout without ranges (one AoA board) gives HEADING_ONLY estimates, which
+// have no position to compare; the tool still writes their bearing and judges it.
+TEST_F(LocatorOffline, AHeadingOnlyLayoutIsJudgedOnItsHeading) {
+  const std::string layout = out_ + "_one_board.yaml";
+  {
+    std::ofstream f(layout);
+    f << "fixed_frame: base_link\ntarget: {uwb_anchor_id: \"DA12\"}\n"
+         "aoa_boards:\n  - {id: front, kind: xplr_aoa_1, position: [0.065, 0.0, 0.25], "
+         "rpy_deg: [0, 0, 0]}\n";
+  }
+  const rf::BagData bag = rf::loadBag(bag_, "ground_truth/target_relative");
+  const rf::ReplayResult r = rf::replay(bag, rf::loadLayoutFile(layout), shippedParams(), 20.0);
+  EXPECT_EQ(r.statistics.overall().count, 0u) << "no position, no position error";
+  const rf::evaluation::ErrorSummary heading = r.heading.headingError("HEADING_ONLY");
+  ASSERT_GT(heading.count, 300u);
+  // The person walks ahead of the robot in this bag, in front of the board: the heading
+  // is within a few degrees (a wrong side would be about 180 deg off).
+  EXPECT_LT(heading.median, 15.0);
+  EXPECT_LT(r.heading.miss("HEADING_ONLY").median, 1.0);
+  std::size_t heading_rows = 0;
+  for (const rf::ReplayRow& row : r.rows) {
+    if (row.estimate.status == rf::estimation::TargetStatus::kHeadingOnly) {
+      ++heading_rows;
+      EXPECT_TRUE(row.has_heading);
+      EXPECT_FALSE(row.has_truth);
+    }
+  }
+  EXPECT_GE(heading_rows, heading.count);
+
+  std::string output;
+  ASSERT_EQ(runTool(bag_ + " --layout " + layout + " --params " + config_ +
+                        "/locator.yaml --out " + out_,
+                    output),
+            0)
+      << output;
+  EXPECT_NE(output.find("  HEADING_ONLY: "), std::string::npos) << output;
+  const std::string csv = rf::test::readFile(out_ + "/estimates.csv");
+  // A HEADING_ONLY row: no x, y, z, sigmas or position error; a bearing, its error, a miss.
+  const std::size_t at = csv.find(",HEADING_ONLY,,,,,,");
+  ASSERT_NE(at, std::string::npos) << csv.substr(0, 400);
+  const std::string line = csv.substr(at, csv.find('\n', at) - at);
+  EXPECT_EQ(std::count(line.begin(), line.end(), ','), 12) << line;
+  EXPECT_NE(line.back(), ',') << line;
 }
 
 TEST_F(LocatorOffline, SweepRanksAMisconfiguredRangeNoiseLast) {

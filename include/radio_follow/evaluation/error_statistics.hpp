@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <cstddef>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -69,6 +70,41 @@ class ErrorStatistics {
   std::vector<double> all_;
   std::array<std::vector<double>, kSectors> sectors_;
   std::array<std::vector<double>, kBandEdges.size() + 1> bands_;
+};
+
+/// How far from the target a robot that drives along `heading` (rad, robot frame) passes
+/// it: the distance from `target` (xy, robot frame, m) to the ray from the origin along the
+/// heading. The perpendicular distance when the target is ahead along the ray, its
+/// distance from the origin when it is behind (the ray then leads away from it).
+double missAtTarget(const Eigen::Vector2d& target, double heading);
+
+/// An estimator's direction against the truth, by the estimate's status (OK, DEGRADED,
+/// HEADING_ONLY): the absolute heading error (deg) and the miss at the target
+/// (missAtTarget, m). A heading is all a layout without ranges gives, and what a robot
+/// steers by, so it is judged on its own, beside the position error.
+class HeadingStatistics {
+ public:
+  /// Non-finite samples are ignored.
+  void add(const std::string& status, double heading_error_deg, double miss);
+
+  /// Over every status ("") or one.
+  ErrorSummary headingError(const std::string& status = "") const;
+  ErrorSummary miss(const std::string& status = "") const;
+  /// The statuses seen, in name order.
+  std::vector<std::string> statuses() const;
+  bool empty() const { return all_.heading.empty(); }
+
+  /// {"all": {"count", "heading_error_deg": {median, p95, ...}, "miss_m": {...}},
+  ///  "<status>": {...}, ...}; NaN as null.
+  std::string toJson() const;
+
+ private:
+  struct Samples {
+    std::vector<double> heading;
+    std::vector<double> miss;
+  };
+  Samples all_;
+  std::map<std::string, Samples> by_status_;
 };
 
 }  // namespace evaluation

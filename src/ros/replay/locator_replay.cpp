@@ -13,6 +13,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "radio_follow/common/angles.hpp"
 #include "radio_follow/ros/locator/locator_inputs.hpp"
 #include "radio_follow/ros/locator/odometry_lookup.hpp"
 #include "radio_follow/ros/replay/bag_file.hpp"
@@ -155,10 +156,21 @@ ReplayResult replay(const BagData& bag, const Layout& layout, const LocatorNode:
     row.estimate = locator.update(now);
     const bool has_position = hasPosition(row.estimate.status);
     with_position += has_position;
-    if (has_position && truthAt(bag.truth, row.estimate.stamp, row.truth)) {
-      row.has_truth = true;
-      row.error = (row.estimate.position.head<2>() - row.truth).norm();
-      result.statistics.add(row.truth.x(), row.truth.y(), row.error);
+    row.has_heading = has_position || row.estimate.status == estimation::TargetStatus::kHeadingOnly;
+    if (row.has_heading) {
+      row.heading = std::atan2(row.estimate.position.y(), row.estimate.position.x());
+    }
+    if (row.has_heading && truthAt(bag.truth, row.estimate.stamp, row.truth)) {
+      row.has_heading_truth = true;
+      row.heading_error = wrapAngle(std::atan2(row.truth.y(), row.truth.x()) - row.heading);
+      row.miss = evaluation::missAtTarget(row.truth, row.heading);
+      result.heading.add(toString(row.estimate.status), std::abs(row.heading_error) * 180.0 / kPi,
+                         row.miss);
+      if (has_position) {
+        row.has_truth = true;
+        row.error = (row.estimate.position.head<2>() - row.truth).norm();
+        result.statistics.add(row.truth.x(), row.truth.y(), row.error);
+      }
     }
     result.rows.push_back(std::move(row));
   }
@@ -167,10 +179,18 @@ ReplayResult replay(const BagData& bag, const Layout& layout, const LocatorNode:
   return result;
 }
 
+std::string summaryJson(const ReplayResult& result) {
+  // The position statistics' object with the heading statistics as one more member.
+  std::string json = result.statistics.toJson();
+  const std::size_t end = json.rfind('}');
+  return json.substr(0, end) + ",\n  \"heading\": " + result.heading.toJson() + "\n}\n";
+}
+
 std::string toCsv(const ReplayResult& result) {
   std::ostringstream out;
   out.precision(9);
-  out << "t,status,x,y,z,sigma_x,sigma_y,truth_x,truth_y,error\n";
+  out << "t,status,x,y,z,sigma_x,sigma_y,truth_x,truth_y,error,bearing_deg,heading_error_deg,"
+         "miss_m\n";
   for (const ReplayRow& r : result.rows) {
     const estimation::LocatorEstimate& e = r.estimate;
     const bool position = hasPosition(e.status);
@@ -185,10 +205,23 @@ std::string toCsv(const ReplayResult& result) {
     } else {
       out << ",,,,,";
     }
-    if (r.has_truth) {
-      out << r.truth.x() << "," << r.truth.y() << "," << r.error;
+    if (r.has_heading_truth) {
+      out << r.truth.x() << "," << r.truth.y() << ",";
     } else {
       out << ",,";
+    }
+    if (r.has_truth) {
+      out << r.error;
+    }
+    out << ",";
+    if (r.has_heading) {
+      out << r.heading * 180.0 / kPi;
+    }
+    out << ",";
+    if (r.has_heading_truth) {
+      out << r.heading_error * 180.0 / kPi << "," << r.miss;
+    } else {
+      out << ",";
     }
     out << "\n";
   }

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "radio_follow/common/angles.hpp"
@@ -76,6 +77,39 @@ TEST(ShareInside95, CountsWhatTheChiSquareQuantileBounds) {
     nees.push_back(-2.0 * std::log(1.0 - (i + 0.5) / 1000.0));
   }
   EXPECT_NEAR(shareInside95(nees), 0.95, 0.002);
+}
+
+TEST(MissAtTarget, IsTheDistanceFromTheHeadingRay) {
+  const double deg = M_PI / 180.0;
+  EXPECT_NEAR(missAtTarget(Eigen::Vector2d(4.0, 0.0), 0.0), 0.0, 1e-12);
+  // 10 deg off at 4 m: 4 sin(10 deg) = 0.69 m.
+  EXPECT_NEAR(missAtTarget(Eigen::Vector2d(4.0, 0.0), 10.0 * deg), 4.0 * std::sin(10.0 * deg),
+              1e-12);
+  EXPECT_NEAR(missAtTarget(Eigen::Vector2d(4.0, 0.0), -10.0 * deg), 4.0 * std::sin(10.0 * deg),
+              1e-12);
+  // Heading away from the person (the mirror): the ray never comes nearer than the robot.
+  EXPECT_NEAR(missAtTarget(Eigen::Vector2d(3.0, 4.0), M_PI + std::atan2(4.0, 3.0)), 5.0, 1e-12);
+  EXPECT_NEAR(missAtTarget(Eigen::Vector2d(0.0, 2.0), 0.0), 2.0, 1e-12);
+}
+
+TEST(HeadingStatistics, SummarisesByStatusAndOverall) {
+  HeadingStatistics h;
+  EXPECT_TRUE(h.empty());
+  h.add("OK", 2.0, 0.1);
+  h.add("OK", 4.0, 0.3);
+  h.add("HEADING_ONLY", 170.0, 5.0);
+  h.add("HEADING_ONLY", std::nan(""), 1.0);  // ignored
+  EXPECT_EQ(h.headingError().count, 3u);
+  EXPECT_EQ(h.headingError("OK").count, 2u);
+  EXPECT_DOUBLE_EQ(h.headingError("HEADING_ONLY").median, 170.0);
+  EXPECT_DOUBLE_EQ(h.miss("HEADING_ONLY").max, 5.0);
+  EXPECT_EQ(h.headingError("DEGRADED").count, 0u);
+  EXPECT_EQ(h.statuses(), (std::vector<std::string>{"HEADING_ONLY", "OK"}));
+  const std::string json = h.toJson();
+  EXPECT_NE(json.find("\"all\": {\"count\": 3"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"HEADING_ONLY\": {\"count\": 1, \"heading_error_deg\": {\"mean\": 170"),
+            std::string::npos)
+      << json;
 }
 
 }  // namespace

@@ -58,12 +58,22 @@ struct ReplayRow {
   bool has_truth = false;
   Eigen::Vector2d truth = Eigen::Vector2d::Zero();  ///< robot frame, at the estimate's stamp
   double error = 0.0;                               ///< m, xy, when has_truth and a position
+  /// A direction: OK, DEGRADED or HEADING_ONLY (whose position is a guess along it).
+  bool has_heading = false;
+  double heading = 0.0;  ///< rad, robot frame, of the estimate's position
+  /// With a truth at the stamp: truth's bearing minus `heading`, wrapped, rad; and the
+  /// miss at the target (evaluation::missAtTarget), m.
+  bool has_heading_truth = false;
+  double heading_error = 0.0;
+  double miss = 0.0;
 };
 
 struct ReplayResult {
   std::vector<ReplayRow> rows;
   evaluation::ErrorStatistics
       statistics;             ///< over the rows with a position (OK/DEGRADED) and a truth
+  /// Over the rows with a direction (OK/DEGRADED/HEADING_ONLY) and a truth, by status.
+  evaluation::HeadingStatistics heading;
   std::size_t refused = 0;    ///< measurements the locator refused (unknown sensors)
   double availability = 0.0;  ///< share of updates with a position
   /// Where the messages went: placed in the odometry frame, dropped in a TF gap, or in the
@@ -76,12 +86,18 @@ struct ReplayResult {
 /// placed with the bag's TF `odom_frame -> layout fixed frame` at its stamp by the node's
 /// own lookup (odometryPoseAt, `params.tf_tolerance`), the buffer holding the transforms
 /// the recorder had received when it received the message. Estimates (robot frame) are
-/// compared with the ground truth interpolated at the estimate's stamp.
+/// compared with the ground truth interpolated at the estimate's stamp: the position
+/// (rows with one), and the direction (rows with one, HEADING_ONLY too).
 ReplayResult replay(const BagData& bag, const Layout& layout, const LocatorNode::Params& params,
                     double rate);
 
+/// summary.json: the position statistics (evaluation::ErrorStatistics::toJson: overall,
+/// by_sector, by_distance) plus "heading" (evaluation::HeadingStatistics::toJson).
+std::string summaryJson(const ReplayResult& result);
+
 /// The rows as CSV with a header (t, status, x, y, z, sigma_x, sigma_y, truth_x, truth_y,
-/// error; empty cells where there is no value).
+/// error, bearing_deg, heading_error_deg, miss_m; empty cells where there is no value).
+/// x, y, z are empty for HEADING_ONLY (no position), bearing_deg is not.
 std::string toCsv(const ReplayResult& result);
 
 }  // namespace radio_follow
