@@ -18,7 +18,7 @@ line right before the fence may say how (an HTML comment, invisible on GitHub):
 
 It also checks what `roslaunch --ros-args` shows for every launch file: every argument
 documented, and none listed as required unless it is (REQUIRED_ARGS); and that every row of
-README.md's "Results in short" table that quotes a figure names the command that produces
+the results table in doc/results.md that quotes a figure names the command that produces
 it (`bash scripts/<script>.sh ...`, the script present; for scripts/results.sh, a section
 it has).
 
@@ -195,9 +195,15 @@ def check_launch_args(env):
 
 
 def results_table_failures():
-    """Rows of README's "Results in short" with a figure but no command that produces it."""
-    text = (REPO / "README.md").read_text()
-    table = text.partition("## Results in short")[2].split("\n\n", 2)[1]
+    """Rows of doc/results.md's table with a figure but no command that produces it."""
+    lines = (REPO / "doc" / "results.md").read_text().splitlines()
+    start = next((i for i, line in enumerate(lines) if line.startswith("|")), None)
+    if start is None:
+        return ["doc/results.md: no results table"]
+    end = start
+    while end < len(lines) and lines[end].startswith("|"):
+        end += 1
+    table = "\n".join(lines[start:end])
     results_sh = (REPO / "scripts" / "results.sh").read_text()
     sections = set(re.search(r"^all=\((.*)\)$", results_sh, re.M).group(1).split())
     failures = []
@@ -209,7 +215,7 @@ def results_table_failures():
         good = [(script, args) for script, args in named if (REPO / "scripts" / script).is_file()
                 and (script != "results.sh" or set(args.split()) <= sections)]
         if not good:
-            failures.append(f"README results row '{cells[0]}': no `bash scripts/<script>.sh` "
+            failures.append(f"doc/results.md row '{cells[0]}': no `bash scripts/<script>.sh` "
                             "command that exists (results.sh sections: "
                             f"{' '.join(sorted(sections))})")
     return failures

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
-# Regenerates every figure of README.md's "Results in short" table and of doc/ from what
+# Regenerates every figure of doc/results.md and of doc/ from what
 # the repo ships (config/, test/data/sim_spot_straight.bag) and prints them as Markdown:
 # one section per figure group, each with the command that produced it. Figures that are
 # not timings are deterministic (fixed seeds, lockstep loops); every timing is printed
@@ -295,7 +295,7 @@ if wanted stop; then
 fi
 
 if wanted demo; then
-  heading "Demo run, wall time (README.md, Set up)"
+  heading "Demo run, wall time (doc/results.md)"
   shown "roslaunch -p $port radio_follow demo.launch report_dir:=/tmp/demo   # what scripts/demo.sh runs after setup and build"
   t0=$(now)
   roslaunch -p "$port" radio_follow demo.launch report_dir:="$tmp/demo" >"$tmp/demo.log" 2>&1
