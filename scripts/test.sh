@@ -50,16 +50,6 @@ kit_work="$(mktemp -d)"
 bash "$repo/scripts/kit_path.sh" "$kit_work" || status=1
 rm -rf "$kit_work"
 
-# Packaging (doc/packaging.md), from nothing the dev build made: radio_follow configures
-# and builds next to a package with clashing target names, and the .deb builds, installs
-# into a clean prefix and runs the demo from there.
-packaging=0
-bash "$repo/scripts/check_target_clash.sh" || packaging=1
-bash "$repo/scripts/package.sh" || packaging=1
-if [ "$packaging" = 0 ]; then
-  echo "packaging: target clash check and .deb check passed"
-else
-  echo "packaging: FAILED (see above)" >&2
-  status=1
-fi
+# The packaging checks (a second and a third build: target clash, .deb) are
+# scripts/release_check.sh, which CI runs after this (.ci/run).
 exit "$status"

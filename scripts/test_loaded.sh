@@ -2,10 +2,11 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # The README's test command on a fresh clone while every core is busy (issue 34: no test
 # may depend on the machine being idle). Clones HEAD of this repository into a new
-# directory, starts one busy loop per core at normal priority, runs
-# `CI=true bash scripts/test.sh` in the clone RUNS times in a row (default 2; the first
-# run builds its own workspace from nothing), stops the loops and prints each run's
-# verdict and wall time. Exit 0 only when every run passed.
+# directory, starts one busy loop per core at normal priority, runs what CI runs
+# (`CI=true bash .ci/run`: the test command, then scripts/release_check.sh) in the clone
+# RUNS times in a row (default 2; the first run builds its own workspace from nothing),
+# stops the loops and prints each run's verdict and wall time. Exit 0 only when every run
+# passed.
 #   bash scripts/test_loaded.sh [RUNS]
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -30,7 +31,7 @@ echo "test_loaded: ${#loops[@]} busy loops at normal priority"
 status=0
 for run in $(seq "$runs"); do
   start=$(date +%s)
-  if (cd "$clone" && CI=true bash scripts/test.sh >"$clone/../test_run_$run.log" 2>&1); then
+  if (cd "$clone" && CI=true bash .ci/run >"$clone/../test_run_$run.log" 2>&1); then
     verdict=passed
   else
     verdict=FAILED
