@@ -149,8 +149,7 @@ HomingController::BearingResult HomingController::onBearing(double azimuth, doub
   if (!robot_ || std::abs(stamp - odom_stamp_) > params_.odom_timeout) {
     return BearingResult::kNoOdometry;
   }
-  // A board reports at most 90 deg either way; beyond half a turn it is no angle at all.
-  if (!(std::abs(azimuth) <= M_PI)) {
+  if (!plausibleAngleRad(azimuth)) {
     return BearingResult::kNotFinite;
   }
   // The board's position and boresight in the odometry frame.

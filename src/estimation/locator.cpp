@@ -190,8 +190,7 @@ bool Locator::addRange(const std::string& module_id, double raw_range, double t,
 bool Locator::addBearing(const std::string& board_id, double azimuth, double elevation, double rssi,
                          double t, const std::optional<Pose2>& pose) {
   const AoaBoard* board = layout_.findAoaBoard(board_id);
-  // A board reports at most 90 deg either way; beyond half a turn it is no angle at all.
-  if (board == nullptr || !(std::abs(azimuth) <= M_PI) || !(std::abs(elevation) <= M_PI) ||
+  if (board == nullptr || !plausibleAngleRad(azimuth) || !plausibleAngleRad(elevation) ||
       !std::isfinite(t)) {
     ++stats_.invalid_measurements;
     return false;

@@ -76,6 +76,13 @@ inline bool plausibleAoaAngleDeg(double degrees) {
   return std::isfinite(degrees) && std::abs(degrees) <= kMaxAoaAngleDeg;
 }
 
+/// An angle in radians that a direction can be given as: finite and within half a turn
+/// either way. A board reports at most kMaxAoaAngleDeg; a bearing beyond pi (or NaN)
+/// is no direction at all.
+inline bool plausibleAngleRad(double radians) {
+  return std::abs(radians) <= M_PI;  // false for NaN
+}
+
 /// A position quality factor.
 inline bool plausibleQuality(long quality) {
   return quality >= kMinQuality && quality <= kMaxQuality;

@@ -25,7 +25,7 @@ inline control::EstimateQuality estimateQuality(estimation::TargetStatus status,
     return control::EstimateQuality::kAmbiguous;
   }
   const bool known = hasPosition(status) || status == estimation::TargetStatus::kHeadingOnly;
-  return known && std::abs(bearing) <= M_PI && plausibleRange(range)
+  return known && plausibleAngleRad(bearing) && plausibleRange(range)
              ? control::EstimateQuality::kUsable
              : control::EstimateQuality::kLost;
 }
