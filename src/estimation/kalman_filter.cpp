@@ -2,11 +2,11 @@
 #include "radio_follow/estimation/kalman_filter.hpp"
 
 #include <Eigen/Cholesky>
+#include <boost/math/distributions/chi_squared.hpp>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
-#include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
 
 namespace radio_follow {
@@ -24,19 +24,6 @@ std::string toString(MotionModel model) {
 }
 namespace {
 
-double chiSquareCdf(double x, int dof) {
-  switch (dof) {
-    case 1:
-      return std::erf(std::sqrt(x / 2.0));
-    case 2:
-      return 1.0 - std::exp(-x / 2.0);
-    case 3:
-      return std::erf(std::sqrt(x / 2.0)) - std::sqrt(2.0 * x / kPi) * std::exp(-x / 2.0);
-    default:
-      throw std::invalid_argument("chi-square CDF implemented for 1..3 degrees of freedom");
-  }
-}
-
 bool positiveDefinite(const Eigen::MatrixXd& m) {
   if (!m.allFinite() || !m.isApprox(m.transpose(), 1e-9)) {
     return false;
@@ -51,16 +38,10 @@ double chiSquareQuantile(double probability, int dof) {
   if (!(probability > 0.0 && probability < 1.0)) {
     throw std::invalid_argument("chi-square quantile needs a probability in (0, 1)");
   }
-  double lo = 0.0;
-  double hi = 1.0;
-  while (chiSquareCdf(hi, dof) < probability) {
-    hi *= 2.0;
+  if (dof < 1) {
+    throw std::invalid_argument("chi-square quantile needs at least 1 degree of freedom");
   }
-  for (int i = 0; i < 100; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (chiSquareCdf(mid, dof) < probability ? lo : hi) = mid;
-  }
-  return 0.5 * (lo + hi);
+  return boost::math::quantile(boost::math::chi_squared(dof), probability);
 }
 
 KalmanFilter::KalmanFilter(const KalmanConfig& config)

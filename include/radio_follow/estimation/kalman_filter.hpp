@@ -90,8 +90,8 @@ class KalmanFilter {
   std::size_t resets_ = 0;
 };
 
-/// Quantile of the chi-square distribution with 1, 2 or 3 degrees of freedom (closed-form
-/// CDFs, bisection); throws std::invalid_argument for other dof or p outside (0, 1).
+/// Quantile of the chi-square distribution with `dof` degrees of freedom (boost::math);
+/// throws std::invalid_argument for dof < 1 or p outside (0, 1).
 double chiSquareQuantile(double probability, int dof);
 
 }  // namespace estimation
