@@ -91,6 +91,26 @@ const char* kUsage =
     "         [--grow modules|boards|both (both)] [--compare REFERENCE.yaml]\n"
     "         [--3d] [--plot PLOT_SCRIPT.py] --out DIR\n";
 
+const char* kHelp =
+    "\nThe Cramer-Rao bound of the target position over a grid around the robot for a\n"
+    "layout (the locator's YAML format), summarised per distance ring and direction, with\n"
+    "the weak directions and the thesis's placement guidelines (doc/placement_advisor.md).\n"
+    "No ROS master needed.\n\n"
+    "  LAYOUT.yaml            the layout to map\n"
+    "  --compare OTHER.yaml   map a second layout beside it\n"
+    "  --extent M             half-width of the square grid, m\n"
+    "  --resolution M         grid spacing, m\n"
+    "  --height M             the tag's height, m\n"
+    "  --3d                   bound the 3D position (default: planar)\n"
+    "  --sectors N            directions of the summary\n"
+    "  --weak-factor K        a direction is weak beyond K x the median bound\n"
+    "  --plot SCRIPT.py       draw DIR/<layout>.png with scripts/plot_placement.py\n"
+    "  --out DIR              write <layout>_map.csv and <layout>_summary.json here\n"
+    "  --optimise REGION.yaml search the best layout in a mounting region instead; the\n"
+    "                         search options above tune it, the best layout is written as\n"
+    "                         DIR/<region>_optimised.yaml and mapped\n"
+    "  -h, --help             print this help\n";
+
 std::string csvNumber(double value);
 
 double number(const std::string& option, const char* text) {
@@ -124,6 +144,10 @@ Options parse(int argc, char** argv) {
   OptimiseOptions o;
   for (int i = 1; i < argc; ++i) {
     const std::string key = argv[i];
+    if (key == "--help" || key == "-h") {
+      std::printf("%s%s", kUsage, kHelp);
+      std::exit(0);
+    }
     const auto value = [&]() -> const char* {
       if (i + 1 >= argc) {
         throw rf::ParamError(key, "(missing)", "a value after the option");

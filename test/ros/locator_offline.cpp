@@ -250,6 +250,19 @@ TEST_F(LocatorOffline, BadInputIsRefusedWithItsName) {
   EXPECT_EQ(runTool(bag_, output), 2);  // no --layout
 }
 
+// The operator tools explain themselves: --help prints every option and exits 0.
+TEST_F(LocatorOffline, OperatorToolsHaveHelp) {
+  std::string output;
+  EXPECT_EQ(runTool("--help", output), 0) << output;
+  for (const char* option : {"--layout", "--params", "--rate", "--truth-topic", "--out", "--sweep"}) {
+    EXPECT_NE(output.find(option), std::string::npos) << option << " in " << output;
+  }
+  EXPECT_EQ(rf::test::runTool("placement_advisor", "-h", output), 0) << output;
+  for (const char* option : {"--compare", "--extent", "--optimise", "--out"}) {
+    EXPECT_NE(output.find(option), std::string::npos) << option << " in " << output;
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
