@@ -326,6 +326,10 @@ if wanted standing; then
     shown "\"\$RF_WS\"/devel/lib/radio_follow/standing_experiments --experiment walk --layout spot_tdoa --robot $robot | tail -1"
     "$bin/standing_experiments" --experiment walk --layout spot_tdoa --robot "$robot" | tail -1
   done
+  # Issue 35's bench: one board alone, the person walking and standing in front of it.
+  echo
+  shown "\"\$RF_WS\"/devel/lib/radio_follow/standing_experiments --experiment heading --walks 1000"
+  "$bin/standing_experiments" --experiment heading --walks 1000
   echo "(standing: $(elapsed "$t0") s; deterministic)"
 fi
 

@@ -5,10 +5,13 @@
 // the thesis's figures by direction as Markdown, for the layout as shipped and, where it
 // has three or more TWR modules and AoA boards, for its TWR modules alone. A layout with
 // TDoA anchors (the TDoA heading mode) also runs without their auto-calibration, and the
-// walk adds the heading error.
-//   standing_experiments --experiment static|walk [--layout spot] [--sensor-profile realistic]
-//                        [--duration 60] [--sectors 8] [--robot 1] [--seed 1]
-//                        [--scenario walk_around] [--config-dir DIR]
+// walk adds the heading error. `heading` is issue 35's bench: the layout's first AoA board
+// alone, the person walking and standing in front of it (evaluation/heading_walks.hpp),
+// the locator's heading against the board's newest raw reading.
+//   standing_experiments --experiment static|walk|heading [--layout spot]
+//                        [--sensor-profile realistic] [--duration 60] [--sectors 8]
+//                        [--robot 1] [--seed 1] [--scenario walk_around] [--walks 1000]
+//                        [--config-dir DIR]
 #include "radio_follow/evaluation/standing_experiments.hpp"
 
 #include <cmath>
@@ -25,6 +28,7 @@
 #include "radio_follow/common/tool_options.hpp"
 #include "radio_follow/evaluation/closed_loop.hpp"
 #include "radio_follow/evaluation/error_statistics.hpp"
+#include "radio_follow/evaluation/heading_walks.hpp"
 
 namespace {
 
@@ -32,9 +36,10 @@ namespace rf = radio_follow;
 
 int usage(const std::string& problem) {
   std::fprintf(stderr,
-               "standing_experiments: %s\nusage: standing_experiments --experiment static|walk "
-               "[--layout L] [--sensor-profile ideal|realistic] [--duration S] [--sectors N] "
-               "[--robot N] [--seed N] [--scenario S] [--config-dir DIR]\n",
+               "standing_experiments: %s\nusage: standing_experiments --experiment "
+               "static|walk|heading [--layout L] [--sensor-profile ideal|realistic] "
+               "[--duration S] [--sectors N] [--robot N] [--seed N] [--scenario S] "
+               "[--walks N] [--config-dir DIR]\n",
                problem.c_str());
   return 2;
 }
@@ -89,13 +94,14 @@ int main(int argc, char** argv) {
                                              {"--robot", "1"},
                                              {"--seed", "1"},
                                              {"--scenario", "walk_around"},
+                                             {"--walks", "1000"},
                                              {"--config-dir", RF_CONFIG_DIR}};
   if (const auto problem = rf::readToolOptions(argc, argv, options)) {
     return usage(*problem);
   }
   const std::string experiment = options["--experiment"];
-  if (experiment != "static" && experiment != "walk") {
-    return usage("--experiment must be static or walk");
+  if (experiment != "static" && experiment != "walk" && experiment != "heading") {
+    return usage("--experiment must be static, walk or heading");
   }
   try {
     const auto sectors = static_cast<int>(rf::toolCount("--sectors", options["--sectors"], 1, 36));
@@ -110,6 +116,40 @@ int main(int argc, char** argv) {
     const auto configs = configurations(c.layout, c.locator);
     // The TDoA heading mode: the direction is the anchors' alone, so show its error.
     const bool headings = !c.layout.tdoa_anchors.empty();
+
+    if (experiment == "heading") {
+      rf::evaluation::HeadingWalkParams params;
+      params.walks = static_cast<int>(rf::toolCount("--walks", options["--walks"], 1, 100000));
+      params.duration = std::atof(options["--duration"].c_str());
+      params.seed = static_cast<std::uint64_t>(seed);
+      const rf::evaluation::HeadingWalkResult r =
+          rf::evaluation::runHeadingWalks(c.layout, c.world, c.locator, params);
+      const auto row = [](const char* name, const std::vector<double>& deg) {
+        std::printf("| %s | %s | %s |\n", name, degrees(rf::evaluation::quantile(deg, 0.5)).c_str(),
+                    degrees(rf::evaluation::quantile(deg, 0.95)).c_str());
+      };
+      std::printf(
+          "Single-board heading (issue 35), layout %s's board %s alone, %s sensors (robots "
+          "1-%d, uncalibrated): %d walks of %.0f s in front of it (%.1f-%.1f m, within "
+          "%.0f deg of its boresight, standing %.0f %% of the waypoints for %.0f-%.0f s); "
+          "heading error at every locator update after %.0f s, deg\n\n"
+          "| heading | median | p95 |\n| --- | --- | --- |\n",
+          options["--layout"].c_str(), c.layout.aoa_boards.front().id.c_str(),
+          options["--sensor-profile"].c_str(), params.robots, params.walks, params.duration,
+          params.min_distance, params.max_distance, rf::rad2deg(params.max_direction),
+          100.0 * params.stand_probability, params.min_stand, params.max_stand, params.settle);
+      row("the locator's", r.locator_deg);
+      row("the newest raw reading's", r.raw_deg);
+      std::printf(
+          "\nlocator / raw: median %.2f x, p95 %.2f x (issue 35's goal: at most 0.8 x and "
+          "1.0 x); walks ending behind (more than 90 deg off): %d of %d; updates without a "
+          "direction: %zu of %zu\n",
+          rf::evaluation::quantile(r.locator_deg, 0.5) / rf::evaluation::quantile(r.raw_deg, 0.5),
+          rf::evaluation::quantile(r.locator_deg, 0.95) /
+              rf::evaluation::quantile(r.raw_deg, 0.95),
+          r.ended_behind, r.walks, r.without_direction, r.updates);
+      return 0;
+    }
 
     if (experiment == "static") {
       rf::evaluation::StaticAccuracyParams params;
