@@ -8,12 +8,18 @@
 #include <ros/ros.h>
 #include <ros/topic.h>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <string>
 
 #include "radio_follow/ControllerTuningConfig.h"
 #include "radio_follow/FollowLawTuningConfig.h"
 #include "radio_follow/LocatorTuningConfig.h"
+#include "radio_follow/control/command_pipeline.hpp"
+#include "radio_follow/control/velocity_law.hpp"
+#include "radio_follow/estimation/locator.hpp"
+#include "radio_follow/ros/common/reconfigure_table.hpp"
 
 namespace {
 
@@ -217,6 +223,47 @@ void expectNoCfgBounds() {
     }
   }
   EXPECT_GT(checked, 0);
+}
+
+// Every parameter is declared once (issue 32): a .cfg field's default (what the GUI's
+// "reset to defaults" sets) is its parameter table's default, not a second copy that can
+// drift from it.
+template <typename Config, typename S>
+void expectCfgDefaultsFromTheTable(const radio_follow::ParamTable<S>& table) {
+  const Config cfg = Config::__getDefault__();
+  const Config from_table = radio_follow::tuningFromTable<Config>(table, S{});
+  int checked = 0;
+  for (const auto& d : Config::__getParamDescriptions__()) {
+    if (d->name == radio_follow::kRefusedField) {
+      continue;
+    }
+    boost::any a;
+    boost::any b;
+    d->getValue(cfg, a);
+    d->getValue(from_table, b);
+    if (d->type == "double") {
+      EXPECT_NEAR(boost::any_cast<double>(a), boost::any_cast<double>(b),
+                  1e-9 * std::max(1.0, std::abs(boost::any_cast<double>(b))))
+          << d->name << ": the .cfg's default is not the table's";
+    } else if (d->type == "int") {
+      EXPECT_EQ(boost::any_cast<int>(a), boost::any_cast<int>(b)) << d->name;
+    } else if (d->type == "bool") {
+      EXPECT_EQ(boost::any_cast<bool>(a), boost::any_cast<bool>(b)) << d->name;
+    } else {
+      EXPECT_EQ(boost::any_cast<std::string>(a), boost::any_cast<std::string>(b)) << d->name;
+    }
+    ++checked;
+  }
+  EXPECT_GT(checked, 0);
+}
+
+TEST(LiveTuningDefaults, EveryCfgDefaultIsItsTablesDefault) {
+  expectCfgDefaultsFromTheTable<radio_follow::ControllerTuningConfig>(
+      radio_follow::control::CommandPipelineParams::table());
+  expectCfgDefaultsFromTheTable<radio_follow::FollowLawTuningConfig>(
+      radio_follow::control::VelocityLawParams::table());
+  expectCfgDefaultsFromTheTable<radio_follow::LocatorTuningConfig>(
+      radio_follow::estimation::LocatorConfig::table());
 }
 
 TEST(LiveTuningBounds, NoCfgFieldCanBeClamped) {
