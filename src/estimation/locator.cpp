@@ -72,6 +72,7 @@ ParticleTrackerConfig trackerConfig(const LocatorConfig& c) {
   t.filter.walk_time = c.walk_time;
   t.filter.stand_noise = c.stand_noise;
   t.range_decorrelation_time = c.range_decorrelation_time;
+  t.bearing_decorrelation_time = c.bearing_decorrelation_time;
   t.range.sigma = c.range_sigma;
   t.range.outlier_share = c.range_outlier_share;
   t.range.outlier_length = c.range_outlier_length;

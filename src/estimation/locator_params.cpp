@@ -80,7 +80,7 @@ const std::vector<std::string>& particleOnlyKeys() {
   static const std::vector<std::string> keys{
       "particles",   "range_outlier_share",     "range_outlier_length", "bearing_outlier_share",
       "lost_sigma",  "mirror_memory",           "stand_time",           "walk_time",
-      "stand_noise", "range_decorrelation_time"};
+      "stand_noise", "range_decorrelation_time", "bearing_decorrelation_time"};
   return keys;
 }
 
@@ -176,6 +176,9 @@ const ParamTable<LocatorConfig>& LocatorConfig::table() {
                "A standing target's sway, random-walk PSD per axis (particle).", Range::above(0.0))
           .add("range_decorrelation_time", &C::range_decorrelation_time, "s",
                "A module's ranges closer than this count as a fraction of one (particle).",
+               Range::closed(0.0, 10.0))
+          .add("bearing_decorrelation_time", &C::bearing_decorrelation_time, "s",
+               "A board's bearings closer than this count as a fraction of one (particle).",
                Range::closed(0.0, 10.0))
           .add("range_bias_sigma", &C::range_bias_sigma, "m",
                "Slowly varying part of the range error: covariance floor (particle).",

@@ -243,26 +243,26 @@ MeasurementFit ParticleFilter::weightBearing(const Eigen::Vector3d& board,
                                              const Eigen::Matrix3d& rotation, double azimuth,
                                              double elevation, const BearingLikelihood& m) {
   // Sigma factor: a board whose field of view does not contain the cloud's mean (the
-  // estimate) is worth less, for every particle alike. A factor that depended on each
-  // particle's own angle would pull a tracked cloud inside the field of view, and one
-  // from the measured angle would trust the edge's biased angles that read as inside.
-  // Particles behind the board get the mirrored direction, at a lower weight. So there
-  // are two concentrations, inside and outside, each with its normalising constant;
-  // "inside" is in front of the board (the mean decides the factor) or, for a cold
-  // start's cloud around the robot, within the field of view by each particle's angle.
+  // estimate), mirrored to the board's front, is worth less, for every particle alike. A
+  // factor that depended on each particle's own angle would pull a tracked cloud inside
+  // the field of view, and one from the measured angle would trust the edge's biased
+  // angles that read as inside. Mirrored, because the board hears a tag behind it as
+  // well as its mirror image in front: the side is not the sigma's business (see
+  // BearingLikelihood). So there are two concentrations, inside and outside, each with
+  // its normalising constant; for a cold start's cloud around the robot each particle's
+  // own mirrored angle decides.
   const Eigen::Matrix3d rt = rotation.transpose();
   const bool each_particle =
       m.field_of_view_test == BearingLikelihood::FieldOfViewTest::kEachParticle;
   double inside_factor = 1.0;
   if (!each_particle) {
     const Eigen::Vector3d centre = rt * (mean() - board);
-    const double centre_cos = centre.x() / std::max(1e-9, centre.head<2>().norm());
+    const double centre_cos = std::abs(centre.x()) / std::max(1e-9, centre.head<2>().norm());
     inside_factor = centre_cos < std::cos(m.field_of_view) ? m.edge_sigma_factor : 1.0;
   }
-  const double outside_factor =
-      std::max(each_particle ? m.edge_sigma_factor : inside_factor, m.behind_sigma_factor);
-  // lx < inside_cos * rho: outside (rho, the horizontal distance, > 0).
-  const auto inside_cos = static_cast<float>(each_particle ? std::cos(m.field_of_view) : 0.0);
+  const double outside_factor = each_particle ? m.edge_sigma_factor : inside_factor;
+  // |lx| < inside_cos * rho: outside (rho, the horizontal distance, > 0).
+  const auto inside_cos = static_cast<float>(each_particle ? std::cos(m.field_of_view) : -1.0);
   const auto concentration = [](double sigma) { return 1.0 / (sigma * sigma); };
   const double az_inside = concentration(m.azimuth_sigma * inside_factor);
   const double az_outside = concentration(m.azimuth_sigma * outside_factor);
@@ -288,27 +288,31 @@ MeasurementFit ParticleFilter::weightBearing(const Eigen::Vector3d& board,
   inv_rho_ = rho2_.rsqrt();
   // The per-particle constants blend by a 0/1 mask (1: outside) computed with arithmetic
   // (step()), which vectorises where a select is evaluated element by element.
-  pick_ = step(inside_cos * rho2_ * inv_rho_ - lx_);
+  pick_ = step(inside_cos * rho2_ * inv_rho_ - lx_.abs());
   const auto blend = [this](double outside, double inside) {
     return static_cast<float>(inside) + static_cast<float>(outside - inside) * pick_;
   };
-  // |lx|: the array's front/back mirror. log of the von Mises density without its
-  // normaliser: kappa (cos(measured - predicted) - 1), as dot products of unit vectors.
-  inlier_ = blend(az_outside, az_inside) * ((lx_.abs() * std::cos(static_cast<float>(azimuth)) +
-                                             ly_ * std::sin(static_cast<float>(azimuth))) *
-                                                inv_rho_ -
-                                            1.0f);
-  double uniform = 1.0 / (2.0 * kPi);
+  // cos(measured - predicted) - 1 as dot products of unit vectors, |lx| the array's
+  // front/back mirror: in ly_ for the azimuth, in lz_ for the elevation.
   if (m.use_elevation) {
     lz_ = r(2, 0) * (x_ - b.x()) + r(2, 1) * (y_ - b.y()) + r(2, 2) * (z_ - b.z());
-    inlier_ += blend(el_outside, el_inside) *
-               ((rho2_ * inv_rho_ * std::cos(static_cast<float>(elevation)) +
-                 lz_ * std::sin(static_cast<float>(elevation))) *
-                    (rho2_ + lz_.square()).rsqrt() -
-                1.0f);
-    uniform /= kPi;
+    lz_ = (rho2_ * inv_rho_ * std::cos(static_cast<float>(elevation)) +
+           lz_ * std::sin(static_cast<float>(elevation))) *
+              (rho2_ + lz_.square()).rsqrt() -
+          1.0f;
+  } else {
+    lz_.setZero(lx_.size());
   }
-  inlier_ = blend(scale_outside, scale_inside) * fastExp(inlier_);
+  ly_ = (lx_.abs() * std::cos(static_cast<float>(azimuth)) +
+         ly_ * std::sin(static_cast<float>(azimuth))) *
+            inv_rho_ -
+        1.0f;
+  // log of the von Mises density without its normaliser: kappa (cos - 1).
+  inlier_ = blend(scale_outside, scale_inside) *
+            fastExp(blend(az_outside, az_inside) * ly_ + blend(el_outside, el_inside) * lz_);
+  // The field of view's prior on the side: behind (lx < 0) counts behind_weight.
+  inlier_ *= 1.0f + static_cast<float>(m.behind_weight - 1.0) * step(-lx_);
+  const double uniform = 1.0 / (2.0 * kPi) / (m.use_elevation ? kPi : 1.0);
   return applyLikelihood(inlier_, m.outlier_share * uniform);
 }
 

@@ -9,6 +9,7 @@
 #include <tuple>
 #include <utility>
 
+#include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/time_policy.hpp"
 #include "radio_follow/estimation/correlated_error.hpp"
 
@@ -33,6 +34,16 @@ constexpr double kFitRate = 0.02;
 /// Below this running inlier probability the track has diverged and restarts (a
 /// consistent track sits near 1 - the outlier shares, about 0.95).
 constexpr double kDivergedFit = 0.6;
+/// Boards within this of one another's heading face "the same way" (one mirror plane), rad.
+constexpr double kParallelBoards = 0.2;
+/// Without a range the distance is the elevation's alone, and a real board's elevation is
+/// biased (the floor's bounce, a body's shadow): its sigma grows by this factor.
+constexpr double kUnrangedElevationFactor = 3.0;
+/// A hypothesis with more of its weight than this across the boards' plane is folded back.
+constexpr double kAstrayShare = 0.01;
+/// The robot moved between two measurements when its pose changed by more than this (m or
+/// rad): below it, a board's bearings cannot tell front from back.
+constexpr double kStill = 1e-4;
 
 Eigen::Matrix3d yawRotation(double yaw) {
   return Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
@@ -65,6 +76,24 @@ ParticleTracker::ParticleTracker(const Layout& layout, const ParticleTrackerConf
   const std::optional<MirrorAxis> axis = mirrorAxis(modules);
   if (config.filter.planar && axis && axis->flatness < kCollinearRatio) {
     axis_ = axis;
+  } else if (config.filter.planar && modules.size() <= 1 && !layout.aoa_boards.empty()) {
+    // The boards' plane: a direction along it and the first board's position on it.
+    const auto facing = [](const AoaBoard& b) {
+      const Eigen::Vector3d x = b.orientation * Eigen::Vector3d::UnitX();
+      return std::atan2(x.y(), x.x());
+    };
+    const double yaw = facing(layout.aoa_boards.front());
+    const bool parallel =
+        std::all_of(layout.aoa_boards.begin(), layout.aoa_boards.end(), [&](const AoaBoard& b) {
+          return std::abs(std::remainder(facing(b) - yaw, 2.0 * kPi)) < kParallelBoards;
+        });
+    if (parallel) {
+      MirrorAxis plane;
+      plane.centroid = layout.aoa_boards.front().position.head<2>();
+      plane.direction = Eigen::Vector2d(-std::sin(yaw), std::cos(yaw));
+      axis_ = plane;
+      board_axis_ = true;
+    }
   }
 }
 
@@ -78,6 +107,7 @@ void ParticleTracker::reset() {
   last_position_fix_ = -1.0;
   std::fill(std::begin(last_kind_), std::end(last_kind_), -1.0);
   last_range_.clear();
+  last_bearing_.clear();
 }
 
 void ParticleTracker::setConfig(const ParticleTrackerConfig& config) {
@@ -124,11 +154,11 @@ bool ParticleTracker::onMainSide(const Eigen::Vector3d& p, const Pose2& pose) co
 MeasurementFit ParticleTracker::weigh(ParticleFilter& filter, const TrackedMeasurement& m,
                                       const Pose2& pose,
                                       BearingLikelihood::FieldOfViewTest field_of_view,
-                                      double range_sigma_scale) const {
+                                      double sigma_scale) const {
   switch (m.kind) {
     case TrackedMeasurement::Kind::kRange: {
       RangeLikelihood model = config_.range;
-      model.sigma *= range_sigma_scale;
+      model.sigma *= sigma_scale;
       return filter.weightRange(pose.toFixed(layout_.twr_modules[m.sensor].position), m.value,
                                 model);
     }
@@ -144,6 +174,15 @@ MeasurementFit ParticleTracker::weigh(ParticleFilter& filter, const TrackedMeasu
       BearingLikelihood model = config_.bearing;
       model.field_of_view = board.field_of_view;
       model.field_of_view_test = field_of_view;
+      if (!board_axis_) {
+        // Boards that face several ways see the side themselves: no prior needed.
+        model.behind_weight = 1.0;
+      }
+      model.azimuth_sigma *= sigma_scale;
+      model.elevation_sigma *= sigma_scale;
+      if (last_position_fix_ < 0.0 || m.t - last_position_fix_ > config_.max_age) {
+        model.elevation_sigma *= kUnrangedElevationFactor;
+      }
       return filter.weightBearing(pose.toFixed(board.position),
                                   yawRotation(pose.yaw) * board.orientation.toRotationMatrix(),
                                   m.value, m.elevation, model);
@@ -157,15 +196,18 @@ MeasurementFit ParticleTracker::weigh(ParticleFilter& filter, const TrackedMeasu
   return {};
 }
 
-double ParticleTracker::rangeSigmaScale(const TrackedMeasurement& m) {
-  if (m.kind != TrackedMeasurement::Kind::kRange) {
+double ParticleTracker::sigmaScale(const TrackedMeasurement& m) {
+  const bool range = m.kind == TrackedMeasurement::Kind::kRange;
+  if (!range && m.kind != TrackedMeasurement::Kind::kBearing) {
     return 1.0;
   }
-  last_range_.resize(layout_.twr_modules.size(), -1e300);
-  double& last = last_range_[m.sensor];
+  std::vector<double>& stamps = range ? last_range_ : last_bearing_;
+  stamps.resize(range ? layout_.twr_modules.size() : layout_.aoa_boards.size(), -1e300);
+  double& last = stamps[m.sensor];
   const double dt = m.t - last;
   last = std::max(last, m.t);
-  const double tau = config_.range_decorrelation_time;
+  const double tau =
+      range ? config_.range_decorrelation_time : config_.bearing_decorrelation_time;
   if (!(dt < tau)) {
     return 1.0;
   }
@@ -178,7 +220,7 @@ void ParticleTracker::apply(const TrackedMeasurement& m) {
   if (m.t < main_.time()) {
     ++stats_.late;  // applied at the filter's time: the filters do not run backwards
   }
-  const double range_scale = rangeSigmaScale(m);
+  const double range_scale = sigmaScale(m);
   main_.predict(m.t);
   const MeasurementFit main_fit =
       weigh(main_, m, pose, BearingLikelihood::FieldOfViewTest::kCloudMean, range_scale);
@@ -197,9 +239,15 @@ void ParticleTracker::apply(const TrackedMeasurement& m) {
       // about that time once the data disambiguate.
       const double faded =
           evidence_ * std::exp(-std::max(0.0, m.t - evidence_time_) / config_.mirror_memory);
-      evidence_ =
-          std::clamp(faded + std::log(mirror_fit.likelihood) - std::log(main_fit.likelihood),
-                     -kMaxEvidence, kMaxEvidence);
+      double change = std::log(mirror_fit.likelihood) - std::log(main_fit.likelihood);
+      if (board_axis_ && !moved(pose)) {
+        // A board hears a tag behind it as its mirror image in front: while the robot
+        // stands still, whatever the two clouds' fits say about the side is their own
+        // difference, not the data's. Only the field of view's prior counts.
+        const double prior = std::log(config_.bearing.behind_weight);
+        change = inFront(main_.mean(), pose) ? prior : -prior;
+      }
+      evidence_ = std::clamp(faded + change, -kMaxEvidence, kMaxEvidence);
       evidence_time_ = std::max(evidence_time_, m.t);
     }
     mirror_.resampleIfNeeded();
@@ -273,6 +321,9 @@ void ParticleTracker::seedMirror() {
 }
 
 bool ParticleTracker::mirrorDistinct() const {
+  if (board_axis_) {
+    return true;  // the boards' plane keeps the two apart (keepSide)
+  }
   const double separation = (mirror_.mean() - main_.mean()).head<2>().norm();
   return separation > std::max(kMinMirrorSeparation, 3.0 * worstSigma(main_.covariance()));
 }
@@ -314,6 +365,45 @@ void ParticleTracker::maintainMirror() {
   if (!mirror_active_ || !mirrorDistinct() || jumped) {
     seedMirror();
   }
+  if (board_axis_) {
+    // The boards' plane splits the two hypotheses for good: a cloud whose distance
+    // nothing fixes (no range) can drift through the board, and once wholly behind it
+    // nothing pulls it back. The side changes only by the evidence (a swap above).
+    const bool main_left = onMainSide(main_.mean(), pose_);
+    keepSide(main_, main_left);
+    keepSide(mirror_, !main_left);
+  }
+}
+
+bool ParticleTracker::moved(const Pose2& pose) const {
+  return std::abs(std::remainder(pose.yaw - pose_.yaw, 2.0 * kPi)) > kStill ||
+         std::hypot(pose.x - pose_.x, pose.y - pose_.y) > kStill;
+}
+
+bool ParticleTracker::inFront(const Eigen::Vector3d& p, const Pose2& pose) const {
+  const AoaBoard& board = layout_.aoa_boards.front();
+  const Eigen::Vector3d local = board.orientation.conjugate() * (pose.fromFixed(p) - board.position);
+  return local.x() >= 0.0;
+}
+
+void ParticleTracker::keepSide(ParticleFilter& filter, bool left) const {
+  double astray = 0.0;
+  for (std::size_t i = 0; i < filter.size(); ++i) {
+    astray += onMainSide(filter.position(i), pose_) != left ? filter.weight(i) : 0.0;
+  }
+  if (astray < kAstrayShare) {
+    return;
+  }
+  std::vector<Eigen::Vector3d> positions;
+  std::vector<Eigen::Vector2d> velocities;
+  filter.draw(filter.size(), &positions, &velocities);
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    if (onMainSide(positions[i], pose_) != left) {
+      positions[i] = mirrored(positions[i], pose_);
+      velocities[i] = mirroredVelocity(velocities[i], pose_);
+    }
+  }
+  filter.assign(positions, velocities, filter.time());
 }
 
 TrackerOutput ParticleTracker::update(double now) {

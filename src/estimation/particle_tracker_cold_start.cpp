@@ -143,7 +143,7 @@ bool ParticleTracker::coldStart(double now) {
   }
   evidence_ = 0.0;
   evidence_time_ = latest->t;
-  if (axis_ && ring != nullptr) {
+  if (axis_ && (ring != nullptr || board_axis_)) {
     // Keep the side with more weight; the other is what the mirror filter starts from.
     const auto side = [this, &pose](const Eigen::Vector3d& p) { return onMainSide(p, pose); };
     ParticleFilter other = sampler;

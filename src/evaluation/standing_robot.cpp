@@ -12,17 +12,18 @@ StandingRobotSensors::StandingRobotSensors(const Layout& layout, const sim::Worl
                                            std::uint64_t hardware_seed, sim::Rng& rng)
     : layout_(layout),
       world_(world),
-      realistic_(world.profile == sim::SensorProfile::kRealistic),
-      states_(layout.twr_modules.size()) {
+      realistic_(world.profile == sim::SensorProfile::kRealistic) {
   for (const auto& m : layout.twr_modules) {
-    hardware_.push_back(sim::drawTwrHardware(hardware_seed, m.id, layout.target_anchor_id));
+    hardware_.push_back(
+        sim::drawTwrHardware(hardware_seed, m.id, layout.target_anchor_id, world.figures));
+    states_.emplace_back(world.figures);
   }
   for (const auto& b : layout.aoa_boards) {
-    mounted_.push_back(sim::mountedAoaBoard(b, hardware_seed));
+    aoa_.emplace_back(b, hardware_seed, world.figures);
   }
   const bool tdoa = layout.tdoa_anchors.size() >= 2;
   if (tdoa && realistic_) {
-    tdoa_.emplace(layout.tdoa_anchors, hardware_seed);
+    tdoa_.emplace(layout.tdoa_anchors, hardware_seed, world.figures);
   }
   // Free-running sensors: each its own phase.
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -59,7 +60,7 @@ void StandingRobotSensors::feed(estimation::Locator& locator, double now,
       } else {
         const std::size_t b = s - modules;
         const std::optional<sim::AoaSample> sample =
-            realistic_ ? sim::simulateRealisticAoa(mounted_[b], world_.aoa, at, rng)
+            realistic_ ? aoa_[b].simulate(world_.aoa, at, t, rng)
                        : sim::simulateAoa(layout_.aoa_boards[b], world_.aoa, at, rng);
         if (sample) {
           locator.addBearing(layout_.aoa_boards[b].id, sample->azimuth, sample->elevation,

@@ -4,6 +4,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <random>
 
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
@@ -139,14 +140,62 @@ AoaBoard mountedAoaBoard(const AoaBoard& board, std::uint64_t hardware_seed,
   return mounted;
 }
 
-std::optional<AoaSample> simulateRealisticAoa(const AoaBoard& mounted, const AoaNoise& noise,
-                                              const Eigen::Vector3d& target, Rng& rng,
-                                              const RealisticFigures& f) {
-  std::optional<AoaSample> sample = simulateAoa(mounted, noise, target, rng);
-  if (sample && chance(f.aoa_reflection, rng)) {
+RealisticFigures realBoardAoa(RealisticFigures f) {
+  f.aoa_reflection = 0.05;
+  f.aoa_bias_sigma = deg2rad(3.5);
+  f.aoa_slow_sigma = deg2rad(6.0);
+  f.aoa_slow_length = 1.5;
+  f.aoa_event_scale = deg2rad(5.0);
+  f.aoa_event_dof = 3.0;
+  f.aoa_elevation_bias_min = deg2rad(-11.0);
+  f.aoa_elevation_bias_max = deg2rad(-2.0);
+  f.aoa_shadow = 0.03;
+  return f;
+}
+
+AoaErrorState::AoaErrorState(const AoaBoard& board, std::uint64_t hardware_seed,
+                             const RealisticFigures& f)
+    : figures_(f),
+      mounted_(mountedAoaBoard(board, hardware_seed, f)),
+      // Correlation along s = t / slow_time + path / slow_length: a unit time constant.
+      slow_azimuth_(f.aoa_slow_sigma, 1.0),
+      slow_elevation_(f.aoa_slow_sigma, 1.0) {
+  Rng rng = hardwareRng(hardware_seed, "aoa-bias:" + board.id);
+  azimuth_bias_ = std::normal_distribution<double>(0.0, f.aoa_bias_sigma)(rng);
+  elevation_bias_ = uniform(rng, f.aoa_elevation_bias_min, f.aoa_elevation_bias_max);
+}
+
+std::optional<AoaSample> AoaErrorState::simulate(const AoaNoise& noise,
+                                                 const Eigen::Vector3d& target, double t,
+                                                 Rng& rng) {
+  std::optional<AoaSample> sample = simulateAoa(mounted_, noise, target, rng);
+  if (!sample) {
+    return sample;
+  }
+  const RealisticFigures& f = figures_;
+  const Eigen::Vector3d local = mounted_.orientation.conjugate() * (target - mounted_.position);
+  if (last_local_) {
+    path_ += (local - *last_local_).norm();
+  }
+  last_local_ = local;
+  const double s = t / f.aoa_slow_time + path_ / f.aoa_slow_length;
+  std::student_t_distribution<double> tail(f.aoa_event_dof);
+  const double scale = noise.sigma_scale;
+  sample->azimuth += azimuth_bias_ + scale * (slow_azimuth_.sample(s, rng) +
+                                              f.aoa_event_scale * tail(rng));
+  sample->elevation += elevation_bias_ + scale * (slow_elevation_.sample(s, rng) +
+                                                  f.aoa_event_scale * tail(rng));
+  if (chance(f.aoa_reflection, rng)) {
     // The strongest path came off a wall: a plausible angle, nowhere near the tag.
     sample->azimuth = uniform(rng, -kPi / 2.0, kPi / 2.0);
   }
+  if (chance(f.aoa_shadow, rng)) {
+    // The wearer's body between tag and board: what arrives comes over it, from above.
+    sample->elevation += uniform(rng, deg2rad(5.0), f.aoa_shadow_max);
+  }
+  // The board reports both angles in [-90, 90] deg (simulateAoa).
+  sample->azimuth = std::clamp(sample->azimuth, -kPi / 2.0, kPi / 2.0);
+  sample->elevation = std::clamp(sample->elevation, -kPi / 2.0, kPi / 2.0);
   return sample;
 }
 

@@ -100,13 +100,13 @@ World::World(const Layout& layout, const Scenario& scenario, const WorldConfig& 
   if (config_.profile == SensorProfile::kRealistic) {
     for (const TwrModule& m : layout_.twr_modules) {
       twr_hardware_.push_back(
-          drawTwrHardware(config_.hardware_seed, m.id, layout_.target_anchor_id));
-      twr_state_.emplace_back(RealisticFigures{}, config_.twr.sigma_scale);
+          drawTwrHardware(config_.hardware_seed, m.id, layout_.target_anchor_id, config_.figures));
+      twr_state_.emplace_back(config_.figures, config_.twr.sigma_scale);
     }
     for (const AoaBoard& b : layout_.aoa_boards) {
-      mounted_boards_.push_back(mountedAoaBoard(b, config_.hardware_seed));
+      aoa_state_.emplace_back(b, config_.hardware_seed, config_.figures);
     }
-    tdoa_hardware_.emplace(layout_.tdoa_anchors, config_.hardware_seed);
+    tdoa_hardware_.emplace(layout_.tdoa_anchors, config_.hardware_seed, config_.figures);
   }
 }
 
@@ -149,9 +149,8 @@ StepEvents World::step(double cmd_linear, double cmd_angular, double dt) {
   }
   for (std::size_t i = 0; i < aoa_schedule_.size(); ++i) {
     for (Schedule& s = aoa_schedule_[i]; s.next <= t_; s.next += s.period) {
-      const auto sample = realistic
-                              ? simulateRealisticAoa(mounted_boards_[i], config_.aoa, target, rng_)
-                              : simulateAoa(layout_.aoa_boards[i], config_.aoa, target, rng_);
+      const auto sample = realistic ? aoa_state_[i].simulate(config_.aoa, target, s.next, rng_)
+                                    : simulateAoa(layout_.aoa_boards[i], config_.aoa, target, rng_);
       if (sample) {
         events.aoa.push_back(AoaEvent{s.next, i, *sample});
       }

@@ -97,6 +97,9 @@ struct LocatorConfig {
   /// Particle estimator: a module's ranges closer in time than this count as a fraction
   /// of a measurement (ParticleTrackerConfig::range_decorrelation_time), s; 0: all fully.
   double range_decorrelation_time = 0.1;
+  /// Particle estimator: the same for a board's bearings
+  /// (ParticleTrackerConfig::bearing_decorrelation_time), s; 0: all fully.
+  double bearing_decorrelation_time = 0.1;
   /// Particle estimator: the slowly varying part of each sensor's error, which filtering
   /// cannot average away (correlated_error.hpp); the floor of the reported covariance.
   double range_bias_sigma = 0.05;            ///< m, TWR ranges

@@ -29,27 +29,34 @@ struct RangeLikelihood {
   double operator()(double error) const;
 };
 
-/// A bearing likelihood: von Mises in azimuth (and elevation), concentration
-/// 1 / sigma^2, mixed with a uniform share for reflections. A board cannot tell a tag in
-/// front from one behind its plane: for a particle behind the board the mirrored
-/// direction is predicted, with `behind_sigma_factor` times the sigma.
+/// A bearing likelihood for real boards (issue 35; doc/nodes/locator.md, "Bearings"): von
+/// Mises in azimuth (and elevation), concentration 1 / sigma^2, mixed with a uniform share
+/// for reflections, so an error of any size costs at most the floor (real boards: median
+/// 8 deg, p95 30 deg). A board cannot tell a tag in front from one behind its plane: a
+/// particle behind the board predicts the mirrored direction with the same likelihood,
+/// times `behind_weight` (the field of view's prior: the board faces where the tag is
+/// expected, and its ground plane hears less from behind). So the size of an error never
+/// decides the side; only a change of geometry does (the robot turning or driving), or
+/// that prior.
 struct BearingLikelihood {
   /// Which angle decides whether the board sees the target (its sigma then grows by
   /// `edge_sigma_factor`).
   enum class FieldOfViewTest {
-    /// The cloud's mean, for every particle alike: a tracked cloud's estimate.
+    /// The cloud's mean, mirrored to the board's front, for every particle alike: a
+    /// tracked cloud's estimate.
     kCloudMean,
-    /// Each particle's own angle: a cold start's cloud spread around the robot, whose
-    /// mean (near the robot) says nothing about where the target is.
+    /// Each particle's own angle, mirrored to the front: a cold start's cloud spread
+    /// around the robot, whose mean (near the robot) says nothing about where the
+    /// target is.
     kEachParticle,
   };
   double azimuth_sigma = 0.087;   ///< rad
   double elevation_sigma = 0.17;  ///< rad
   bool use_elevation = true;
   double outlier_share = 0.05;     ///< reflections, from any direction
-  double field_of_view = 1.22;     ///< rad; beyond it (and behind) the sigma grows
+  double field_of_view = 1.22;     ///< rad; beyond it the sigma grows
   double edge_sigma_factor = 6.0;  ///< sigma factor of a bearing measured outside it
-  double behind_sigma_factor = 6.0;
+  double behind_weight = 0.5;      ///< likelihood factor of a particle behind the board
   FieldOfViewTest field_of_view_test = FieldOfViewTest::kCloudMean;
 };
 

@@ -57,6 +57,9 @@ struct ParticleTrackerConfig {
   /// sqrt(this / dt)), so a 100 Hz module carries the information of a 10 Hz one and the
   /// cloud does not collapse onto the current error. s; 0: every range counts fully.
   double range_decorrelation_time = 0.1;
+  /// The same for a board's bearings (real boards report one per advertising channel,
+  /// about 30 a second, whose errors share the geometry's multipath), s; 0: all fully.
+  double bearing_decorrelation_time = 0.1;
   /// The slowly varying part of each sensor's error (correlated_error.hpp): the floor
   /// of the reported covariance. Range and TDoA in m, azimuth in rad.
   double range_bias_sigma = 0.05;
@@ -136,17 +139,25 @@ class ParticleTracker {
 
  private:
   void apply(const TrackedMeasurement& m);
-  /// `range_sigma_scale`: a range's sigma factor (range_decorrelation_time).
+  /// `sigma_scale`: a range's or bearing's sigma factor (the decorrelation times).
   MeasurementFit weigh(ParticleFilter& filter, const TrackedMeasurement& m, const Pose2& pose,
                        BearingLikelihood::FieldOfViewTest field_of_view =
                            BearingLikelihood::FieldOfViewTest::kCloudMean,
-                       double range_sigma_scale = 1.0) const;
-  /// A range's sigma factor by the time since its module's previous one; records it.
-  double rangeSigmaScale(const TrackedMeasurement& m);
+                       double sigma_scale = 1.0) const;
+  /// A range's or bearing's sigma factor by the time since its sensor's previous one
+  /// (range_ and bearing_decorrelation_time); records it. 1 for other kinds.
+  double sigmaScale(const TrackedMeasurement& m);
   bool coldStart(double now);
   void seedMirror();
   void maintainMirror();
   bool mirrorDistinct() const;
+  /// Folds the particles of `filter` that crossed the boards' plane back to the side
+  /// `left` (onMainSide); a resample, when more than a trace of weight crossed.
+  void keepSide(ParticleFilter& filter, bool left) const;
+  /// Whether `pose` differs from the newest processed measurement's (kStill).
+  bool moved(const Pose2& pose) const;
+  /// Whether `p` (tracking frame) is in front of the first AoA board's plane.
+  bool inFront(const Eigen::Vector3d& p, const Pose2& pose) const;
   Eigen::Vector3d mirrored(const Eigen::Vector3d& p, const Pose2& pose) const;
   Eigen::Vector2d mirroredVelocity(const Eigen::Vector2d& v, const Pose2& pose) const;
   bool onMainSide(const Eigen::Vector3d& p, const Pose2& pose) const;
@@ -163,8 +174,11 @@ class ParticleTracker {
   std::optional<Eigen::Vector3d> last_main_mean_;
   double evidence_ = 0.0;
   double evidence_time_ = 0.0;  ///< stamp of the newest measurement in evidence_
-  /// The modules' main axis in the robot frame, when they are nearly collinear.
+  /// The modules' main axis in the robot frame, when they are nearly collinear; or,
+  /// when the modules cannot fix a position (at most one) and every AoA board faces the
+  /// same way, the boards' plane: the side they cannot tell.
   std::optional<MirrorAxis> axis_;
+  bool board_axis_ = false;
   /// One epoch cannot place the target (at most one TWR module and no AoA board: one
   /// ring, plus TDoA hyperbolae that only give a direction): a cloud too wide to report
   /// is kept converging (reported LOST) instead of restarting from the newest epoch,
@@ -178,8 +192,10 @@ class ParticleTracker {
   Pose2 pose_;                                      ///< of the newest processed measurement
   double last_position_fix_ = -1.0;                 ///< newest range or TDoA applied
   double last_kind_[4] = {-1.0, -1.0, -1.0, -1.0};  ///< by Kind
-  /// Stamp of each module's newest applied range (range_decorrelation_time).
+  /// Stamp of each module's newest applied range and each board's newest bearing (the
+  /// decorrelation times).
   std::vector<double> last_range_;
+  std::vector<double> last_bearing_;
   /// Running mean of the inlier probability of the applied measurements (see apply()).
   double fit_ = 1.0;
   TrackerStats stats_;

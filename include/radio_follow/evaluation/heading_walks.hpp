@@ -50,7 +50,8 @@ struct HeadingWalkResult {
 };
 
 /// Runs the walks with `layout`'s first AoA board alone (placed as the layout has it) and
-/// the locator configuration `locator`.
+/// the locator configuration `locator`; the board errs as real XPLR-AOA-1 boards do
+/// (sim::realBoardAoa on `world`'s figures, with its realistic profile).
 HeadingWalkResult runHeadingWalks(const Layout& layout, sim::WorldConfig world,
                                   const estimation::LocatorConfig& locator,
                                   const HeadingWalkParams& params);

@@ -65,7 +65,7 @@ class StandingRobotSensors {
   bool realistic_;
   std::vector<sim::TwrNoiseState> states_;
   std::vector<sim::TwrHardware> hardware_;
-  std::vector<AoaBoard> mounted_;
+  std::vector<sim::AoaErrorState> aoa_;
   std::optional<sim::TdoaHardware> tdoa_;
   /// Next report time per sensor: modules, boards, then with TDoA anchors the target's
   /// blinks and each module's.

@@ -34,6 +34,9 @@ struct WorldConfig {
   /// The simulated robot's hardware (realistic profile): every module's bias and scale,
   /// every board's mounting error, every anchor's offset. Independent of `seed`.
   std::uint64_t hardware_seed = 1;
+  /// The realistic profile's figures (not a parameter: realBoardAoa() for the lab's
+  /// real-board bench).
+  RealisticFigures figures;
 
   /// Reads the simulator's world parameters (config/simulator.yaml: sensor_profile,
   /// hardware_seed, robot/*, *_rate, twr_*, aoa_*, tdoa_*; not the seed nor
@@ -110,7 +113,7 @@ class World {
   // The realistic profile's hardware and per-sensor noise state (unused when ideal).
   std::vector<TwrHardware> twr_hardware_;
   std::vector<TwrNoiseState> twr_state_;
-  std::vector<AoaBoard> mounted_boards_;
+  std::vector<AoaErrorState> aoa_state_;
   std::optional<TdoaHardware> tdoa_hardware_;
 };
 
