@@ -118,6 +118,8 @@ ColdStartResult runColdStarts(const Layout& layout, sim::WorldConfig world,
   result.nees_samples = nees.size();
   result.nees_mean = mean(nees);
   result.nees_median = quantile(nees, 0.5);
+  result.nees_p99 = quantile(nees, 0.99);
+  result.nees_max = nees.empty() ? 0.0 : *std::max_element(nees.begin(), nees.end());
   result.within_95 = shareInside95(nees);
   return result;
 }

@@ -130,8 +130,10 @@ int main(int argc, char** argv) {
             static_cast<double>(std::max<std::size_t>(1, r.updates)));
     std::printf(
         "error after 1 s: median %.3f m, p95 %.3f m; NEES mean %.2f (2D: 2 is consistent), "
-        "median %.2f (1.39), inside the 95 %% ellipse %.3f (0.95), over %zu estimates\n",
-        r.error_median, r.error_p95, r.nees_mean, r.nees_median, r.within_95, r.nees_samples);
+        "median %.2f (1.39), p99 %.1f (9.2), largest %.0f, inside the 95 %% ellipse %.3f "
+        "(0.95), over %zu estimates\n",
+        r.error_median, r.error_p95, r.nees_mean, r.nees_median, r.nees_p99, r.nees_max,
+        r.within_95, r.nees_samples);
     return 0;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "locator_cold_starts: %s\n", e.what());

@@ -70,6 +70,10 @@ struct ColdStartResult {
   /// dominated by the few estimates on the mirror) and the share of errors inside the 95 %
   /// ellipse (consistent = 0.95).
   double nees_median = 0.0;
+  /// Its 99th percentile and largest value: whether the mean is the bulk's or a few
+  /// confident estimates in the wrong place (2D, consistent: p99 9.2).
+  double nees_p99 = 0.0;
+  double nees_max = 0.0;
   double within_95 = 0.0;
   std::size_t nees_samples = 0;
   std::size_t ambiguous_updates = 0;
