@@ -73,27 +73,26 @@ ParticleTracker::ParticleTracker(const Layout& layout, const ParticleTrackerConf
   for (const auto& m : layout.twr_modules) {
     modules.push_back(m.position);
   }
+  const auto facing = [](const AoaBoard& b) {
+    const Eigen::Vector3d x = b.orientation * Eigen::Vector3d::UnitX();
+    return std::atan2(x.y(), x.x());
+  };
+  const double yaw = layout.aoa_boards.empty() ? 0.0 : facing(layout.aoa_boards.front());
+  boards_one_way_ =
+      !layout.aoa_boards.empty() &&
+      std::all_of(layout.aoa_boards.begin(), layout.aoa_boards.end(), [&](const AoaBoard& b) {
+        return std::abs(std::remainder(facing(b) - yaw, 2.0 * kPi)) < kParallelBoards;
+      });
   const std::optional<MirrorAxis> axis = mirrorAxis(modules);
   if (config.filter.planar && axis && axis->flatness < kCollinearRatio) {
     axis_ = axis;
-  } else if (config.filter.planar && modules.size() <= 1 && !layout.aoa_boards.empty()) {
+  } else if (config.filter.planar && modules.size() <= 1 && boards_one_way_) {
     // The boards' plane: a direction along it and the first board's position on it.
-    const auto facing = [](const AoaBoard& b) {
-      const Eigen::Vector3d x = b.orientation * Eigen::Vector3d::UnitX();
-      return std::atan2(x.y(), x.x());
-    };
-    const double yaw = facing(layout.aoa_boards.front());
-    const bool parallel =
-        std::all_of(layout.aoa_boards.begin(), layout.aoa_boards.end(), [&](const AoaBoard& b) {
-          return std::abs(std::remainder(facing(b) - yaw, 2.0 * kPi)) < kParallelBoards;
-        });
-    if (parallel) {
-      MirrorAxis plane;
-      plane.centroid = layout.aoa_boards.front().position.head<2>();
-      plane.direction = Eigen::Vector2d(-std::sin(yaw), std::cos(yaw));
-      axis_ = plane;
-      board_axis_ = true;
-    }
+    MirrorAxis plane;
+    plane.centroid = layout.aoa_boards.front().position.head<2>();
+    plane.direction = Eigen::Vector2d(-std::sin(yaw), std::cos(yaw));
+    axis_ = plane;
+    board_axis_ = true;
   }
 }
 
@@ -174,7 +173,7 @@ MeasurementFit ParticleTracker::weigh(ParticleFilter& filter, const TrackedMeasu
       BearingLikelihood model = config_.bearing;
       model.field_of_view = board.field_of_view;
       model.field_of_view_test = field_of_view;
-      if (!board_axis_) {
+      if (!boards_one_way_) {
         // Boards that face several ways see the side themselves: no prior needed.
         model.behind_weight = 1.0;
       }

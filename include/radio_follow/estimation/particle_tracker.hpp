@@ -179,6 +179,10 @@ class ParticleTracker {
   /// same way, the boards' plane: the side they cannot tell.
   std::optional<MirrorAxis> axis_;
   bool board_axis_ = false;
+  /// Every AoA board faces the same way: none of them sees behind the others' plane, so
+  /// the field of view's prior (BearingLikelihood::behind_weight) decides the side until
+  /// the data do.
+  bool boards_one_way_ = false;
   /// One epoch cannot place the target (at most one TWR module and no AoA board: one
   /// ring, plus TDoA hyperbolae that only give a direction): a cloud too wide to report
   /// is kept converging (reported LOST) instead of restarting from the newest epoch,
