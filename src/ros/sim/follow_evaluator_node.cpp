@@ -15,6 +15,7 @@
 #include <system_error>
 
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/common/plausibility.hpp"
 #include "radio_follow/estimation/target_status.hpp"
 #include "radio_follow/ros/common/params.hpp"
 #include "radio_follow/ros/common/target_estimate.hpp"
@@ -119,9 +120,24 @@ FollowEvaluatorNode::FollowEvaluatorNode(ros::NodeHandle& nh, ros::NodeHandle& p
   time_.setFutureTolerance(futureStampTolerance(ros::Time::isSimTime()));  // as the controllers
 
   odom_sub_ = barrier_.subscribe<nav_msgs::Odometry>(
-      nh, "odom", 10, [this](const nav_msgs::OdometryConstPtr& m) { odom_ = m; });
+      nh, "odom", 10, [this](const nav_msgs::OdometryConstPtr& m) {
+        const auto& p = m->pose.pose;
+        if (usable(plausibleOdometryCoordinate(p.position.x) &&
+                       plausibleOdometryCoordinate(p.position.y) &&
+                       std::isfinite(p.orientation.x) && std::isfinite(p.orientation.y) &&
+                       std::isfinite(p.orientation.z) && std::isfinite(p.orientation.w) &&
+                       std::isfinite(m->twist.twist.linear.x),
+                   "odom")) {
+          odom_ = m;
+        }
+      });
   truth_sub_ = barrier_.subscribe<geometry_msgs::PointStamped>(
       nh, "ground_truth/target", 10, [this](const geometry_msgs::PointStampedConstPtr& m) {
+        if (!usable(plausibleOdometryCoordinate(m->point.x) &&
+                        plausibleOdometryCoordinate(m->point.y),
+                    "ground_truth/target")) {
+          return;
+        }
         if (truth_) {
           // Seconds as double: stamps 2^32 s apart overflow ros::Duration.
           const double dt = m->header.stamp.toSec() - truth_->header.stamp.toSec();
@@ -134,6 +150,10 @@ FollowEvaluatorNode::FollowEvaluatorNode(ros::NodeHandle& nh, ros::NodeHandle& p
       });
   relative_sub_ = barrier_.subscribe<geometry_msgs::PointStamped>(
       nh, "ground_truth/target_relative", 10, [this](const geometry_msgs::PointStampedConstPtr& m) {
+        if (!usable(plausibleCoordinate(m->point.x) && plausibleCoordinate(m->point.y),
+                    "ground_truth/target_relative")) {
+          return;
+        }
         relative_history_.push_back(m);
         while (relative_history_.size() > 1 &&
                m->header.stamp.toSec() - relative_history_.front()->header.stamp.toSec() >
@@ -142,9 +162,18 @@ FollowEvaluatorNode::FollowEvaluatorNode(ros::NodeHandle& nh, ros::NodeHandle& p
         }
       });
   estimate_sub_ = barrier_.subscribe<TargetEstimate>(
-      nh, "target", 10, [this](const TargetEstimateConstPtr& m) { estimate_ = m; });
+      nh, "target", 10, [this](const TargetEstimateConstPtr& m) {
+        if (usable(plausibleCoordinate(m->position.x) && plausibleCoordinate(m->position.y),
+                   "target")) {
+          estimate_ = m;
+        }
+      });
   cmd_sub_ = barrier_.subscribe<geometry_msgs::Twist>(
-      nh, "cmd_vel", 10, [this](const geometry_msgs::TwistConstPtr& m) { cmd_ = *m; });
+      nh, "cmd_vel", 10, [this](const geometry_msgs::TwistConstPtr& m) {
+        if (usable(std::isfinite(m->linear.x) && std::isfinite(m->angular.z), "cmd_vel")) {
+          cmd_ = *m;
+        }
+      });
   report_pub_ = nh.advertise<std_msgs::String>("evaluation/report", 1, true);
   finished_sub_ =
       barrier_.subscribe(nh, "ground_truth/finished", 1, &FollowEvaluatorNode::onFinished, this);
@@ -158,6 +187,15 @@ FollowEvaluatorNode::FollowEvaluatorNode(ros::NodeHandle& nh, ros::NodeHandle& p
 
 FollowEvaluatorNode::~FollowEvaluatorNode() {
   writeReport();
+}
+
+bool FollowEvaluatorNode::usable(bool ok, const char* topic) {
+  if (!ok) {
+    ++implausible_;
+    ROS_WARN_THROTTLE(5.0, "follow_evaluator: dropped a %s message with a non-finite or "
+                           "implausible value (%zu dropped so far)", topic, implausible_);
+  }
+  return ok;
 }
 
 void FollowEvaluatorNode::onFinished(const std_msgs::BoolConstPtr& msg) {
@@ -247,7 +285,9 @@ void FollowEvaluatorNode::onTick(const ros::TimerEvent& event) {
     s.estimate_x = estimate_->position.x;
     s.estimate_y = estimate_->position.y;
     const auto& c = estimate_->position_covariance;
-    s.estimate_covariance = std::array<double, 3>{c[0], c[1], c[4]};
+    if (std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[4])) {
+      s.estimate_covariance = std::array<double, 3>{c[0], c[1], c[4]};
+    }
   }
   metrics_.add(s);
 }

@@ -51,8 +51,12 @@ class FollowEvaluatorNode {
   /// One line saying whether the run worked as a closed loop, naming what failed.
   void logVerdict(const evaluation::FollowReport& report) const;
   void writeFiles() const;
+  /// Whether an input is usable (finite, plausible); counts and warns (throttled,
+  /// naming `topic`) when it is not, so one bad message cannot make the report NaN.
+  bool usable(bool ok, const char* topic);
 
   Params params_;
+  std::size_t implausible_ = 0;  ///< inputs dropped as not finite or implausible
   evaluation::FollowMetrics metrics_;
   TimePolicy time_;
   CallbackBarrier barrier_;  // every subscriber and timer runs inside it
