@@ -17,15 +17,17 @@ overlay="$(mktemp)"
 trap 'rm -f "$overlay"' EXIT
 
 # The shipped values of the swept parameters, from the file itself (top-level keys only).
-shipped="$(awk -F': *' '/^(range_step|error_threshold|kohonen_k|agreement_distance|tau|window|linear_gain):/ {
+shipped="$(awk -F': *' '/^(goal_estimator|range_step|error_threshold|kohonen_k|agreement_distance|tau|window|linear_gain):/ {
   sub(/ *#.*/, "", $2); printf "%s%s %s", sep, $1, $2; sep = ", " }' "$repo/config/homing_controller.yaml")"
 echo "| changed (shipped: $shipped) | goal err. 1-4 (m) | final err. 1-4 (m) | goal err. 5 (m) | final err. 5 (m) | success 5 (%) | time 5 (s) |"
 echo "| --- | --- | --- | --- | --- | --- | --- |"
-for change in "(none)" "range_step: 0.0" "range_step: 0.1" "range_step: 1.0" \
-  "error_threshold: 0.6" "error_threshold: 1.0" "kohonen_k: 0.5" "kohonen_k: 0.15" \
-  "agreement_distance: 0.1" "agreement_distance: 0.05" "tau: 10.0" "tau: 40.0" "window: 40" \
-  "window: 80" "linear_gain: 1.0" "linear_gain: 2.0"; do
-  if [[ "$change" == "(none)" ]]; then : >"$overlay"; else echo "$change" >"$overlay"; fi
+# The hybrid rule's own parameters (range_step, error_threshold, kohonen_k) only start the
+# fit of all readings, so they are swept with the hybrid rule as the goal (seed000).
+for change in "(none)" "agreement_distance: 0.1" "agreement_distance: 0.05" "tau: 40.0" \
+  "linear_gain: 1.0" "linear_gain: 2.0" "goal_estimator: seed000" \
+  "goal_estimator: seed000, range_step: 0.0" "goal_estimator: seed000, error_threshold: 1.0" \
+  "goal_estimator: seed000, kohonen_k: 0.5" "goal_estimator: seed000, kohonen_k: 0.15"; do
+  if [[ "$change" == "(none)" ]]; then : >"$overlay"; else sed 's/, /\n/g' <<<"$change" >"$overlay"; fi
   "$experiment" --params "$overlay" | awk -F' *[|] *' -v change="$change" '
     /^[|] [1-4]:/ {
       g = $6 + 0; f = $7 + 0

@@ -128,6 +128,19 @@ if wanted homing; then
   shown '"$RF_WS"/devel/lib/radio_follow/homing_experiment --arrival 0.15'
   "$bin/homing_experiment" --arrival 0.15
   echo
+  echo "Five target sets at the 0.3 m radius, the node's goal (all_readings) and the hybrid rule's (seed000):"
+  echo
+  printf 'goal_estimator: seed000\n' >"$tmp/seed000.yaml"
+  shown "printf 'goal_estimator: seed000\\n' > /tmp/seed000.yaml; for s in 1 2 3 4 5; do \"\$RF_WS\"/devel/lib/radio_follow/homing_experiment --seed \$s [--params /tmp/seed000.yaml]; done"
+  for estimator in all_readings seed000; do
+    params=()
+    [[ "$estimator" == seed000 ]] && params=(--params "$tmp/seed000.yaml")
+    for s in 1 2 3 4 5; do "$bin/homing_experiment" --seed "$s" "${params[@]}" >"$tmp/homing5_$s.md"; done
+    echo "$estimator:"
+    echo
+    "${tables[@]}" homing-range "$tmp"/homing5_{1,2,3,4,5}.md
+    echo
+  done
   echo "Ten target sets, range of the ten values:"
   echo
   shown 'for s in $(seq 1 10); do "$RF_WS"/devel/lib/radio_follow/homing_experiment --arrival 0.15 --seed $s; done'
@@ -148,16 +161,16 @@ if wanted homing; then
   shown '"$RF_WS"/devel/lib/radio_follow/homing_experiment --obstacles 12 --robot-radius 0.3'
   "$bin/homing_experiment" --obstacles 12 --robot-radius 0.3
   echo
-  echo "Seed 000's law as published (range_step 0: no step along the line of sight), on the benchmark:"
+  echo "Seed 000's law as published (the hybrid rule's goal, range_step 0: no step along the line of sight), on the benchmark:"
   echo
-  printf 'range_step: 0.0\n' >"$tmp/paper_law.yaml"
-  shown "printf 'range_step: 0.0\\n' > /tmp/paper_law.yaml; \"\$RF_WS\"/devel/lib/radio_follow/homing_experiment --params /tmp/paper_law.yaml"
+  printf 'goal_estimator: seed000\nrange_step: 0.0\n' >"$tmp/paper_law.yaml"
+  shown "printf 'goal_estimator: seed000\\nrange_step: 0.0\\n' > /tmp/paper_law.yaml; \"\$RF_WS\"/devel/lib/radio_follow/homing_experiment --params /tmp/paper_law.yaml"
   "$bin/homing_experiment" --params "$tmp/paper_law.yaml"
   echo
   echo "A lower eq 14 threshold (doc/control/homing.md) instead of the range step, on the benchmark:"
   echo
-  printf 'range_step: 0.0\nerror_threshold: 0.1\n' >"$tmp/threshold.yaml"
-  shown "printf 'range_step: 0.0\\nerror_threshold: 0.1\\n' > /tmp/threshold.yaml; \"\$RF_WS\"/devel/lib/radio_follow/homing_experiment --params /tmp/threshold.yaml"
+  printf 'goal_estimator: seed000\nrange_step: 0.0\nerror_threshold: 0.1\n' >"$tmp/threshold.yaml"
+  shown "printf 'goal_estimator: seed000\\nrange_step: 0.0\\nerror_threshold: 0.1\\n' > /tmp/threshold.yaml; \"\$RF_WS\"/devel/lib/radio_follow/homing_experiment --params /tmp/threshold.yaml"
   "$bin/homing_experiment" --params "$tmp/threshold.yaml"
   echo
   echo "The law's parameters one at a time (configuration 5's goal error against the paper's 0.11 m):"
@@ -166,18 +179,18 @@ if wanted homing; then
   bash "$repo/scripts/homing_sweep.sh"
   echo
   echo "Through the ROS nodes against the simulator (4 x real time; ROS message timing varies),"
-  echo "with the node's law (range_step 0.5, error_threshold 0.3), the paper's (range_step 0) and"
-  echo "the paper's with error_threshold 0.1:"
+  echo "with the node's law (all_readings), the hybrid rule with the range step (seed000 0.5 0.3),"
+  echo "the paper's law (seed000 0 0.3) and the paper's with error_threshold 0.1:"
   echo
-  shown 'RF_SEED=N rostest --text radio_follow homing_static_beacon.test [range_step:=0.0] [error_threshold:=0.1]   # N = 1, 2, 3'
-  echo "| seed | range_step | error_threshold | passed | first arrival logged (s, simulated) | final gap (m) | goal error (m) | wall (s) | simulated duration / 4 (s) | wall / ideal |"
-  echo "|---|---|---|---|---|---|---|---|---|---|"
-  for law in "0.5 0.3" "0.0 0.3" "0.0 0.1"; do
-    read -r step threshold <<<"$law"
+  shown 'RF_SEED=N rostest --text radio_follow homing_static_beacon.test [goal_estimator:=seed000] [range_step:=0.0] [error_threshold:=0.1]   # N = 1, 2, 3'
+  echo "| seed | goal_estimator | range_step | error_threshold | passed | first arrival logged (s, simulated) | final gap (m) | goal error (m) | wall (s) | simulated duration / 4 (s) | wall / ideal |"
+  echo "|---|---|---|---|---|---|---|---|---|---|---|"
+  for law in "all_readings 0.5 0.3" "seed000 0.5 0.3" "seed000 0.0 0.3" "seed000 0.0 0.1"; do
+    read -r estimator step threshold <<<"$law"
     for seed in 1 2 3; do
       t0=$(now)
       passed=yes
-      RF_SEED=$seed rostest --text radio_follow homing_static_beacon.test range_step:=$step error_threshold:=$threshold >"$tmp/homing_ros.log" 2>&1 || passed=no
+      RF_SEED=$seed rostest --text radio_follow homing_static_beacon.test goal_estimator:=$estimator range_step:=$step error_threshold:=$threshold >"$tmp/homing_ros.log" 2>&1 || passed=no
       grep -q '^OK$' "$tmp/homing_ros.log" || passed=no
       wall=$(elapsed "$t0")
       metrics="$ROS_HOME/radio_follow_experiments/homing_static_beacon/metrics.json"
@@ -185,8 +198,8 @@ if wanted homing; then
       arrival=$(grep -m1 'Arrived at the target' "$tmp/homing_ros.log" | sed -n 's/^[^[]*\[[^]]*\] \[[0-9.]*, \([0-9]*\.[0-9]\{0,2\}\).*/\1/p')
       goal=$(grep -m1 '^goal error:' "$tmp/homing_ros.log" | awk '{printf "%.3f", $3}')
       read -r gap duration < <(python3 -c 'import json,sys; m=json.load(open(sys.argv[1])); print("%.3f %.1f" % (m["final_gap_m"], m["duration_s"]))' "$metrics")
-      awk -v s="$seed" -v k="$step" -v th="$threshold" -v p="$passed" -v a="${arrival:--}" -v g="$gap" -v e="${goal:--}" -v w="$wall" -v d="$duration" \
-        'BEGIN { printf "| %s | %s | %s | %s | %s | %s | %s | %s | %.1f | %.2f |\n", s, k, th, p, a, g, e, w, d / 4, w / (d / 4) }'
+      awk -v s="$seed" -v est="$estimator" -v k="$step" -v th="$threshold" -v p="$passed" -v a="${arrival:--}" -v g="$gap" -v e="${goal:--}" -v w="$wall" -v d="$duration" \
+        'BEGIN { printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %.1f | %.2f |\n", s, est, k, th, p, a, g, e, w, d / 4, w / (d / 4) }'
     done
   done
 fi

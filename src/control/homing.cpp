@@ -124,6 +124,8 @@ std::optional<Eigen::Vector2d> ParallaxEstimator::update(const Eigen::Vector2d& 
 
 void HomingParams::validate() const {
   const auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
+  require(goal_estimator == "all_readings" || goal_estimator == "seed000", "~goal_estimator",
+          goal_estimator, "all_readings or seed000");
   require(positive(tau), "~tau", tau, "a decay > 0 in readings");
   require(window >= 3, "~window", window, "a count >= 3");
   require(k > 0.0 && k <= 1.0, "~kohonen_k", k, "a step in (0, 1]");
@@ -188,6 +190,28 @@ void HybridHoming::update(const Eigen::Vector2d& robot, double bearing, double d
     ++refused_;  // one NaN would stay in the parallax estimate and every goal after it
     return;
   }
+  updateHybrid(robot, bearing, distance);
+  if (params_.goal_estimator != "all_readings") {
+    return;
+  }
+  const bool has_distance = std::isfinite(distance) && distance >= 0.0;
+  all_readings_.add(robot, bearing,
+                    has_distance ? distance : std::numeric_limits<double>::quiet_NaN());
+  if (!goal_) {
+    return;
+  }
+  // The previous fit is the best start; the hybrid goal gives the first one.
+  const auto fit = all_readings_.solve(fit_ ? *fit_ : *goal_);
+  if (fit) {
+    fit_ = fit;
+  }
+  if (fit_) {
+    goal_ = fit_;
+    source_ = HomingSource::kAllReadings;
+  }
+}
+
+void HybridHoming::updateHybrid(const Eigen::Vector2d& robot, double bearing, double distance) {
   bool vector_outlier = true;
   // A zero distance is a reading like any other (the target at the sensor): a sensor that
   // reports at least zero turns every short reading into one, and dropping them would
@@ -230,7 +254,7 @@ bool HybridHoming::arrived(const Eigen::Vector2d& robot) const {
     return false;
   }
   const auto vector = vector_.estimate();
-  const auto& parallax = parallax_.goal();
+  const auto& parallax = source_ == HomingSource::kAllReadings ? goal_ : parallax_.goal();
   // Bearings only (no distance ever): nothing to cross-check the parallax goal with,
   // and refusing to arrive would leave the robot circling the goal.
   if (!vector) {

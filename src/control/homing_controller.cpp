@@ -26,6 +26,10 @@ const ParamTable<HomingParams>& estimatorTable() {
   using H = HomingParams;
   static const ParamTable<H> t =
       ParamTable<H>()
+          .addChoice("goal_estimator", &H::goal_estimator,
+                     std::vector<std::pair<std::string, std::string>>{
+                         {"all_readings", "all_readings"}, {"seed000", "seed000"}},
+                     "all_readings: fit of every reading; seed000: the hybrid rule's goal.")
           .add("tau", &H::tau, "readings", "Eq 3 decay.", Range::above(0.0))
           .add("window", &H::window, "", "Vector goals kept.", Range::atLeast(3))
           .add("kohonen_k", &H::k, "", "Kohonen step.", Range::aboveUpTo(0.0, 1.0))

@@ -8,6 +8,7 @@
 
 #include "radio_follow/control/path_follower.hpp"
 #include "radio_follow/control/rate_limiter.hpp"
+#include "radio_follow/control/standing_goal.hpp"
 
 namespace radio_follow {
 namespace control {
@@ -75,6 +76,9 @@ class ParallaxEstimator {
 
 /// Parameters of the hybrid homing estimator and its velocity law.
 struct HomingParams {
+  /// "all_readings": the goal is StandingGoalEstimator's fit of every reading, once the
+  /// hybrid rule below has given it a first goal; "seed000": the hybrid rule's goal.
+  std::string goal_estimator = "all_readings";
   double tau = 5.0;                  ///< eq 3 decay, in readings
   int window = 20;                   ///< vector goals kept
   double k = 0.8;                    ///< Kohonen step
@@ -94,9 +98,10 @@ struct HomingParams {
 };
 
 /// Which estimate the hybrid rule reported.
-enum class HomingSource { kNone, kVector, kParallax, kAverage };
+enum class HomingSource { kNone, kVector, kParallax, kAverage, kAllReadings };
 
-/// The hybrid rule of seed 000 Section 5.3.
+/// The hybrid rule of seed 000 Section 5.3, and (goal_estimator "all_readings") the fit
+/// of every reading that takes over from it once it has a goal.
 class HybridHoming {
  public:
   explicit HybridHoming(const HomingParams& params);
@@ -114,14 +119,20 @@ class HybridHoming {
   const std::optional<Eigen::Vector2d>& parallaxGoal() const { return parallax_.goal(); }
 
   /// Arrived: within arrival_distance of the goal and both estimates within
-  /// agreement_distance of each other. With bearings only (no vector estimate) the
-  /// distance condition alone decides.
+  /// agreement_distance of each other (the parallax goal, or the fit of all readings
+  /// when it is the goal, against the vector goal). With bearings only (no vector
+  /// estimate) the distance condition alone decides.
   bool arrived(const Eigen::Vector2d& robot) const;
 
  private:
+  /// Seed 000's hybrid rule (Section 5.3) on one reading.
+  void updateHybrid(const Eigen::Vector2d& robot, double bearing, double distance);
+
   HomingParams params_;
   VectorEstimator vector_;
   ParallaxEstimator parallax_;
+  StandingGoalEstimator all_readings_;
+  std::optional<Eigen::Vector2d> fit_;  ///< the newest fit of all readings
   std::optional<Eigen::Vector2d> goal_;
   HomingSource source_ = HomingSource::kNone;
   std::size_t refused_ = 0;

@@ -94,9 +94,17 @@ TEST(HomingErrorMetric, IsEq14) {
   EXPECT_NEAR(homingErrorMetric({4.0, 0.0}, {5.0, 0.0}, {0.0, 0.0}), 1.0 / 4.5, 1e-12);
 }
 
+/// The hybrid rule of seed 000 Section 5.3 as the goal (not the fit of all readings,
+/// standing_goal_test.cpp), with the node's range step.
+HomingParams hybridParams() {
+  HomingParams params;
+  params.goal_estimator = "seed000";
+  return params;
+}
+
 TEST(HybridHoming, AgreeingEstimatesReportParallax) {
   const Eigen::Vector2d target(4.0, 1.0);
-  HybridHoming homing{HomingParams()};
+  HybridHoming homing{hybridParams()};
   for (int i = 0; i < 10; ++i) {
     const Eigen::Vector2d robot(0.1 * i, 0.05 * i);
     homing.update(robot, bearingTo(robot, target), (target - robot).norm());
@@ -107,7 +115,7 @@ TEST(HybridHoming, AgreeingEstimatesReportParallax) {
 
 /// Seed 000's law as published: no step along the line of sight (HomingParams::range_step).
 HomingParams paperParams() {
-  HomingParams params;
+  HomingParams params = hybridParams();
   params.range_step = 0.0;
   return params;
 }
@@ -199,7 +207,7 @@ TEST(HybridHoming, ArrivalNeedsAgreementWhenBothEstimatesExist) {
 Eigen::Vector2d goalAfterStraightApproach(double error_threshold, double range_step = 0.0) {
   const Eigen::Vector2d target(3.0, 0.0);
   const Eigen::Vector2d short_goal(2.85, 0.0);
-  HomingParams params;
+  HomingParams params = hybridParams();
   params.error_threshold = error_threshold;
   params.range_step = range_step;
   HybridHoming homing{params};
