@@ -179,7 +179,7 @@ MeasurementFit ParticleTracker::weigh(ParticleFilter& filter, const TrackedMeasu
       }
       model.azimuth_sigma *= sigma_scale;
       model.elevation_sigma *= sigma_scale;
-      if (last_position_fix_ < 0.0 || m.t - last_position_fix_ > config_.max_age) {
+      if (!rangedAt(m.t)) {
         model.elevation_sigma *= kUnrangedElevationFactor;
       }
       return filter.weightBearing(pose.toFixed(board.position),
@@ -193,6 +193,10 @@ MeasurementFit ParticleTracker::weigh(ParticleFilter& filter, const TrackedMeasu
     }
   }
   return {};
+}
+
+bool ParticleTracker::rangedAt(double t) const {
+  return last_position_fix_ >= 0.0 && t - last_position_fix_ <= config_.max_age;
 }
 
 double ParticleTracker::sigmaScale(const TrackedMeasurement& m) {
@@ -219,17 +223,17 @@ void ParticleTracker::apply(const TrackedMeasurement& m) {
   if (m.t < main_.time()) {
     ++stats_.late;  // applied at the filter's time: the filters do not run backwards
   }
-  const double range_scale = sigmaScale(m);
+  const double sigma_scale = sigmaScale(m);
   main_.predict(m.t);
   const MeasurementFit main_fit =
-      weigh(main_, m, pose, BearingLikelihood::FieldOfViewTest::kCloudMean, range_scale);
+      weigh(main_, m, pose, BearingLikelihood::FieldOfViewTest::kCloudMean, sigma_scale);
   // A track whose particles are all in the wrong place explains every input as an
   // outlier, and the outlier floor then moves nothing: watch the inlier probability.
   fit_ += kFitRate * (main_fit.inlier - fit_);
   if (mirror_active_) {
     mirror_.predict(m.t);
     const MeasurementFit mirror_fit =
-        weigh(mirror_, m, pose, BearingLikelihood::FieldOfViewTest::kCloudMean, range_scale);
+        weigh(mirror_, m, pose, BearingLikelihood::FieldOfViewTest::kCloudMean, sigma_scale);
     if (main_fit.likelihood > 0.0 && mirror_fit.likelihood > 0.0) {
       // Fading memory: the side is decided by about the last `mirror_memory` seconds of
       // data. It bounds the evidence by the rate at which the sensors deliver it, so one
@@ -453,7 +457,7 @@ TrackerOutput ParticleTracker::update(double now) {
   const bool fresh = now - main_.time() <= config_.max_age;
   const Eigen::Matrix3d covariance = main_.covariance();
   const Eigen::Vector3d position = main_.mean();
-  const bool ranged = last_position_fix_ >= 0.0 && now - last_position_fix_ <= config_.max_age;
+  const bool ranged = rangedAt(now);
   const double sigma = worstSigma(covariance);
   const double distance = pose_.fromFixed(position).head<2>().norm();
   // A cloud wider than lost_sigma (or, far away, than twice the relative limit: a

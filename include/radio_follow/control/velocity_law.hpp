@@ -8,6 +8,7 @@
 #include "radio_follow/control/follower_state.hpp"
 #include "radio_follow/control/pid.hpp"
 #include "radio_follow/control/rate_limiter.hpp"
+#include "radio_follow/control/safety_monitor.hpp"
 
 namespace radio_follow {
 namespace control {
@@ -53,7 +54,7 @@ struct VelocityLawParams {
   double max_linear_decel = 2.0;
   /// The safety layer's stop distance (SafetyParams::safe_distance, copied by the node):
   /// the law must come to rest before it, so follow_distance - closing_distance >= it.
-  double safe_distance = 1.3;
+  double safe_distance = SafetyParams().safe_distance;
   /// Drive backwards when the target stays behind the robot (reversible robots only).
   bool allow_backwards = false;
   /// |bearing| beyond this angle from the current driving direction counts as "behind", rad.

@@ -75,7 +75,7 @@ struct LocatorConfig {
   /// AMBIGUOUS until a few epochs in a row have preferred one side by more. 0 disables.
   double ambiguity_margin = 2.0;
   /// Particle estimator: particles of the main hypothesis (the mirror gets a quarter).
-  int particles = 500;
+  int particles = static_cast<int>(ParticleFilter::Config().particles);
   /// Share of ranges (and TDoA differences) that are outliers, mostly long (reflections).
   double range_outlier_share = 0.02;
   /// Mean excess of a long range outlier, m.

@@ -147,6 +147,8 @@ class ParticleTracker {
   /// A range's or bearing's sigma factor by the time since its sensor's previous one
   /// (range_ and bearing_decorrelation_time); records it. 1 for other kinds.
   double sigmaScale(const TrackedMeasurement& m);
+  /// A range or TDoA fixed the distance within max_age before `t`.
+  bool rangedAt(double t) const;
   bool coldStart(double now);
   void seedMirror();
   void maintainMirror();

@@ -8,6 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "radio_follow/control/safety_monitor.hpp"
+#include "radio_follow/control/velocity_law.hpp"
+
 namespace radio_follow {
 namespace evaluation {
 
@@ -42,8 +45,9 @@ constexpr double kSampleEstimateMaxAge = 1.0;
 
 /// What the experiments assert and the demo reports.
 struct FollowSettings {
-  double follow_distance = 1.6;  ///< m
-  double safe_distance = 1.3;    ///< m
+  /// The velocity controller's and the safety layer's defaults (their parameter tables).
+  double follow_distance = control::VelocityLawParams().follow_distance;  ///< m
+  double safe_distance = control::SafetyParams().safe_distance;          ///< m
   double gap_tolerance = 0.3;    ///< m
   double robot_max_speed = 1.5;  ///< m/s; the gap is judged while the person walks slower
   /// Gap statistics start once this time has passed and the gap has first come within
