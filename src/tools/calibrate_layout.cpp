@@ -2,7 +2,7 @@
 // calibrate_layout: fits every UWB module's range polynomial and every AoA board's yaw
 // offset from a bag with a reference (a ground-truth topic, or tape-measured points the
 // person stood at) and writes the layout with them. No ROS master. Usage:
-// doc/deployment.md ("Calibrating the sensors").
+// doc/deployment.md ("6. Calibrate the ranges and the boards' yaw").
 #include <cmath>
 #include <cstdio>
 #include <fstream>

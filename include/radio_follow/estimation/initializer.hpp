@@ -32,7 +32,7 @@ std::optional<Eigen::Vector3d> trilaterate(const std::vector<RangeObservation>& 
 /// Seed 002 eqs 2-8 as written: each squared-range equation minus the next one
 /// (consecutive differences), solved by a Householder QR of A (R x = Q^T b) instead of
 /// the normal equations, which square A's condition number. Same inputs, conditions and
-/// degeneracy test as trilaterate(); compared in doc/locator_accuracy.md.
+/// degeneracy test as trilaterate(); compared in doc/rssi_filters.md.
 std::optional<Eigen::Vector3d> trilaterateQr(const std::vector<RangeObservation>& ranges,
                                              const InitializerConfig& config);
 

@@ -27,7 +27,8 @@
 namespace radio_follow {
 namespace estimation {
 
-/// How the position is estimated (doc/nodes/locator.md, "Estimators").
+/// How the position is estimated (doc/nodes/locator.md, "Particle estimator" and
+/// "Behaviour of the solver estimator").
 enum class Estimator {
   /// Every measurement at its stamp into a particle filter in the odometry frame, with a
   /// mirror hypothesis (ParticleTracker). The default.

@@ -13,7 +13,7 @@ namespace radio_follow {
 namespace estimation {
 
 /// A range or distance-difference likelihood with heavy tails (seed 001's robust
-/// measurement model; real UWB: doc/nodes/locator.md, "Particle filter"):
+/// measurement model; real UWB: doc/nodes/locator.md, "Particle estimator"):
 ///   l(e) = (1 - eps) N(e; 0, sigma^2) + eps [0.9 (e > 0) exp(-e / L) / L + 0.1 / (2 W)],
 /// e = measured - predicted. A reflection only ever makes a range longer, so most of the
 /// outlier mass is on the long side; the small two-sided floor keeps every particle
