@@ -109,11 +109,12 @@ std::optional<Eigen::Vector2d> StandingGoalEstimator::solve(const Eigen::Vector2
   const std::size_t n = readings_.size();
   std::vector<double> bearing_res(n), distance_res(n);
   std::vector<Eigen::Vector2d> bearing_jac(n), distance_jac(n);
+  std::vector<double> rho(n);  ///< the goal's distance from each reading's sensor
   std::vector<bool> has_bearing(n), has_distance(n);
-  std::vector<double> abs_b, read_d, res_d;
+  std::vector<double> abs_b, uncensored_rho, uncensored_res;
   abs_b.reserve(n);
-  read_d.reserve(n);
-  res_d.reserve(n);
+  uncensored_rho.reserve(n);
+  uncensored_res.reserve(n);
 
   Eigen::Vector2d goal = guess;
   double bearing_scale = kMinBearingScale;
@@ -121,36 +122,36 @@ std::optional<Eigen::Vector2d> StandingGoalEstimator::solve(const Eigen::Vector2
   Eigen::Matrix2d info = Eigen::Matrix2d::Zero();
   for (int iteration = 0; iteration < kIterations; ++iteration) {
     abs_b.clear();
-    read_d.clear();
-    res_d.clear();
+    uncensored_rho.clear();
+    uncensored_res.clear();
     for (std::size_t i = 0; i < n; ++i) {
       const Reading& r = readings_[i];
       const Eigen::Vector2d delta = goal - r.sensor;
-      const double rho = delta.norm();
-      has_bearing[i] = rho > kNearSensor;
+      rho[i] = delta.norm();
+      has_bearing[i] = rho[i] > kNearSensor;
       if (has_bearing[i]) {
         bearing_res[i] = wrapAngleFast(std::atan2(delta.y(), delta.x()) - r.bearing);
-        bearing_jac[i] = Eigen::Vector2d(-delta.y(), delta.x()) / (rho * rho);
+        bearing_jac[i] = Eigen::Vector2d(-delta.y(), delta.x()) / (rho[i] * rho[i]);
         abs_b.push_back(std::abs(bearing_res[i]));
       }
-      has_distance[i] = std::isfinite(r.distance) && rho > 1e-9;
+      has_distance[i] = std::isfinite(r.distance) && rho[i] > 1e-9;
       if (has_distance[i]) {
         const bool censored = r.distance <= 0.0;
         const double reading =
-            censored ? censoredMean(rho, distance_scale.at(rho)) : r.distance;
-        distance_res[i] = rho - reading;
-        distance_jac[i] = delta / rho;
+            censored ? censoredMean(rho[i], distance_scale.at(rho[i])) : r.distance;
+        distance_res[i] = rho[i] - reading;
+        distance_jac[i] = delta / rho[i];
         if (!censored) {
-          read_d.push_back(rho);
-          res_d.push_back(distance_res[i]);
+          uncensored_rho.push_back(rho[i]);
+          uncensored_res.push_back(distance_res[i]);
         }
       }
     }
     if (!abs_b.empty()) {
       bearing_scale = std::max(kMinBearingScale, kMadToSigma * median(abs_b));
     }
-    if (!read_d.empty()) {
-      distance_scale.fit(read_d, res_d);
+    if (!uncensored_rho.empty()) {
+      distance_scale.fit(uncensored_rho, uncensored_res);
     }
     info.setZero();
     Eigen::Vector2d gradient = Eigen::Vector2d::Zero();
@@ -164,7 +165,7 @@ std::optional<Eigen::Vector2d> StandingGoalEstimator::solve(const Eigen::Vector2
       if (has_distance[i]) {
         // At the goal's distance, not the reading's: a reading's own error must not set
         // its weight (short readings would count more, and pull the goal short).
-        const double scale = distance_scale.at((goal - readings_[i].sensor).norm());
+        const double scale = distance_scale.at(rho[i]);
         const double w = huberWeight(distance_res[i], scale) / (scale * scale);
         info += w * distance_jac[i] * distance_jac[i].transpose();
         gradient += w * distance_res[i] * distance_jac[i];
