@@ -153,6 +153,10 @@ LawOutput PathFollowLaw::step(const TargetPolar& target, const std::optional<Pos
   // The person walks the path ahead: the feed-forward is their whole ground speed.
   const double speed_ahead = walking_speed.value_or(0.0);
   double speed = gapSpeed(gap, speed_ahead, dt, speed_pid_, law_);
+  arrived_ = updateArrived(arrived_, gap, speed_ahead);
+  if (arrived_ || insideStopMargin(target.module_gap, law_)) {
+    speed = 0.0;
+  }
   speed *= std::max(0.0, std::cos(alpha));
   const Caution why = caution(target, law_);
   if (why != Caution::kNone) {
@@ -163,7 +167,6 @@ LawOutput PathFollowLaw::step(const TargetPolar& target, const std::optional<Pos
   // person walked around it) needs turning in place first.
   out.command.angular =
       std::abs(alpha) > 0.5 * M_PI ? params_.turn_gain * alpha : speed * goal.curvature;
-  arrived_ = updateArrived(arrived_, gap, speed_ahead);
   if (arrived_) {
     out.state = FollowerState::kArrived;
     out.text = "At follow distance, waiting.";

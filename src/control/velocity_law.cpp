@@ -115,6 +115,10 @@ double governingGap(double gap, double module_gap, const VelocityLawParams& para
   return std::isnan(module_gap) ? gap : std::min(gap, module_gap - params.stop_margin);
 }
 
+bool insideStopMargin(double module_gap, const VelocityLawParams& params) {
+  return module_gap <= params.stop_margin;
+}
+
 double brakingSpeed(double room, double decel, double delay) {
   if (!(room > 0.0)) {
     return 0.0;
@@ -176,6 +180,9 @@ VelocityCommand VelocityLaw::update(const TargetPolar& target, double dt) {
     return cmd;
   }
   double speed = gapSpeed(gap, target.receding_speed, dt, linear_pid_, params_);
+  if (arrived_ || insideStopMargin(target.module_gap, params_)) {
+    speed = 0.0;
+  }
   // Do not drive forward while the target is off to the side: cos() fades speed to zero
   // at 90 deg so the robot turns first instead of circling.
   speed *= std::max(0.0, std::cos(heading_error));

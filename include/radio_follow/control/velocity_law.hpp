@@ -112,7 +112,9 @@ class VelocityLaw {
 
   bool driving_backwards() const { return backwards_; }
   /// True once the target came within the follow distance, until the gap opens again by
-  /// more than kArrivalHysteresis (so the status does not flip with every noisy range).
+  /// more than kArrivalHysteresis or the person walks away (updateArrived()). While
+  /// arrived the robot does not drive forward: the estimate's noise does not inch it
+  /// towards a person who stands.
   bool arrived() const { return arrived_; }
 
  private:
@@ -165,6 +167,13 @@ bool updateArrived(bool arrived, double gap, double target_speed);
 /// closer than follow_distance.
 double slowdownCap(double gap, double slowdown_distance, double closing_distance, double max_speed,
                    double target_speed = 0.0);
+
+/// Whether the nearest module's range is within stop_margin of safe_distance (module_gap
+/// <= stop_margin). The laws then do not drive forward, whatever the estimate says: an
+/// estimate that runs long, or the receding speed differentiated from it, must not carry
+/// the robot into the stop while the raw range says the person is that close. NaN and
+/// +inf (no range watched) are not inside.
+bool insideStopMargin(double module_gap, const VelocityLawParams& params);
 
 /// The gap the speed law regulates: min(gap, module_gap - stop_margin), where `gap` is
 /// the distance beyond the follow distance (from the robot's centre) and `module_gap` the

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "radio_follow/common/angles.hpp"
@@ -123,6 +124,29 @@ TEST(PathFollowLaw, SlowsForADegradedEstimateOnlyWhenItCannotSteerByIt) {
   mirror.mirror = true;
   EXPECT_NEAR(speed(mirror, &text), law_params.degraded_speed_factor * full, 1e-12);
   EXPECT_EQ(text, "Following the path slowly, the target may be at its mirror image.");
+}
+
+TEST(PathFollowLaw, NeverDrivesIntoTheStopMarginAndWaitsOnceArrived) {
+  const VelocityLawParams law_params;
+  const auto speed = [&](double range, double module_gap, double walking, bool after_arrival) {
+    PathFollowLaw law{PathFollowParams{}, law_params};
+    EXPECT_TRUE(law.addTarget(Eigen::Vector2d(range, 0.0)));
+    TargetPolar t;
+    t.module_gap = module_gap;
+    if (after_arrival) {
+      t.range = law_params.follow_distance - 0.05;
+      law.step(t, Pose2{}, 0.0, 0.05);
+      EXPECT_EQ(law.step(t, Pose2{}, 0.0, 0.05).state, FollowerState::kArrived);
+    }
+    t.range = range;
+    return law.step(t, Pose2{}, walking, 0.05).command.linear;
+  };
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_GT(speed(3.0, inf, 1.0, false), 0.0);
+  EXPECT_EQ(speed(3.0, 0.05, 1.0, false), 0.0);  // the raw range says: at the stop
+  const double d = law_params.follow_distance;
+  EXPECT_EQ(speed(d + 0.05, inf, 0.15, true), 0.0);  // noise, the person stands
+  EXPECT_GT(speed(d + kArrivalHysteresis + 0.05, inf, 0.15, true), 0.0);
 }
 
 }  // namespace

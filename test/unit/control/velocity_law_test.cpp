@@ -159,20 +159,61 @@ TEST(GoverningGap, TheNearestModuleGovernsWhenItIsCloserToTheStop) {
 
 TEST(VelocityLaw, HangsBackWhenACornerModuleNearsTheStop) {
   // The centre is at the follow distance with the person walking away, but a corner
-  // module is only 0.05 m beyond safe_distance: slower than the person (the cap falls
-  // inside the follow distance), so the gap at the corner grows. (A base that brakes at
-  // once: the braking cap is not what this test is about.)
+  // module is only 0.15 m beyond safe_distance: the regulated gap is the corner's, 0.05 m
+  // (module gap - stop_margin), not the centre's 0.3 m: the person's speed plus kp x 0.05.
+  // (A base that brakes at once: the braking cap is not what this test is about.)
   VelocityLawParams p;
   p.max_linear_decel = 1000.0;
-  TargetPolar t = target(p.follow_distance, 0.0);
-  t.receding_speed = 1.0;
+  TargetPolar t = target(p.follow_distance + 0.3, 0.0);
+  t.receding_speed = 0.5;
   VelocityLaw free_law{p};
   const double free_speed = free_law.update(t, 0.05).linear;
-  t.module_gap = 0.05;
+  t.module_gap = 0.15;
   VelocityLaw law{p};
   const double speed = law.update(t, 0.05).linear;
-  EXPECT_NEAR(free_speed, 1.0, 1e-9);
-  EXPECT_LT(speed, 0.75 + 1e-9);  // cap 1 * (1 - 0.05 / 0.2)
+  EXPECT_NEAR(free_speed, 0.5 + p.linear.kp * 0.3, 1e-9);
+  EXPECT_NEAR(speed, 0.5 + p.linear.kp * 0.05, 1e-9);
+}
+
+TEST(VelocityLaw, NeverDrivesIntoTheStopMarginWhateverTheEstimateSays) {
+  // The estimate ran long (2 m) and says the person walks away at 1 m/s, while the raw
+  // range puts them 0.05 m beyond safe_distance, inside stop_margin (0.1): before this
+  // rule the closing zone's feed-forward drove the robot on (a simulated one-module robot
+  // came to 1.21 m of a standing person this way).
+  const VelocityLawParams p;
+  TargetPolar t = target(2.0, 0.0);
+  t.receding_speed = 1.0;
+  for (const double module_gap : {0.05, p.stop_margin, -0.2}) {
+    t.module_gap = module_gap;
+    VelocityLaw law{p};
+    EXPECT_EQ(law.update(t, 0.05).linear, 0.0) << "module gap " << module_gap;
+  }
+  t.module_gap = p.stop_margin + 0.05;
+  VelocityLaw law{p};
+  EXPECT_GT(law.update(t, 0.05).linear, 0.0);
+  EXPECT_FALSE(insideStopMargin(std::numeric_limits<double>::infinity(), p));
+  EXPECT_FALSE(insideStopMargin(std::nan(""), p));
+}
+
+TEST(VelocityLaw, AnArrivedRobotDoesNotInchTowardsAPersonWhoStands) {
+  // At rest inside the follow distance, the estimate's noise moves it a few centimetres
+  // out and gives it a small receding speed: the robot stays until the gap opens by more
+  // than kArrivalHysteresis or the person walks away.
+  const VelocityLawParams p;
+  VelocityLaw law{p};
+  TargetPolar t = target(p.follow_distance - 0.05, 0.0);
+  law.update(t, 0.05);
+  ASSERT_TRUE(law.arrived());
+  t.range = p.follow_distance + 0.05;
+  t.receding_speed = 0.15;
+  EXPECT_EQ(law.update(t, 0.05).linear, 0.0);
+  t.range = p.follow_distance + kArrivalHysteresis + 0.05;
+  EXPECT_GT(law.update(t, 0.05).linear, 0.0);
+  VelocityLaw walking{p};
+  t.range = p.follow_distance - 0.05;
+  walking.update(t, 0.05);
+  t.receding_speed = kWalkingAwaySpeed + 0.1;  // the person walks off: follow at once
+  EXPECT_GT(walking.update(t, 0.05).linear, 0.0);
 }
 
 TEST(VelocityLaw, NotArrivedWhileThePersonWalksAway) {
