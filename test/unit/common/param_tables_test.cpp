@@ -6,8 +6,10 @@
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -229,6 +231,67 @@ TEST(ParamTables, HomingControllerIsInItsYamlAndDoc) {
 
 TEST(ParamTables, LocatorIsInItsYamlAndDoc) {
   expectCovered(estimation::LocatorConfig::table(), {"locator.yaml"}, "locator.md");
+}
+
+// --- The live-tuning .cfg files against the tables ----------------------------------------
+// dynamic_reconfigure's .cfg files are Python and give every field a default. The server
+// starts with the node's loaded values, so that default is never used, but it is a second
+// copy of the table's: each literal `.add("name", type, 0, "description", default` must
+// name a table entry (`linear_pid_kp` for `linear_pid/kp`) and carry the table's default.
+// (The .cfg files give no bounds: the tables' validate() judges a live change.)
+
+struct CfgField {
+  std::string name;
+  std::string value;
+};
+
+std::vector<CfgField> cfgFields(const std::string& file) {
+  const std::string text = readFile(std::string(RF_CONFIG_DIR) + "/../cfg/" + file);
+  EXPECT_FALSE(text.empty()) << file;
+  static const std::regex add(
+      R"re(\.add\("([a-z0-9_]+)",\s*(?:double_t|int_t|bool_t|str_t),\s*0,\s*"[^"]*",\s*("[^"]*"|[-+0-9.eE]+|True|False))re");
+  std::vector<CfgField> fields;
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), add); it != std::sregex_iterator();
+       ++it) {
+    std::string value = (*it)[2];
+    if (value == "True" || value == "False") {
+      value = value == "True" ? "true" : "false";
+    }
+    fields.push_back({(*it)[1], value});
+  }
+  return fields;
+}
+
+template <typename S>
+void expectCfgDefaultsAreTheTables(const ParamTable<S>& table, const std::string& file) {
+  const S defaults{};
+  const std::vector<CfgField> fields = cfgFields(file);
+  EXPECT_GE(fields.size(), 5u) << file << ": the pattern found too few fields";
+  for (const CfgField& field : fields) {
+    if (field.name == "refused") {
+      continue;  // not a parameter: the server's answer to the last change
+    }
+    bool found = false;
+    for (const auto& e : table.entries()) {
+      std::string flat = e.name;
+      std::replace(flat.begin(), flat.end(), '/', '_');
+      if (flat != field.name) {
+        continue;
+      }
+      found = true;
+      const ParamValue value = e.get(defaults);
+      EXPECT_TRUE(sameValue(value, field.value))
+          << "cfg/" << file << ": " << field.name << " defaults to " << field.value
+          << ", the table's default is " << paramValueText(value);
+    }
+    EXPECT_TRUE(found) << "cfg/" << file << ": " << field.name << " is no parameter of the table";
+  }
+}
+
+TEST(ParamTables, LiveTuningDefaultsAreTheTables) {
+  expectCfgDefaultsAreTheTables(control::CommandPipelineParams::table(), "ControllerTuning.cfg");
+  expectCfgDefaultsAreTheTables(control::VelocityLawParams::table(), "FollowLawTuning.cfg");
+  expectCfgDefaultsAreTheTables(estimation::LocatorConfig::table(), "LocatorTuning.cfg");
 }
 
 // Issue 33: a sweep over the robust losses under the particle estimator was identical to
