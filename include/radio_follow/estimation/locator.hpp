@@ -42,7 +42,7 @@ enum class Estimator {
 struct LocatorConfig {
   Estimator estimator = Estimator::kParticle;
   bool planar = true;                      ///< 2D mode: target on the plane z = height
-  double height = 1.0;                     ///< m
+  double height = ParticleFilter::Config().height;  ///< m
   double range_sigma = 0.07;               ///< m (real DWM1001 ranges, doc/nodes/locator.md)
   double tdoa_sigma = 0.1;                 ///< m, when a difference has no variance
   double azimuth_sigma = deg2rad(5.0);     ///< rad
@@ -54,12 +54,14 @@ struct LocatorConfig {
   double max_age = 0.5;  ///< s; older measurements are dropped
   AoaSelectorConfig aoa;
   MotionModel motion_model = MotionModel::kConstantVelocity;
-  double process_noise = 0.5;  ///< see KalmanConfig; the particle filter's acceleration PSD
+  /// See KalmanConfig; the particle filter's acceleration PSD. Not the filters' own
+  /// default (1.0, which their stand-alone tests use): the locator sets both from this.
+  double process_noise = 0.5;
   /// true: R = the solver's covariance; false: R = measurement_noise * I (thesis: 50).
   bool filter_uses_solver_covariance = true;
   double measurement_noise = 50.0;  ///< m^2
-  double gate_probability = 0.999;
-  int max_consecutive_rejections = 5;
+  double gate_probability = KalmanConfig().gate_probability;
+  int max_consecutive_rejections = KalmanConfig().max_consecutive_rejections;
   bool ceres_covariance = false;
   /// Largest position standard deviation (worst axis) still reported as OK, m.
   double max_position_sigma = 0.5;
@@ -92,15 +94,15 @@ struct LocatorConfig {
   /// mean length of a standing spell and of a walking one, s (stand_time 0: every
   /// particle walks, the plain constant-velocity model), and a standing person's sway,
   /// a random walk of this PSD per axis, m^2/s.
-  double stand_time = 0.0;
-  double walk_time = 10.0;
-  double stand_noise = 0.003;
+  double stand_time = ParticleFilter::Config().stand_time;
+  double walk_time = ParticleFilter::Config().walk_time;
+  double stand_noise = ParticleFilter::Config().stand_noise;
   /// Particle estimator: a module's ranges closer in time than this count as a fraction
   /// of a measurement (ParticleTrackerConfig::range_decorrelation_time), s; 0: all fully.
-  double range_decorrelation_time = 0.1;
+  double range_decorrelation_time = ParticleTrackerConfig().range_decorrelation_time;
   /// Particle estimator: the same for a board's bearings
   /// (ParticleTrackerConfig::bearing_decorrelation_time), s; 0: all fully.
-  double bearing_decorrelation_time = 0.1;
+  double bearing_decorrelation_time = ParticleTrackerConfig().bearing_decorrelation_time;
   /// Particle estimator: the slowly varying part of each sensor's error, which filtering
   /// cannot average away (correlated_error.hpp); the floor of the reported covariance.
   double range_bias_sigma = 0.05;            ///< m, TWR ranges
