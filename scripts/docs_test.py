@@ -116,7 +116,17 @@ def bash(script, env, timeout):
 
 def run_until_stopped(command, env):
     """Runs `command` for UNTIL_STOPPED s, then sends SIGINT (Ctrl-C). Failing before that
-    is a failure; being stopped is the expected end."""
+    is a failure; being stopped is the expected end. Bags it wrote to /tmp (a documented
+    `record.launch prefix:=/tmp/...`) are removed, so test runs leave nothing behind."""
+    bags_before = set(Path("/tmp").glob("*.bag*"))
+    try:
+        return _run_until_stopped(command, env)
+    finally:
+        for bag in set(Path("/tmp").glob("*.bag*")) - bags_before:
+            bag.unlink(missing_ok=True)
+
+
+def _run_until_stopped(command, env):
     prologue = "source scripts/env.sh >/dev/null\n"
     proc = subprocess.Popen(["bash", "-c", prologue + command], cwd=REPO, env=env,
                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
