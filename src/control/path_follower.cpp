@@ -129,7 +129,7 @@ LawOutput PathFollowLaw::step(const TargetPolar& target, const std::optional<Pos
                               std::optional<double> walking_speed, double dt) {
   if (!robot || path_.empty() || !target.range_valid) {
     // Without self-localisation no path can be stored, and before the first track point
-    // (evaluation::TrackGate) there is none yet: drive straight at the target.
+    // (TrackGate) there is none yet: drive straight at the target.
     TargetPolar straight = target;
     straight.receding_speed = 0.0;
     LawOutput out = fallback_.step(straight, dt);

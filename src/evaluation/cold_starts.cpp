@@ -80,7 +80,7 @@ ColdStartResult runColdStarts(const Layout& layout, sim::WorldConfig world,
         params.observer(trial, now, e, target);
       }
       ++result.updates;
-      result.ambiguous_updates += e.status == estimation::TargetStatus::kAmbiguous;
+      result.ambiguous_updates += e.status == TargetStatus::kAmbiguous;
       if (!hasPosition(e.status)) {
         mirror_run = 0.0;
         continue;

@@ -121,7 +121,7 @@ HeadingWalkResult runHeadingWalks(const Layout& layout, sim::WorldConfig world,
       }
       ++result.updates;
       const bool directed =
-          hasPosition(e.status) || e.status == estimation::TargetStatus::kHeadingOnly;
+          hasPosition(e.status) || e.status == TargetStatus::kHeadingOnly;
       if (!directed || !raw) {
         result.without_direction += !directed;
         continue;

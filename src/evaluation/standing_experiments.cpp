@@ -113,7 +113,7 @@ std::vector<WalkSample> runWalkAround(const Layout& layout, sim::WorldConfig wor
     s.distance = truth.head<2>().norm();
     s.usable = hasPosition(e.status);
     s.error = s.usable ? (e.position - truth).head<2>().norm() : std::nan("");
-    const bool directed = s.usable || e.status == estimation::TargetStatus::kHeadingOnly;
+    const bool directed = s.usable || e.status == TargetStatus::kHeadingOnly;
     s.heading_error = directed
                           ? std::abs(wrapAngle(std::atan2(e.position.y(), e.position.x()) - s.direction))
                           : std::nan("");

@@ -238,7 +238,7 @@ WalkingPcrbResult runWalkingPcrb(const Layout& layout, sim::WorldConfig world,
       if (now < params.warm_up) {
         continue;
       }
-      if (!estimation::hasPosition(estimate.status)) {
+      if (!hasPosition(estimate.status)) {
         ++result.without_position;
         continue;
       }

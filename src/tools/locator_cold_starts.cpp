@@ -76,7 +76,7 @@ int main(int argc, char** argv) {
           return;
         }
         std::printf("%.2f %s %.3f %.3f %.3f %d %.3f %.3f %.3f\n", now,
-                    rf::estimation::toString(e.status), e.position.x(), e.position.y(),
+                    rf::toString(e.status), e.position.x(), e.position.y(),
                     (e.position - target).head<2>().norm(), e.hypotheses, e.hypothesis_weight,
                     e.alternative.x(), e.alternative.y());
       };

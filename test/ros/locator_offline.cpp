@@ -89,7 +89,7 @@ TEST_F(LocatorOffline, ReplaysTheRealisticBagInTheOdometryFrameAtTheNodesRate) {
   const rf::BagData in_odom = rf::loadBag(bag_, "ground_truth/target");
   std::vector<double> odom_errors;
   for (const rf::ReplayRow& row : r.rows) {
-    if (!rf::estimation::hasPosition(row.estimate.status) || !row.estimate.in_odom) {
+    if (!rf::hasPosition(row.estimate.status) || !row.estimate.in_odom) {
       continue;
     }
     const auto nearest = std::min_element(
@@ -173,7 +173,7 @@ TEST_F(LocatorOffline, AHeadingOnlyLayoutIsJudgedOnItsHeading) {
   EXPECT_LT(r.heading.miss("HEADING_ONLY").median, 1.0);
   std::size_t heading_rows = 0;
   for (const rf::ReplayRow& row : r.rows) {
-    if (row.estimate.status == rf::estimation::TargetStatus::kHeadingOnly) {
+    if (row.estimate.status == rf::TargetStatus::kHeadingOnly) {
       ++heading_rows;
       EXPECT_TRUE(row.has_heading);
       EXPECT_FALSE(row.has_truth);

@@ -63,7 +63,7 @@ TEST(LocatorTdoaTags, OnlyTheTargetsTagIsFused) {
   EXPECT_EQ(inputs.otherTdoaTags().count("5722"), 0u);
   EXPECT_EQ(inputs.otherTdoaTags().at("0C1F"), 50u);
   EXPECT_EQ(locator.stats().tdoa_calibration_differences, 150u);  // three differences each
-  EXPECT_EQ(locator.update(5.0).status, estimation::TargetStatus::kLost);
+  EXPECT_EQ(locator.update(5.0).status, TargetStatus::kLost);
   for (const auto& pair : locator.tdoaCalibration().pairs()) {
     ASSERT_TRUE(pair.offset);
     EXPECT_NEAR(*pair.offset, 0.0, 1e-9);  // exact differences: no offset
@@ -72,8 +72,8 @@ TEST(LocatorTdoaTags, OnlyTheTargetsTagIsFused) {
   const Eigen::Vector3d person(-4.0, -2.0, config.height);
   EXPECT_EQ(inputs.add(blink(layout, "da12", person, 5.05)), 0u);
   const estimation::LocatorEstimate e = locator.update(5.05);
-  EXPECT_EQ(e.status, estimation::TargetStatus::kHeadingOnly);
-  EXPECT_EQ(e.sources, estimation::kSourceTdoa);
+  EXPECT_EQ(e.status, TargetStatus::kHeadingOnly);
+  EXPECT_EQ(e.sources, kSourceTdoa);
   EXPECT_EQ(inputs.otherTdoaTags().count("DA12"), 0u);
 }
 

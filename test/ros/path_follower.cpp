@@ -54,7 +54,7 @@ class Feeder {
     e.status = radio_follow::TargetEstimate::STATUS_OK;
     if (step_ <= 10) {
       // First a young track's wide cloud, DEGRADED and behind the robot: it must never
-      // become a point of the path (evaluation::TrackGate).
+      // become a point of the path (control::TrackGate).
       e.position.x = -2.0;
       e.position.y = 0.5;
       e.range = std::hypot(e.position.x, e.position.y);

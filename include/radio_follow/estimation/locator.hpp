@@ -21,7 +21,7 @@
 #include "radio_follow/estimation/particle_tracker.hpp"
 #include "radio_follow/estimation/position_solver.hpp"
 #include "radio_follow/estimation/rss_direction.hpp"
-#include "radio_follow/estimation/target_status.hpp"
+#include "radio_follow/common/target_status.hpp"
 #include "radio_follow/estimation/tdoa_calibration.hpp"
 
 namespace radio_follow {

@@ -14,7 +14,7 @@
 #include "radio_follow/estimation/mirror_axis.hpp"
 #include "radio_follow/estimation/particle_filter.hpp"
 #include "radio_follow/estimation/rss_direction.hpp"
-#include "radio_follow/estimation/target_status.hpp"
+#include "radio_follow/common/target_status.hpp"
 
 namespace radio_follow {
 namespace estimation {

@@ -14,7 +14,7 @@
 #include "radio_follow/control/target_motion.hpp"
 #include "radio_follow/control/velocity_law.hpp"
 #include "radio_follow/estimation/locator.hpp"
-#include "radio_follow/evaluation/follow_inputs.hpp"
+#include "radio_follow/control/follow_inputs.hpp"
 #include "radio_follow/evaluation/follow_metrics.hpp"
 #include "radio_follow/sim/obstacles.hpp"
 #include "radio_follow/sim/target_path.hpp"
@@ -163,7 +163,7 @@ class ClosedLoop {
   control::VelocityLaw velocity_law_;
   control::PathFollowLaw path_law_;
   control::TargetTrack track_;
-  TrackGate track_gate_;  ///< which estimates extend track_ and the path law's path
+  control::TrackGate track_gate_;  ///< which estimates extend track_ and the path law's path
   FollowMetrics metrics_;
   Timer locator_timer_;
   Timer controller_timer_;

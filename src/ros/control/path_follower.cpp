@@ -69,7 +69,7 @@ void PathFollowerNode::onEstimate(const TargetEstimate::ConstPtr& msg) {
   }
   const std::optional<Eigen::Vector2d> point = motion_.add(*msg);
   if (!point && motion_.lastError().empty()) {
-    return;  // a young track's wide position (evaluation::TrackGate): not a path point
+    return;  // a young track's wide position (control::TrackGate): not a path point
   }
   path_mode_ = point.has_value();
   if (!point) {

@@ -17,7 +17,7 @@ TargetMotionTracker::TargetMotionTracker(const tf2_ros::Buffer& buffer, std::str
     : buffer_(buffer), odom_frame_(std::move(odom_frame)), tf_timeout_(tf_timeout) {}
 
 std::optional<Eigen::Vector2d> TargetMotionTracker::add(const TargetEstimate& estimate) {
-  if (!gate_.accept(static_cast<estimation::TargetStatus>(estimate.status))) {
+  if (!gate_.accept(static_cast<TargetStatus>(estimate.status))) {
     last_error_.clear();
     return std::nullopt;  // no position, or a young track's wide one (TrackGate)
   }

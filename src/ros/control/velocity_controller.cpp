@@ -4,7 +4,7 @@
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/geometry.hpp"
 #include "radio_follow/common/param_error.hpp"
-#include "radio_follow/evaluation/follow_inputs.hpp"
+#include "radio_follow/control/follow_inputs.hpp"
 #include "radio_follow/ros/common/params.hpp"
 #include "radio_follow/ros/common/target_estimate.hpp"
 #include "radio_follow/ros/control/controller_reconfigure.hpp"
@@ -18,7 +18,7 @@ control::TargetPolar targetPolar(const TargetEstimate& estimate,
   covariance << c[0], c[1], c[3], c[4];
   const PolarSpread spread =
       polarSpread(Eigen::Vector2d(estimate.position.x, estimate.position.y), covariance);
-  return evaluation::targetPolar(static_cast<estimation::TargetStatus>(estimate.status),
+  return control::targetPolar(static_cast<TargetStatus>(estimate.status),
                                  estimate.range, estimate.bearing, spread, estimate.hypotheses,
                                  receding_speed, module_gap);
 }

@@ -79,7 +79,7 @@ visualization_msgs::MarkerArray locatorMarkers(const Layout& layout,
     }
   }
 
-  const double arrow_length = estimate.status == estimation::TargetStatus::kLost
+  const double arrow_length = estimate.status == TargetStatus::kLost
                                   ? config.default_range
                                   : std::max(0.5, estimate.position.head<2>().norm());
   for (std::size_t k = 0; k < estimate.bearings_fresh.size(); ++k) {
@@ -108,14 +108,14 @@ visualization_msgs::MarkerArray locatorMarkers(const Layout& layout,
     array.markers.push_back(m);
   }
 
-  if (estimate.status == estimation::TargetStatus::kLost) {
+  if (estimate.status == TargetStatus::kLost) {
     return array;
   }
   // Small, so that the covariance ring around it stays visible from above.
   auto target = marker(layout, "estimate", 0, visualization_msgs::Marker::SPHERE, stamp);
   target.pose.position = point(estimate.position);
   target.scale.x = target.scale.y = target.scale.z = kEstimateSize;
-  if (estimate.status == estimation::TargetStatus::kOk) {
+  if (estimate.status == TargetStatus::kOk) {
     color(target, 1.0f, 0.2f, 0.2f, 1.0f);
   } else {
     color(target, 1.0f, 0.8f, 0.1f, 1.0f);  // heading only or degraded

@@ -270,12 +270,12 @@ void LocatorNode::publish(const estimation::LocatorEstimate& estimate, const ros
   // The estimate is stamped with its newest measurement; LOST with the current time.
   // A stamp ros::Time cannot hold (NaN, negative, past 2^32 s) would throw: it gets now.
   const bool representable = estimate.stamp >= 0.0 && estimate.stamp < 4294967295.0;
-  const ros::Time stamp = estimate.status == estimation::TargetStatus::kLost || !representable
+  const ros::Time stamp = estimate.status == TargetStatus::kLost || !representable
                               ? now
                               : ros::Time(estimate.stamp);
   // Always published, LOST included: a controller must hear that the target is gone.
   target_pub_.publish(toMessage(estimate, layout_.fixed_frame, stamp));
-  if (target_odom_pub_ && estimate.in_odom && estimate.status != estimation::TargetStatus::kLost) {
+  if (target_odom_pub_ && estimate.in_odom && estimate.status != TargetStatus::kLost) {
     // The same estimate in the odometry frame, where the particle estimator tracks.
     estimation::LocatorEstimate in_odom = estimate;
     in_odom.position = estimate.tracking_position;
@@ -356,15 +356,15 @@ void LocatorNode::extendPath(const estimation::LocatorEstimate& estimate, const 
 void LocatorNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
   const estimation::LocatorStats& s = locator_->stats();
   const estimation::KalmanFilter& f = locator_->filter();
-  if (last_status_ == estimation::TargetStatus::kOk) {
+  if (last_status_ == TargetStatus::kOk) {
     status.summary(diagnostic_msgs::DiagnosticStatus::OK, "tracking");
-  } else if (last_status_ == estimation::TargetStatus::kLost) {
+  } else if (last_status_ == TargetStatus::kLost) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "target lost");
   } else {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN, toString(last_status_));
   }
   status.add("status", toString(last_status_));
-  if (estimation::hasPosition(last_status_)) {
+  if (hasPosition(last_status_)) {
     // Which way the estimate is uncertain: a DEGRADED range-only track is sure of the
     // distance and not of the direction (the controllers follow it at full speed while
     // the direction is within their max_follow_sigma).

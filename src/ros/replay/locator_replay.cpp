@@ -156,7 +156,7 @@ ReplayResult replay(const BagData& bag, const Layout& layout, const LocatorNode:
     row.estimate = locator.update(now);
     const bool has_position = hasPosition(row.estimate.status);
     with_position += has_position;
-    row.has_heading = has_position || row.estimate.status == estimation::TargetStatus::kHeadingOnly;
+    row.has_heading = has_position || row.estimate.status == TargetStatus::kHeadingOnly;
     if (row.has_heading) {
       row.heading = std::atan2(row.estimate.position.y(), row.estimate.position.x());
     }

@@ -16,7 +16,7 @@
 
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/common/plausibility.hpp"
-#include "radio_follow/estimation/target_status.hpp"
+#include "radio_follow/common/target_status.hpp"
 #include "radio_follow/ros/common/params.hpp"
 #include "radio_follow/ros/common/target_estimate.hpp"
 
@@ -230,7 +230,7 @@ void FollowEvaluatorNode::logVerdict(const evaluation::FollowReport& report) con
     reasons += (reasons.empty() ? "" : "; ") + failure;
   }
   const std::string last_status =
-      estimate_ ? toString(static_cast<estimation::TargetStatus>(estimate_->status)) : "none heard";
+      estimate_ ? toString(static_cast<TargetStatus>(estimate_->status)) : "none heard";
   ROS_ERROR(
       "follow_evaluator: CLOSED LOOP FAILED: %s. Last estimate status: %s. Check the "
       "locator's inputs (its diagnostics name silent topics) and doc/deployment.md.",
@@ -264,7 +264,7 @@ void FollowEvaluatorNode::onTick(const ros::TimerEvent& event) {
   s.truth_x = relative->point.x;
   s.truth_y = relative->point.y;
   if (estimate_) {
-    s.estimate_status = toString(static_cast<estimation::TargetStatus>(estimate_->status));
+    s.estimate_status = toString(static_cast<TargetStatus>(estimate_->status));
   }
   const bool usable = estimate_ && hasPosition(*estimate_);
   // An estimate from the future is not available, whatever it claims (TimePolicy).

@@ -10,7 +10,7 @@
 
 #include "radio_follow/TargetEstimate.h"
 #include "radio_follow/control/target_motion.hpp"
-#include "radio_follow/evaluation/follow_inputs.hpp"
+#include "radio_follow/control/follow_inputs.hpp"
 
 namespace radio_follow {
 
@@ -21,7 +21,7 @@ class TargetMotionTracker {
  public:
   TargetMotionTracker(const tf2_ros::Buffer& buffer, std::string odom_frame, double tf_timeout);
 
-  /// Transforms a track point (evaluation::TrackGate: OK, or DEGRADED in a confirmed
+  /// Transforms a track point (control::TrackGate: OK, or DEGRADED in a confirmed
   /// track) into the odometry frame at its stamp (or with the newest transform when that
   /// is within `tf_timeout` of the stamp; it never waits for TF) and records it. Returns
   /// the target's odometry-frame position, or nullopt (not a track point, lastError()
@@ -43,7 +43,7 @@ class TargetMotionTracker {
   std::string odom_frame_;
   ros::Duration tf_timeout_;
   control::TargetTrack track_;
-  evaluation::TrackGate gate_;
+  control::TrackGate gate_;
   std::string last_error_;
 };
 

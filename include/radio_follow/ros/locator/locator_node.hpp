@@ -110,7 +110,7 @@ class LocatorNode {
   ros::Time last_tick_;                     ///< zero until the first timer tick
   estimation::LocatorStats last_stats_;     ///< drop counters at the last tick
   ros::Timer timer_;
-  estimation::TargetStatus last_status_ = estimation::TargetStatus::kLost;
+  TargetStatus last_status_ = TargetStatus::kLost;
   PolarSpread last_spread_;  ///< of the newest estimate, for diagnostics
   std::size_t ignored_messages_ = 0;
   double solve_seconds_sum_ = 0.0;

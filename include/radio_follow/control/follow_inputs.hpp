@@ -9,34 +9,34 @@
 
 #include "radio_follow/common/geometry.hpp"
 #include "radio_follow/common/plausibility.hpp"
+#include "radio_follow/common/target_status.hpp"
 #include "radio_follow/control/safety_monitor.hpp"
 #include "radio_follow/control/velocity_law.hpp"
-#include "radio_follow/estimation/target_status.hpp"
 
 namespace radio_follow {
-namespace evaluation {
+namespace control {
 
 /// AMBIGUOUS is its own quality; a position or a direction with a range a module could
 /// measure (plausibility.hpp) and a bearing within a half turn is usable; anything else
 /// is lost.
-inline control::EstimateQuality estimateQuality(estimation::TargetStatus status, double range,
+inline EstimateQuality estimateQuality(TargetStatus status, double range,
                                                 double bearing) {
-  if (status == estimation::TargetStatus::kAmbiguous) {
-    return control::EstimateQuality::kAmbiguous;
+  if (status == TargetStatus::kAmbiguous) {
+    return EstimateQuality::kAmbiguous;
   }
-  const bool known = hasPosition(status) || status == estimation::TargetStatus::kHeadingOnly;
+  const bool known = hasPosition(status) || status == TargetStatus::kHeadingOnly;
   return known && plausibleAngleRad(bearing) && plausibleRange(range)
-             ? control::EstimateQuality::kUsable
-             : control::EstimateQuality::kLost;
+             ? EstimateQuality::kUsable
+             : EstimateQuality::kLost;
 }
 
 /// The velocity law's input: HEADING_ONLY has no range, DEGRADED is flagged with the
 /// way it is uncertain (`spread` of the position, a second hypothesis: `hypotheses` 2),
 /// the target's receding speed when known, the nearest module's gap to the stop.
-inline control::TargetPolar targetPolar(estimation::TargetStatus status, double range,
+inline TargetPolar targetPolar(TargetStatus status, double range,
                                         double bearing, const PolarSpread& spread, int hypotheses,
                                         std::optional<double> receding_speed, double module_gap) {
-  control::TargetPolar t;
+  TargetPolar t;
   t.range_sigma = spread.range_sigma;
   t.bearing_sigma = spread.bearing_sigma;
   t.mirror = hypotheses >= 2;
@@ -45,7 +45,7 @@ inline control::TargetPolar targetPolar(estimation::TargetStatus status, double 
   t.range = range;
   t.bearing = bearing;
   t.range_valid = hasPosition(status);
-  t.degraded = status == estimation::TargetStatus::kDegraded;
+  t.degraded = status == TargetStatus::kDegraded;
   return t;
 }
 
@@ -60,9 +60,9 @@ inline control::TargetPolar targetPolar(estimation::TargetStatus status, double 
 class TrackGate {
  public:
   /// Whether this estimate, the newest, is a track point.
-  bool accept(estimation::TargetStatus status) {
-    confirmed_ = status == estimation::TargetStatus::kOk ||
-                 (confirmed_ && status == estimation::TargetStatus::kDegraded);
+  bool accept(TargetStatus status) {
+    confirmed_ = status == TargetStatus::kOk ||
+                 (confirmed_ && status == TargetStatus::kDegraded);
     return confirmed_;
   }
 
@@ -70,5 +70,5 @@ class TrackGate {
   bool confirmed_ = false;
 };
 
-}  // namespace evaluation
+}  // namespace control
 }  // namespace radio_follow

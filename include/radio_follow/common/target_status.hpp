@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
-// The locator's output vocabulary, header-only: a controller's wrapper reads an estimate's
-// status without linking the estimator (and Ceres).
+// The locator's output vocabulary, shared by the estimator and the follow laws (the
+// estimate-to-law translation, control/follow_inputs.hpp); header-only, so that a
+// controller's wrapper reads an estimate's status without linking the estimator (Ceres).
 #include <cstdint>
 
 namespace radio_follow {
-namespace estimation {
 
 /// Same values as TargetEstimate.STATUS_*. Zero is no status: a zero-initialised message
 /// must never read as a usable estimate.
@@ -46,5 +46,4 @@ constexpr std::uint8_t kSourceTwr = 1;
 constexpr std::uint8_t kSourceTdoa = 2;
 constexpr std::uint8_t kSourceAoa = 4;
 
-}  // namespace estimation
 }  // namespace radio_follow

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // What the follow laws take from an estimate (targetPolar, polarSpread) and which
 // estimates the followers' track takes (TrackGate).
-#include "radio_follow/evaluation/follow_inputs.hpp"
+#include "radio_follow/control/follow_inputs.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,10 +9,8 @@
 #include <limits>
 
 namespace radio_follow {
-namespace evaluation {
+namespace control {
 namespace {
-
-using estimation::TargetStatus;
 
 TEST(TrackGate, ADegradedEstimateCountsOnlyInATrackThatWasOk) {
   TrackGate gate;
@@ -70,5 +68,5 @@ TEST(TargetPolar, AnUnknownSpreadIsInfinite) {
 }
 
 }  // namespace
-}  // namespace evaluation
+}  // namespace control
 }  // namespace radio_follow
