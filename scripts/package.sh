@@ -99,10 +99,10 @@ bloom_args=(--os-name debian --os-version "$os_version" --ros-distro "$distro")
   >"$work/bloom.log" 2>&1 || { cat "$work/bloom.log" >&2; fail "bloom (templates)"; }
 # Changes to bloom's rules template: catkin installs its setup.* files into the prefix
 # (bloom leaves them to a ros-<distro>-catkin package, which Debian does not have);
-# benchmarks stay off (they are never installed) and -Werror too (the defaults, said
-# explicitly); dh builds in parallel (bloom's debhelper compat 9 does not by default).
+# benchmarks and the lab's tools stay off (they are never installed) and -Werror too;
+# dh builds in parallel (bloom's debhelper compat 9 does not by default).
 # Tests are off through DEB_BUILD_OPTIONS=nocheck below.
-sed -i -e 's/-DCATKIN_BUILD_BINARY_PACKAGE="1"/-DCATKIN_BUILD_BINARY_PACKAGE="0" -DRADIO_FOLLOW_BUILD_BENCHMARKS=OFF -DRADIO_FOLLOW_WERROR=OFF/' \
+sed -i -e 's/-DCATKIN_BUILD_BINARY_PACKAGE="1"/-DCATKIN_BUILD_BINARY_PACKAGE="0" -DRADIO_FOLLOW_BUILD_BENCHMARKS=OFF -DRADIO_FOLLOW_BUILD_LAB=OFF -DRADIO_FOLLOW_WERROR=OFF/' \
   -e 's/^\(\tdh \$@@ -v\) /\1 --parallel /' "$src/debian/rules.em"
 grep -q 'CATKIN_BUILD_BINARY_PACKAGE="0"' "$src/debian/rules.em" &&
   grep -q 'dh \$@@ -v --parallel' "$src/debian/rules.em" ||
@@ -129,8 +129,13 @@ prefix="$root/opt/ros/$distro"
 [ -f "$prefix/setup.bash" ] || fail "no setup.bash in the installed prefix"
 for f in lib/radio_follow/simulator lib/radio_follow/locator lib/radio_follow/plot_report.py \
   lib/radio_follow/udev_rule.sh share/radio_follow/launch/demo.launch \
-  share/radio_follow/package.xml; do
+  share/radio_follow/package.xml lib/radio_follow/calibrate_layout \
+  lib/radio_follow/locator_offline lib/radio_follow/placement_advisor; do
   [ -e "$prefix/$f" ] || fail "the .deb lacks $f"
+done
+# The runtime only: no lab tool (CMakeLists.txt, RF_OPERATOR_TOOLS).
+for f in experiments closed_loop locator_pcrb standing_experiments homing_experiment; do
+  [ ! -e "$prefix/lib/radio_follow/$f" ] || fail "the .deb installs the lab tool $f"
 done
 (
   cd "$work"

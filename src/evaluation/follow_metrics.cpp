@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "radio_follow/common/angles.hpp"
-#include "radio_follow/evaluation/error_statistics.hpp"
+#include "radio_follow/common/error_statistics.hpp"
 
 namespace radio_follow {
 namespace evaluation {

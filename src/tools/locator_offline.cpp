@@ -190,15 +190,15 @@ void printSensorMatch(const rf::BagData& bag, const rf::Layout& layout) {
 
 /// The direction against the truth, by status: what a layout without ranges is judged
 /// on (HEADING_ONLY has no position to compare), and what the robot steers by.
-void printHeading(const rf::evaluation::HeadingStatistics& h) {
+void printHeading(const rf::HeadingStatistics& h) {
   if (h.empty()) {
     return;
   }
   std::cout << "heading error (deg) and miss at the target (m, its distance from the "
                "robot's heading ray), median / p95:\n";
   const auto line = [&](const std::string& name, const std::string& status) {
-    const rf::evaluation::ErrorSummary e = h.headingError(status);
-    const rf::evaluation::ErrorSummary m = h.miss(status);
+    const rf::ErrorSummary e = h.headingError(status);
+    const rf::ErrorSummary m = h.miss(status);
     std::cout << "  " << name << ": " << e.median << " / " << e.p95 << " deg, " << m.median
               << " / " << m.p95 << " m (" << e.count << ")\n";
   };
@@ -218,7 +218,7 @@ void printSummary(const rf::ReplayResult& r, const rf::BagData& bag, const std::
               << " messages placed with the bag's TF, " << placed.dropped() << " dropped (TF gap), "
               << placed.robotFrame() << " in the robot frame (no odometry)\n";
   }
-  const rf::evaluation::ErrorSummary all = r.statistics.overall();
+  const rf::ErrorSummary all = r.statistics.overall();
   std::cout << "updates " << r.rows.size() << ", with a position " << r.availability * 100.0
             << " %, compared with the ground truth " << all.count << "\n";
   if (bag.truth.empty()) {
@@ -237,14 +237,14 @@ void printSummary(const rf::ReplayResult& r, const rf::BagData& bag, const std::
   std::cout << "error (m): mean " << all.mean << ", median " << all.median << ", p95 " << all.p95
             << ", max " << all.max << "\n"
             << "by direction (sector centre deg: median / p95 m, count):\n";
-  for (std::size_t i = 0; i < rf::evaluation::ErrorStatistics::kSectors; ++i) {
-    const rf::evaluation::ErrorSummary s = r.statistics.sector(i);
+  for (std::size_t i = 0; i < rf::ErrorStatistics::kSectors; ++i) {
+    const rf::ErrorSummary s = r.statistics.sector(i);
     std::cout << "  " << i * 45 << ": " << s.median << " / " << s.p95 << " (" << s.count << ")\n";
   }
   std::cout << "by distance (median / p95 m, count):\n";
-  for (std::size_t i = 0; i <= rf::evaluation::ErrorStatistics::kBandEdges.size(); ++i) {
-    const rf::evaluation::ErrorSummary s = r.statistics.band(i);
-    std::cout << "  " << rf::evaluation::ErrorStatistics::bandName(i) << ": " << s.median << " / "
+  for (std::size_t i = 0; i <= rf::ErrorStatistics::kBandEdges.size(); ++i) {
+    const rf::ErrorSummary s = r.statistics.band(i);
+    std::cout << "  " << rf::ErrorStatistics::bandName(i) << ": " << s.median << " / "
               << s.p95 << " (" << s.count << ")\n";
   }
 }
@@ -266,7 +266,7 @@ int runSweep(const Options& o, const rf::BagData& bag, const rf::Layout& layout,
   }
   struct Run {
     std::string setting;
-    rf::evaluation::ErrorSummary error;
+    rf::ErrorSummary error;
     double availability;
   };
   std::vector<Run> runs;

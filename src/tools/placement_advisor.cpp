@@ -37,12 +37,12 @@
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/config/layout_writer.hpp"
 #include "radio_follow/estimation/placement_search.hpp"
-#include "radio_follow/evaluation/error_statistics.hpp"
+#include "radio_follow/common/error_statistics.hpp"
 
 namespace rf = radio_follow;
 namespace fs = std::filesystem;
-using rf::evaluation::jsonNumber;
-using rf::evaluation::jsonString;
+using rf::jsonNumber;
+using rf::jsonString;
 
 namespace {
 

@@ -23,7 +23,7 @@
 #include "radio_follow/common/tool_options.hpp"
 #include "radio_follow/control/rssi_filter.hpp"
 #include "radio_follow/control/rssi_model.hpp"
-#include "radio_follow/evaluation/error_statistics.hpp"
+#include "radio_follow/common/error_statistics.hpp"
 #include "radio_follow/sim/rssi_channel.hpp"
 
 namespace {
@@ -74,7 +74,7 @@ std::string cell(double v, const char* format = "%.2f") {
 }
 
 double stddev(const std::vector<double>& v) {
-  const double m = rf::evaluation::mean(v);
+  const double m = rf::mean(v);
   double s = 0.0;
   for (double x : v) {
     s += (x - m) * (x - m);
@@ -135,8 +135,8 @@ void staticTable(const rf::control::RssiFilterParams& base, const rf::control::R
         }
       }
       std::printf("| %.1f | %s | %.1f | %.2f | %.2f | %.2f | %.2f | %.2f | %s |\n", d, name(type),
-                  rf::evaluation::mean(rssi), stddev(rssi), rf::evaluation::quantile(error, 0.5),
-                  rf::evaluation::mean(error), rf::evaluation::quantile(error, 0.95),
+                  rf::mean(rssi), stddev(rssi), rf::quantile(error, 0.5),
+                  rf::mean(error), rf::quantile(error, 0.95),
                   *std::max_element(error.begin(), error.end()),
                   cell(paperAverage(d, type)).c_str());
     }
@@ -192,9 +192,9 @@ void approachTable(const rf::control::RssiFilterParams& base, const rf::control:
       }
     }
     std::printf("| %s | %d | %+.2f | %.2f | %.2f | %.2f | %.2f |\n", name(type), riseReadings(p),
-                rf::evaluation::mean(signed_error), rf::evaluation::quantile(error, 0.5),
-                rf::evaluation::mean(error), rf::evaluation::quantile(error, 0.95),
-                rf::evaluation::mean(near_error));
+                rf::mean(signed_error), rf::quantile(error, 0.5),
+                rf::mean(error), rf::quantile(error, 0.95),
+                rf::mean(near_error));
   }
 }
 

@@ -27,7 +27,7 @@
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/common/tool_options.hpp"
 #include "radio_follow/evaluation/closed_loop.hpp"
-#include "radio_follow/evaluation/error_statistics.hpp"
+#include "radio_follow/common/error_statistics.hpp"
 #include "radio_follow/evaluation/heading_walks.hpp"
 
 namespace {
@@ -125,8 +125,8 @@ int main(int argc, char** argv) {
       const rf::evaluation::HeadingWalkResult r =
           rf::evaluation::runHeadingWalks(c.layout, c.world, c.locator, params);
       const auto row = [](const char* name, const std::vector<double>& deg) {
-        std::printf("| %s | %s | %s |\n", name, degrees(rf::evaluation::quantile(deg, 0.5)).c_str(),
-                    degrees(rf::evaluation::quantile(deg, 0.95)).c_str());
+        std::printf("| %s | %s | %s |\n", name, degrees(rf::quantile(deg, 0.5)).c_str(),
+                    degrees(rf::quantile(deg, 0.95)).c_str());
       };
       std::printf(
           "Single-board heading (issue 35), layout %s's board %s alone, %s sensors with real "
@@ -145,9 +145,9 @@ int main(int argc, char** argv) {
           "\nlocator / raw: median %.2f x, p95 %.2f x (issue 35's goal: at most 0.8 x and "
           "1.0 x); walks ending behind (more than 90 deg off): %d of %d; updates without a "
           "direction: %zu of %zu\n",
-          rf::evaluation::quantile(r.locator_deg, 0.5) / rf::evaluation::quantile(r.raw_deg, 0.5),
-          rf::evaluation::quantile(r.locator_deg, 0.95) /
-              rf::evaluation::quantile(r.raw_deg, 0.95),
+          rf::quantile(r.locator_deg, 0.5) / rf::quantile(r.raw_deg, 0.5),
+          rf::quantile(r.locator_deg, 0.95) /
+              rf::quantile(r.raw_deg, 0.95),
           r.ended_behind, r.walks, r.without_direction, r.updates);
       return 0;
     }
@@ -273,8 +273,8 @@ int main(int argc, char** argv) {
         }
       }
       std::printf(" %s median %s m, p95 %s m, usable %.3f;", configs[i].name.c_str(),
-                  metres(rf::evaluation::quantile(errors, 0.5)).c_str(),
-                  metres(rf::evaluation::quantile(errors, 0.95)).c_str(),
+                  metres(rf::quantile(errors, 0.5)).c_str(),
+                  metres(rf::quantile(errors, 0.95)).c_str(),
                   runs[i].empty()
                       ? 0.0
                       : static_cast<double>(errors.size()) / static_cast<double>(runs[i].size()));
@@ -286,8 +286,8 @@ int main(int argc, char** argv) {
           }
         }
         std::printf(" heading median %s deg, p95 %s deg;",
-                    degrees(rf::evaluation::quantile(heading, 0.5)).c_str(),
-                    degrees(rf::evaluation::quantile(heading, 0.95)).c_str());
+                    degrees(rf::quantile(heading, 0.5)).c_str(),
+                    degrees(rf::quantile(heading, 0.95)).c_str());
       }
     }
     std::printf("\n");

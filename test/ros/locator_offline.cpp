@@ -77,7 +77,7 @@ TEST_F(LocatorOffline, ReplaysTheRealisticBagInTheOdometryFrameAtTheNodesRate) {
   EXPECT_GT(r.placement.placed(), bag.entries.size() * 99 / 100);
   EXPECT_EQ(r.placement.dropped(), 0u);
   EXPECT_LT(r.placement.robotFrame(), 10u);
-  const rf::evaluation::ErrorSummary e = r.statistics.overall();
+  const rf::ErrorSummary e = r.statistics.overall();
   EXPECT_GT(e.count, r.rows.size() * 9 / 10);
   EXPECT_LT(e.median, kMedianGoal);
   EXPECT_LT(e.p95, kP95Goal);
@@ -114,7 +114,7 @@ TEST_F(LocatorOffline, TracksInTheRobotFrameWithoutOdometryLikeTheNode) {
   robot_frame.odom_frame = "";
   const rf::ReplayResult r = rf::replay(bag, layout, robot_frame, 20.0);
   EXPECT_EQ(r.placement.placed() + r.placement.robotFrame(), 0u) << "no lookup at all";
-  const rf::evaluation::ErrorSummary e = r.statistics.overall();
+  const rf::ErrorSummary e = r.statistics.overall();
   EXPECT_LT(e.median, kMedianGoal);
   EXPECT_LT(e.p95, kP95Goal);
   std::printf("robot frame: median %.3f m, p95 %.3f m over %zu estimates\n", e.median, e.p95,
@@ -165,7 +165,7 @@ TEST_F(LocatorOffline, AHeadingOnlyLayoutIsJudgedOnItsHeading) {
   const rf::BagData bag = rf::loadBag(bag_, "ground_truth/target_relative");
   const rf::ReplayResult r = rf::replay(bag, rf::loadLayoutFile(layout), shippedParams(), 20.0);
   EXPECT_EQ(r.statistics.overall().count, 0u) << "no position, no position error";
-  const rf::evaluation::ErrorSummary heading = r.heading.headingError("HEADING_ONLY");
+  const rf::ErrorSummary heading = r.heading.headingError("HEADING_ONLY");
   ASSERT_GT(heading.count, 300u);
   // The person walks ahead of the robot in this bag, in front of the board: the heading
   // is within a few degrees (a wrong side would be about 180 deg off).

@@ -163,7 +163,7 @@ ReplayResult replay(const BagData& bag, const Layout& layout, const LocatorNode:
     if (row.has_heading && truthAt(bag.truth, row.estimate.stamp, row.truth)) {
       row.has_heading_truth = true;
       row.heading_error = wrapAngle(std::atan2(row.truth.y(), row.truth.x()) - row.heading);
-      row.miss = evaluation::missAtTarget(row.truth, row.heading);
+      row.miss = missAtTarget(row.truth, row.heading);
       result.heading.add(toString(row.estimate.status), std::abs(row.heading_error) * 180.0 / kPi,
                          row.miss);
       if (has_position) {

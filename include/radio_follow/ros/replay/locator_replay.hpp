@@ -14,7 +14,7 @@
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/estimation/locator.hpp"
 #include "radio_follow/estimation/odometry_placement.hpp"
-#include "radio_follow/evaluation/error_statistics.hpp"
+#include "radio_follow/common/error_statistics.hpp"
 #include "radio_follow/ros/locator/locator_node.hpp"
 
 namespace radio_follow {
@@ -62,7 +62,7 @@ struct ReplayRow {
   bool has_heading = false;
   double heading = 0.0;  ///< rad, robot frame, of the estimate's position
   /// With a truth at the stamp: truth's bearing minus `heading`, wrapped, rad; and the
-  /// miss at the target (evaluation::missAtTarget), m.
+  /// miss at the target (missAtTarget), m.
   bool has_heading_truth = false;
   double heading_error = 0.0;
   double miss = 0.0;
@@ -70,10 +70,10 @@ struct ReplayRow {
 
 struct ReplayResult {
   std::vector<ReplayRow> rows;
-  evaluation::ErrorStatistics
+  ErrorStatistics
       statistics;             ///< over the rows with a position (OK/DEGRADED) and a truth
   /// Over the rows with a direction (OK/DEGRADED/HEADING_ONLY) and a truth, by status.
-  evaluation::HeadingStatistics heading;
+  HeadingStatistics heading;
   std::size_t refused = 0;    ///< measurements the locator refused (unknown sensors)
   double availability = 0.0;  ///< share of updates with a position
   /// Where the messages went: placed in the odometry frame, dropped in a TF gap, or in the
@@ -91,8 +91,8 @@ struct ReplayResult {
 ReplayResult replay(const BagData& bag, const Layout& layout, const LocatorNode::Params& params,
                     double rate);
 
-/// summary.json: the position statistics (evaluation::ErrorStatistics::toJson: overall,
-/// by_sector, by_distance) plus "heading" (evaluation::HeadingStatistics::toJson).
+/// summary.json: the position statistics (ErrorStatistics::toJson: overall,
+/// by_sector, by_distance) plus "heading" (HeadingStatistics::toJson).
 std::string summaryJson(const ReplayResult& result);
 
 /// The rows as CSV with a header (t, status, x, y, z, sigma_x, sigma_y, truth_x, truth_y,

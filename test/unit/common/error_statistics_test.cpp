@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "radio_follow/evaluation/error_statistics.hpp"
+#include "radio_follow/common/error_statistics.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,6 @@
 #include "radio_follow/common/angles.hpp"
 
 namespace radio_follow {
-namespace evaluation {
 namespace {
 
 TEST(ErrorSummary, QuantilesOfKnownValues) {
@@ -113,5 +112,4 @@ TEST(HeadingStatistics, SummarisesByStatusAndOverall) {
 }
 
 }  // namespace
-}  // namespace evaluation
 }  // namespace radio_follow

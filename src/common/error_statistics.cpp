@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "radio_follow/evaluation/error_statistics.hpp"
+#include "radio_follow/common/error_statistics.hpp"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -11,7 +11,6 @@
 #include "radio_follow/common/angles.hpp"
 
 namespace radio_follow {
-namespace evaluation {
 
 double quantile(std::vector<double> values, double q) {
   if (values.empty()) {
@@ -209,5 +208,4 @@ std::string HeadingStatistics::toJson() const {
   return out + "}";
 }
 
-}  // namespace evaluation
 }  // namespace radio_follow

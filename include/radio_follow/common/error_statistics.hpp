@@ -9,8 +9,10 @@
 #include <string>
 #include <vector>
 
+// Error statistics of estimates against a truth: quantiles, NEES, sector and distance
+// bands, headings. Used by the offline evaluation (locator_offline), the placement advisor
+// and the lab's experiments.
 namespace radio_follow {
-namespace evaluation {
 
 /// Nearest-rank quantile (q in [0, 1]); NaN for no values.
 double quantile(std::vector<double> values, double q);
@@ -107,5 +109,4 @@ class HeadingStatistics {
   std::map<std::string, Samples> by_status_;
 };
 
-}  // namespace evaluation
 }  // namespace radio_follow
