@@ -68,14 +68,8 @@ step "rosdep update (offline database rosdep/debian.yaml)"
 rosdep update --rosdistro "$distro" >"$work/rosdep_update.log" 2>&1 ||
   { cat "$work/rosdep_update.log" >&2; fail "rosdep update"; }
 
-# rviz is the demo's optional viewer (rviz:=true); setup.sh does not install it, a .deb
-# install pulls it in. Everything else must be installed.
-skip=()
-dpkg-query -W -f='${Status}' rviz 2>/dev/null | grep -q 'install ok installed' ||
-  { skip=(--skip-keys rviz); step "rviz not installed here: rosdep check skips that key"; }
 step "rosdep check --from-paths $repo --ignore-src"
-rosdep check --rosdistro "$distro" --from-paths "$repo" --ignore-src "${skip[@]}" ||
-  fail "rosdep check"
+rosdep check --rosdistro "$distro" --from-paths "$repo" --ignore-src || fail "rosdep check"
 step "rosdep install --simulate (what a fresh machine would install)"
 rosdep install --rosdistro "$distro" --simulate --reinstall --default-yes \
   --from-paths "$repo" --ignore-src >"$work/rosdep_install.log" 2>&1 ||
