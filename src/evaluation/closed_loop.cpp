@@ -334,12 +334,12 @@ std::optional<Pose2> ClosedLoop::poseAt(double t) const {
 void ClosedLoop::runLocator(double now) {
   estimation::LocatorEstimate estimate = locator_.update(now);
   // Stamped with its newest measurement; LOST with the current time (locator_node).
-  estimate_stamp_ =
-      estimate.status == TargetStatus::kLost ? now : std::max(0.0, estimate.stamp);
+  estimate_stamp_ = estimate.status == TargetStatus::kLost ? now : std::max(0.0, estimate.stamp);
   const double range = estimate.position.head<2>().norm();
   const double bearing = std::atan2(estimate.position.y(), estimate.position.x());
   // The controller's estimate callback: the safety layer first, then the odometry frame.
-  pipeline_.onEstimate(estimate_stamp_, now, control::estimateQuality(estimate.status, range, bearing));
+  pipeline_.onEstimate(estimate_stamp_, now,
+                       control::estimateQuality(estimate.status, range, bearing));
   if (track_gate_.accept(estimate.status)) {  // as TargetMotionTracker in the controller nodes
     if (const std::optional<Pose2> robot = poseAt(estimate_stamp_)) {
       const double c = std::cos(robot->yaw);
@@ -373,12 +373,13 @@ void ClosedLoop::runController(double now) {
     if (config_.controller == FollowController::kVelocity) {
       const std::optional<double> receding =
           config_.feed_forward_from_odometry ? track_.recedingSpeed(now) : std::nullopt;
-      out = velocity_law_.step(
-          control::targetPolar(e.status, range, bearing, spread, e.hypotheses, receding, module_gap), dt);
+      out = velocity_law_.step(control::targetPolar(e.status, range, bearing, spread, e.hypotheses,
+                                                    receding, module_gap),
+                               dt);
     } else {
-      out = path_law_.step(
-          control::targetPolar(e.status, range, bearing, spread, e.hypotheses, std::nullopt, module_gap),
-          poses_.back().pose, track_.speed(now), dt);
+      out = path_law_.step(control::targetPolar(e.status, range, bearing, spread, e.hypotheses,
+                                                std::nullopt, module_gap),
+                           poses_.back().pose, track_.speed(now), dt);
     }
     result = pipeline_.finish(out, now, dt);
   }

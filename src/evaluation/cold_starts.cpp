@@ -6,9 +6,9 @@
 #include <random>
 
 #include "radio_follow/common/angles.hpp"
+#include "radio_follow/common/error_statistics.hpp"
 #include "radio_follow/estimation/mirror_axis.hpp"
 #include "radio_follow/evaluation/calibration_run.hpp"
-#include "radio_follow/common/error_statistics.hpp"
 #include "radio_follow/evaluation/standing_robot.hpp"
 #include "radio_follow/sim/sensor_profile.hpp"
 #include "radio_follow/sim/virtual_sensors.hpp"

@@ -120,8 +120,7 @@ HeadingWalkResult runHeadingWalks(const Layout& layout, sim::WorldConfig world,
         continue;
       }
       ++result.updates;
-      const bool directed =
-          hasPosition(e.status) || e.status == TargetStatus::kHeadingOnly;
+      const bool directed = hasPosition(e.status) || e.status == TargetStatus::kHeadingOnly;
       if (!directed || !raw) {
         result.without_direction += !directed;
         continue;

@@ -6,9 +6,9 @@
 #include <limits>
 
 #include "radio_follow/common/angles.hpp"
+#include "radio_follow/common/error_statistics.hpp"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/evaluation/calibration_run.hpp"
-#include "radio_follow/common/error_statistics.hpp"
 #include "radio_follow/evaluation/standing_robot.hpp"
 
 namespace radio_follow {

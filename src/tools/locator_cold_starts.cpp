@@ -75,10 +75,9 @@ int main(int argc, char** argv) {
         if (trial != traced) {
           return;
         }
-        std::printf("%.2f %s %.3f %.3f %.3f %d %.3f %.3f %.3f\n", now,
-                    rf::toString(e.status), e.position.x(), e.position.y(),
-                    (e.position - target).head<2>().norm(), e.hypotheses, e.hypothesis_weight,
-                    e.alternative.x(), e.alternative.y());
+        std::printf("%.2f %s %.3f %.3f %.3f %d %.3f %.3f %.3f\n", now, rf::toString(e.status),
+                    e.position.x(), e.position.y(), (e.position - target).head<2>().norm(),
+                    e.hypotheses, e.hypothesis_weight, e.alternative.x(), e.alternative.y());
       };
       // Before each update, the readings it got beside an exact sensor of the layout as
       // designed.

@@ -244,8 +244,8 @@ void printSummary(const rf::ReplayResult& r, const rf::BagData& bag, const std::
   std::cout << "by distance (median / p95 m, count):\n";
   for (std::size_t i = 0; i <= rf::ErrorStatistics::kBandEdges.size(); ++i) {
     const rf::ErrorSummary s = r.statistics.band(i);
-    std::cout << "  " << rf::ErrorStatistics::bandName(i) << ": " << s.median << " / "
-              << s.p95 << " (" << s.count << ")\n";
+    std::cout << "  " << rf::ErrorStatistics::bandName(i) << ": " << s.median << " / " << s.p95
+              << " (" << s.count << ")\n";
   }
 }
 

@@ -33,11 +33,11 @@
 #include <vector>
 
 #include "radio_follow/common/angles.hpp"
+#include "radio_follow/common/error_statistics.hpp"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/config/layout_writer.hpp"
 #include "radio_follow/estimation/placement_search.hpp"
-#include "radio_follow/common/error_statistics.hpp"
 
 namespace rf = radio_follow;
 namespace fs = std::filesystem;

@@ -19,11 +19,11 @@
 #include <string>
 #include <vector>
 
+#include "radio_follow/common/error_statistics.hpp"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/common/tool_options.hpp"
 #include "radio_follow/control/rssi_filter.hpp"
 #include "radio_follow/control/rssi_model.hpp"
-#include "radio_follow/common/error_statistics.hpp"
 #include "radio_follow/sim/rssi_channel.hpp"
 
 namespace {
@@ -135,9 +135,8 @@ void staticTable(const rf::control::RssiFilterParams& base, const rf::control::R
         }
       }
       std::printf("| %.1f | %s | %.1f | %.2f | %.2f | %.2f | %.2f | %.2f | %s |\n", d, name(type),
-                  rf::mean(rssi), stddev(rssi), rf::quantile(error, 0.5),
-                  rf::mean(error), rf::quantile(error, 0.95),
-                  *std::max_element(error.begin(), error.end()),
+                  rf::mean(rssi), stddev(rssi), rf::quantile(error, 0.5), rf::mean(error),
+                  rf::quantile(error, 0.95), *std::max_element(error.begin(), error.end()),
                   cell(paperAverage(d, type)).c_str());
     }
   }
@@ -192,9 +191,8 @@ void approachTable(const rf::control::RssiFilterParams& base, const rf::control:
       }
     }
     std::printf("| %s | %d | %+.2f | %.2f | %.2f | %.2f | %.2f |\n", name(type), riseReadings(p),
-                rf::mean(signed_error), rf::quantile(error, 0.5),
-                rf::mean(error), rf::quantile(error, 0.95),
-                rf::mean(near_error));
+                rf::mean(signed_error), rf::quantile(error, 0.5), rf::mean(error),
+                rf::quantile(error, 0.95), rf::mean(near_error));
   }
 }
 

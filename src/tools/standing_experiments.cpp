@@ -24,10 +24,10 @@
 #include <vector>
 
 #include "radio_follow/common/angles.hpp"
+#include "radio_follow/common/error_statistics.hpp"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/common/tool_options.hpp"
 #include "radio_follow/evaluation/closed_loop.hpp"
-#include "radio_follow/common/error_statistics.hpp"
 #include "radio_follow/evaluation/heading_walks.hpp"
 
 namespace {
@@ -146,9 +146,8 @@ int main(int argc, char** argv) {
           "1.0 x); walks ending behind (more than 90 deg off): %d of %d; updates without a "
           "direction: %zu of %zu\n",
           rf::quantile(r.locator_deg, 0.5) / rf::quantile(r.raw_deg, 0.5),
-          rf::quantile(r.locator_deg, 0.95) /
-              rf::quantile(r.raw_deg, 0.95),
-          r.ended_behind, r.walks, r.without_direction, r.updates);
+          rf::quantile(r.locator_deg, 0.95) / rf::quantile(r.raw_deg, 0.95), r.ended_behind,
+          r.walks, r.without_direction, r.updates);
       return 0;
     }
 

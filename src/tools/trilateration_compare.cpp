@@ -20,11 +20,11 @@
 #include <vector>
 
 #include "radio_follow/common/angles.hpp"
+#include "radio_follow/common/error_statistics.hpp"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/common/tool_options.hpp"
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/estimation/initializer.hpp"
-#include "radio_follow/common/error_statistics.hpp"
 #include "radio_follow/sim/sensor_profile.hpp"
 
 namespace {
@@ -191,8 +191,7 @@ int main(int argc, char** argv) {
         const Accuracy a = accuracy(epochs, m.solve, config);
         std::printf("| %s | %zu | %zu | %s | %d | %.3f | %.3f | %.3f | %.3f | %.2f |\n", name,
                     layout.twr_modules.size(), epochs.ranges.size(), m.label, a.failures,
-                    rf::quantile(a.errors, 0.5),
-                    rf::quantile(a.errors, 0.95), rmse(a.errors), m.us,
+                    rf::quantile(a.errors, 0.5), rf::quantile(a.errors, 0.95), rmse(a.errors), m.us,
                     m.us / normal_us);
       }
       std::fflush(stdout);

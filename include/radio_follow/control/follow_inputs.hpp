@@ -19,23 +19,21 @@ namespace control {
 /// AMBIGUOUS is its own quality; a position or a direction with a range a module could
 /// measure (plausibility.hpp) and a bearing within a half turn is usable; anything else
 /// is lost.
-inline EstimateQuality estimateQuality(TargetStatus status, double range,
-                                                double bearing) {
+inline EstimateQuality estimateQuality(TargetStatus status, double range, double bearing) {
   if (status == TargetStatus::kAmbiguous) {
     return EstimateQuality::kAmbiguous;
   }
   const bool known = hasPosition(status) || status == TargetStatus::kHeadingOnly;
-  return known && plausibleAngleRad(bearing) && plausibleRange(range)
-             ? EstimateQuality::kUsable
-             : EstimateQuality::kLost;
+  return known && plausibleAngleRad(bearing) && plausibleRange(range) ? EstimateQuality::kUsable
+                                                                      : EstimateQuality::kLost;
 }
 
 /// The velocity law's input: HEADING_ONLY has no range, DEGRADED is flagged with the
 /// way it is uncertain (`spread` of the position, a second hypothesis: `hypotheses` 2),
 /// the target's receding speed when known, the nearest module's gap to the stop.
-inline TargetPolar targetPolar(TargetStatus status, double range,
-                                        double bearing, const PolarSpread& spread, int hypotheses,
-                                        std::optional<double> receding_speed, double module_gap) {
+inline TargetPolar targetPolar(TargetStatus status, double range, double bearing,
+                               const PolarSpread& spread, int hypotheses,
+                               std::optional<double> receding_speed, double module_gap) {
   TargetPolar t;
   t.range_sigma = spread.range_sigma;
   t.bearing_sigma = spread.bearing_sigma;
@@ -61,8 +59,7 @@ class TrackGate {
  public:
   /// Whether this estimate, the newest, is a track point.
   bool accept(TargetStatus status) {
-    confirmed_ = status == TargetStatus::kOk ||
-                 (confirmed_ && status == TargetStatus::kDegraded);
+    confirmed_ = status == TargetStatus::kOk || (confirmed_ && status == TargetStatus::kDegraded);
     return confirmed_;
   }
 

@@ -13,6 +13,7 @@
 #include "radio_follow/common/param_source.hpp"
 #include "radio_follow/common/param_table.hpp"
 #include "radio_follow/common/pose2.hpp"
+#include "radio_follow/common/target_status.hpp"
 #include "radio_follow/common/time_policy.hpp"
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/estimation/aoa_selector.hpp"
@@ -21,7 +22,6 @@
 #include "radio_follow/estimation/particle_tracker.hpp"
 #include "radio_follow/estimation/position_solver.hpp"
 #include "radio_follow/estimation/rss_direction.hpp"
-#include "radio_follow/common/target_status.hpp"
 #include "radio_follow/estimation/tdoa_calibration.hpp"
 
 namespace radio_follow {

@@ -10,11 +10,11 @@
 
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/pose2.hpp"
+#include "radio_follow/common/target_status.hpp"
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/estimation/mirror_axis.hpp"
 #include "radio_follow/estimation/particle_filter.hpp"
 #include "radio_follow/estimation/rss_direction.hpp"
-#include "radio_follow/common/target_status.hpp"
 
 namespace radio_follow {
 namespace estimation {

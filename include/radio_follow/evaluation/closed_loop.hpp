@@ -10,11 +10,11 @@
 
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/control/command_pipeline.hpp"
+#include "radio_follow/control/follow_inputs.hpp"
 #include "radio_follow/control/path_follower.hpp"
 #include "radio_follow/control/target_motion.hpp"
 #include "radio_follow/control/velocity_law.hpp"
 #include "radio_follow/estimation/locator.hpp"
-#include "radio_follow/control/follow_inputs.hpp"
 #include "radio_follow/evaluation/follow_metrics.hpp"
 #include "radio_follow/sim/obstacles.hpp"
 #include "radio_follow/sim/target_path.hpp"

@@ -13,14 +13,13 @@ namespace {
 constexpr std::uint8_t value(TargetStatus status) {
   return static_cast<std::uint8_t>(status);
 }
-static_assert(
-    TargetEstimate::STATUS_UNSET == value(TargetStatus::kUnset) &&
-        TargetEstimate::STATUS_OK == value(TargetStatus::kOk) &&
-        TargetEstimate::STATUS_HEADING_ONLY == value(TargetStatus::kHeadingOnly) &&
-        TargetEstimate::STATUS_DEGRADED == value(TargetStatus::kDegraded) &&
-        TargetEstimate::STATUS_LOST == value(TargetStatus::kLost) &&
-        TargetEstimate::STATUS_AMBIGUOUS == value(TargetStatus::kAmbiguous),
-    "TargetStatus must equal TargetEstimate.STATUS_* (locator_node copies them)");
+static_assert(TargetEstimate::STATUS_UNSET == value(TargetStatus::kUnset) &&
+                  TargetEstimate::STATUS_OK == value(TargetStatus::kOk) &&
+                  TargetEstimate::STATUS_HEADING_ONLY == value(TargetStatus::kHeadingOnly) &&
+                  TargetEstimate::STATUS_DEGRADED == value(TargetStatus::kDegraded) &&
+                  TargetEstimate::STATUS_LOST == value(TargetStatus::kLost) &&
+                  TargetEstimate::STATUS_AMBIGUOUS == value(TargetStatus::kAmbiguous),
+              "TargetStatus must equal TargetEstimate.STATUS_* (locator_node copies them)");
 
 }  // namespace
 

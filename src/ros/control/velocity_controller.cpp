@@ -18,9 +18,9 @@ control::TargetPolar targetPolar(const TargetEstimate& estimate,
   covariance << c[0], c[1], c[3], c[4];
   const PolarSpread spread =
       polarSpread(Eigen::Vector2d(estimate.position.x, estimate.position.y), covariance);
-  return control::targetPolar(static_cast<TargetStatus>(estimate.status),
-                                 estimate.range, estimate.bearing, spread, estimate.hypotheses,
-                                 receding_speed, module_gap);
+  return control::targetPolar(static_cast<TargetStatus>(estimate.status), estimate.range,
+                              estimate.bearing, spread, estimate.hypotheses, receding_speed,
+                              module_gap);
 }
 
 void VelocityControllerNode::Params::load(const ParamReader& pnh) {

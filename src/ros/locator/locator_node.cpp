@@ -270,9 +270,8 @@ void LocatorNode::publish(const estimation::LocatorEstimate& estimate, const ros
   // The estimate is stamped with its newest measurement; LOST with the current time.
   // A stamp ros::Time cannot hold (NaN, negative, past 2^32 s) would throw: it gets now.
   const bool representable = estimate.stamp >= 0.0 && estimate.stamp < 4294967295.0;
-  const ros::Time stamp = estimate.status == TargetStatus::kLost || !representable
-                              ? now
-                              : ros::Time(estimate.stamp);
+  const ros::Time stamp =
+      estimate.status == TargetStatus::kLost || !representable ? now : ros::Time(estimate.stamp);
   // Always published, LOST included: a controller must hear that the target is gone.
   target_pub_.publish(toMessage(estimate, layout_.fixed_frame, stamp));
   if (target_odom_pub_ && estimate.in_odom && estimate.status != TargetStatus::kLost) {

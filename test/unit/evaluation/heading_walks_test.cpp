@@ -6,9 +6,9 @@
 
 #include <algorithm>
 
+#include "radio_follow/common/error_statistics.hpp"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/evaluation/closed_loop.hpp"
-#include "radio_follow/common/error_statistics.hpp"
 
 namespace radio_follow {
 namespace evaluation {

@@ -9,8 +9,8 @@
 #include <string>
 
 #include "radio_follow/TargetEstimate.h"
-#include "radio_follow/control/target_motion.hpp"
 #include "radio_follow/control/follow_inputs.hpp"
+#include "radio_follow/control/target_motion.hpp"
 
 namespace radio_follow {
 

@@ -11,10 +11,10 @@
 #include "radio_follow/AoaBearing.h"
 #include "radio_follow/TdoaMeasurements.h"
 #include "radio_follow/UwbRanges.h"
+#include "radio_follow/common/error_statistics.hpp"
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/estimation/locator.hpp"
 #include "radio_follow/estimation/odometry_placement.hpp"
-#include "radio_follow/common/error_statistics.hpp"
 #include "radio_follow/ros/locator/locator_node.hpp"
 
 namespace radio_follow {
@@ -70,8 +70,7 @@ struct ReplayRow {
 
 struct ReplayResult {
   std::vector<ReplayRow> rows;
-  ErrorStatistics
-      statistics;             ///< over the rows with a position (OK/DEGRADED) and a truth
+  ErrorStatistics statistics;  ///< over the rows with a position (OK/DEGRADED) and a truth
   /// Over the rows with a direction (OK/DEGRADED/HEADING_ONLY) and a truth, by status.
   HeadingStatistics heading;
   std::size_t refused = 0;    ///< measurements the locator refused (unknown sensors)
