@@ -31,6 +31,8 @@ ALLOWED = {
 ROS_HEADER = re.compile(
     r"#\s*include\s*[<\"](ros|rosbag|tf2_ros|tf2_geometry_msgs|dynamic_reconfigure|"
     r"diagnostic_updater|[a-z_]+_msgs|std_srvs|xmlrpcpp|XmlRpc)[/.]")
+# The lab's layers: built only with RADIO_FOLLOW_BUILD_LAB, never included by the runtime.
+LAB_LAYERS = {"evaluation"}
 OWN_HEADER = re.compile(r"#\s*include\s*\"radio_follow/([A-Za-z_]+)/")
 # Generated message headers of this package: radio_follow/UwbRanges.h, ...
 OWN_MESSAGE = re.compile(r"#\s*include\s*[<\"]radio_follow/[A-Z][A-Za-z]*\.h[>\"]")
@@ -44,6 +46,26 @@ def files_of(repo, layer):
             for name in sorted(names):
                 if name.endswith((".cpp", ".hpp", ".h")):
                     yield os.path.join(dirpath, name)
+
+
+def runtime_files(repo):
+    """The ROS wrappers, the node mains and the operator tools (CMakeLists.txt's
+    RF_OPERATOR_TOOLS)."""
+    for root in (os.path.join(repo, "src", "ros"), os.path.join(repo, "include", "radio_follow", "ros"),
+                 os.path.join(repo, "src", "nodes")):
+        for dirpath, _, names in os.walk(root):
+            for name in sorted(names):
+                if name.endswith((".cpp", ".hpp", ".h")):
+                    yield os.path.join(dirpath, name)
+    cmake = os.path.join(repo, "CMakeLists.txt")
+    if os.path.exists(cmake):
+        with open(cmake, encoding="utf-8") as f:
+            match = re.search(r"^set\(RF_OPERATOR_TOOLS ([^)]*)\)", f.read(), re.M)
+        for tool in (match.group(1).split() if match else []):
+            yield os.path.join(repo, "src", "tools", tool + ".cpp")
+            parts = os.path.join(repo, "src", "tools", tool)  # a tool's other files
+            for name in sorted(os.listdir(parts)) if os.path.isdir(parts) else []:
+                yield os.path.join(parts, name)
 
 
 def check(repo):
@@ -62,6 +84,16 @@ def check(repo):
                         problems.append("%s:%d: layer %s includes %s/ (allowed: %s)"
                                         % (relative, number, layer, match.group(1),
                                            ", ".join(sorted(allowed))))
+    # The runtime (the ROS wrappers, the nodes, the operator tools) includes none of the
+    # lab's layers: what the .deb installs builds without RADIO_FOLLOW_BUILD_LAB.
+    for path in runtime_files(repo):
+        relative = os.path.relpath(path, repo)
+        with open(path, encoding="utf-8") as f:
+            for number, line in enumerate(f, 1):
+                match = OWN_HEADER.search(line)
+                if match and match.group(1) in LAB_LAYERS:
+                    problems.append("%s:%d: the runtime includes the lab's layer %s/"
+                                    % (relative, number, match.group(1)))
     # Every folder of the core is a known layer: a new folder needs its place in the order.
     for base in (os.path.join(repo, "src"), os.path.join(repo, "include", "radio_follow")):
         for name in sorted(os.listdir(base)):
@@ -73,7 +105,7 @@ def check(repo):
 
 
 def self_test():
-    """Copies the include lines of a few files into a scratch tree with three planted
+    """Copies the include lines of a few files into a scratch tree with four planted
     violations and checks that each is reported, and that the clean tree passes."""
     import shutil
     import tempfile
@@ -82,11 +114,13 @@ def self_test():
     try:
         shutil.copytree(os.path.join(repo, "src"), os.path.join(scratch, "src"))
         shutil.copytree(os.path.join(repo, "include"), os.path.join(scratch, "include"))
+        shutil.copy(os.path.join(repo, "CMakeLists.txt"), scratch)
         clean = check(scratch)
         planted = {
             "src/control/planted_ros.cpp": "#include <ros/ros.h>\n",
             "src/drivers/planted_message.cpp": "#include \"radio_follow/UwbRanges.h\"\n",
             "include/radio_follow/estimation/planted_up.hpp": "#include \"radio_follow/sim/world.hpp\"\n",
+            "src/ros/sim/planted_lab.cpp": "#include \"radio_follow/evaluation/closed_loop.hpp\"\n",
         }
         for name, text in planted.items():
             with open(os.path.join(scratch, name), "w") as f:

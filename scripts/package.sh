@@ -123,14 +123,24 @@ prefix="$root/opt/ros/$distro"
 [ -f "$prefix/setup.bash" ] || fail "no setup.bash in the installed prefix"
 for f in lib/radio_follow/simulator lib/radio_follow/locator lib/radio_follow/plot_report.py \
   lib/radio_follow/udev_rule.sh share/radio_follow/launch/demo.launch \
-  share/radio_follow/package.xml lib/radio_follow/calibrate_layout \
-  lib/radio_follow/locator_offline lib/radio_follow/placement_advisor; do
+  share/radio_follow/package.xml; do
   [ -e "$prefix/$f" ] || fail "the .deb lacks $f"
 done
-# The runtime only: no lab tool (CMakeLists.txt, RF_OPERATOR_TOOLS).
-for f in experiments closed_loop locator_pcrb standing_experiments homing_experiment; do
-  [ ! -e "$prefix/lib/radio_follow/$f" ] || fail "the .deb installs the lab tool $f"
+# The runtime only: of src/tools/, the operator tools CMakeLists.txt names
+# (RF_OPERATOR_TOOLS) and no other; no library of the lab's evaluation layer.
+operator_tools=" $(sed -n 's/^set(RF_OPERATOR_TOOLS \(.*\))$/\1/p' "$repo/CMakeLists.txt") "
+[ "$operator_tools" != "  " ] || fail "no set(RF_OPERATOR_TOOLS ...) line in CMakeLists.txt"
+for source in "$repo"/src/tools/*.cpp; do
+  tool="$(basename "$source" .cpp)"
+  if [[ "$operator_tools" == *" $tool "* ]]; then
+    [ -e "$prefix/lib/radio_follow/$tool" ] || fail "the .deb lacks the operator tool $tool"
+  else
+    [ ! -e "$prefix/lib/radio_follow/$tool" ] || fail "the .deb installs the lab tool $tool"
+  fi
 done
+if find "$prefix" -name 'libradio_follow_evaluation*' | grep -q .; then
+  fail "the .deb installs the lab's evaluation library"
+fi
 (
   cd "$work"
   export ROS_HOME="$work/ros_home_demo"

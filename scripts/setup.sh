@@ -23,7 +23,7 @@ packages=(
   librostest-dev python3-rostest libgtest-dev googletest catkin-lint
   # math, I/O, benchmarks (python3-scipy: the thesis's SciPy solve, bench/thesis_scipy.py;
   # benchmarks are never installed, so neither it nor Google Benchmark is in package.xml)
-  libceres-dev libeigen3-dev libboost-system-dev libboost-dev libyaml-cpp-dev libbenchmark-dev
+  libceres-dev libeigen3-dev libboost-system-dev libboost-program-options-dev libboost-dev libyaml-cpp-dev libbenchmark-dev
   python3-scipy
   # reports (demo plot)
   python3-matplotlib python3-numpy

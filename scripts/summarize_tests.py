@@ -8,6 +8,21 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 
 
+def print_slowest(files, count=12):
+    """run_tests runs one suite at a time (-j1) and each writes its file when it ends, so
+    the time between one file and the one before it is about that suite's wall time
+    (build steps run_tests makes between suites included)."""
+    if len(files) < 2:
+        return
+    ordered = sorted(files, key=lambda p: p.stat().st_mtime)
+    spans = [(b.stat().st_mtime - a.stat().st_mtime, b.name) for a, b in zip(ordered, ordered[1:])]
+    total = ordered[-1].stat().st_mtime - ordered[0].stat().st_mtime
+    print(f"slowest suites (time since the previous result file; {total:.0f} s from the "
+          f"first file to the last):")
+    for seconds, name in sorted(spans, reverse=True)[:count]:
+        print(f"  {seconds:6.0f} s  {name}")
+
+
 def main(results_dir: str) -> int:
     root = Path(results_dir)
     files = sorted(root.glob("*.xml")) if root.is_dir() else []
@@ -34,6 +49,7 @@ def main(results_dir: str) -> int:
                 broken.append(f"{path.name}: suite {suite.get('name')} errored before any test")
     for line in broken:
         print(f"ERROR   {line}")
+    print_slowest(files)
     print(f"test result files: {len(files)} in {results_dir}")
     total_failed = failed + len(broken)
     print(f"{passed} passed, {total_failed} failed, {skipped} skipped")

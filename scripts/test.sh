@@ -4,12 +4,24 @@
 # integration tests). Prints a summary; exits non-zero if anything failed or no test ran.
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+# Where the time goes (issue 32's 15-minute goal): each phase's wall time, and a table at
+# the end.
+phases=""
+phase_start=$SECONDS
+phase() {
+  phases+="$(printf '%6d s  %s' "$((SECONDS - phase_start))" "$1")"$'\n'
+  phase_start=$SECONDS
+}
 bash "$repo/scripts/setup.sh"
+phase "set-up (scripts/setup.sh)"
 export PATH="/usr/bin:$PATH"
 # Package hygiene first: catkin_lint errors fail the run (warnings are reported only).
 catkin_lint -W0 --quiet "$repo" || { echo "catkin_lint found errors" >&2; exit 1; }
+phase "catkin_lint"
 bash "$repo/scripts/build.sh"
+phase "build"
 bash "$repo/scripts/build.sh" tests
+phase "build the tests"
 
 # shellcheck disable=SC1091
 source "$repo/scripts/env.sh"
@@ -22,6 +34,7 @@ rm -rf "$results"
 (cd "$ws" && catkin_make run_tests -j1 -DPYTHON_EXECUTABLE=/usr/bin/python3) >"$ws/run_tests.log" 2>&1 || true
 grep -E '^\[ *(RUN|OK|FAILED|PASSED) |^\[ *FAILED|testcase|rostest|Summary' "$ws/run_tests.log" | tail -n 200 || true
 
+phase "run_tests (unit tests, rostests, lockstep and ROS experiments)"
 status=0
 python3 "$repo/scripts/summarize_tests.py" "$results" || status=1
 
@@ -42,13 +55,17 @@ python3 "$repo/scripts/real_recordings.py" --work "$real_work" \
 python3 "$repo/scripts/real_recordings.py" --work "$real_work" --runs static --max-median 0.61 \
   --max-p95 2.25 --min-available 43 | tail -n 2 || status=1
 rm -rf "$real_work"
+phase "real recordings"
 # Every command README.md and doc/ show, run against the simulator (scripts/docs_test.py).
 python3 "$repo/scripts/docs_test.py" || status=1
+phase "docs test"
 # A new user's path (issue 33): the small kit's layout on simulated serial devices,
 # calibrated from tape points, following with the demo's verdict passed.
 kit_work="$(mktemp -d)"
 bash "$repo/scripts/kit_path.sh" "$kit_work" || status=1
 rm -rf "$kit_work"
+phase "kit path"
+printf '\nwall time by phase:\n%s%6d s  total\n' "$phases" "$SECONDS"
 
 # The packaging checks (a second and a third build: target clash, .deb) are
 # scripts/release_check.sh, which CI runs after this (.ci/run).

@@ -202,7 +202,7 @@ ClosedLoop::ClosedLoop(const ClosedLoopConfig& config)
 
 ClosedLoop::~ClosedLoop() = default;
 
-FollowReport ClosedLoop::run() {
+control::FollowReport ClosedLoop::run() {
   while (step()) {
   }
   return metrics_.report();
@@ -390,7 +390,7 @@ void ClosedLoop::runController(double now) {
 
 void ClosedLoop::sample(double now) {
   const Pose2& pose = world_.robot().pose();
-  FollowSample s;
+  control::FollowSample s;
   s.t = now;
   s.robot_x = pose.x;
   s.robot_y = pose.y;
@@ -407,7 +407,7 @@ void ClosedLoop::sample(double now) {
   if (estimate_) {
     s.estimate_status = toString(estimate_->status);
     if (hasPosition(estimate_->status) && estimate_stamp_ <= now &&
-        now - estimate_stamp_ <= kSampleEstimateMaxAge) {
+        now - estimate_stamp_ <= control::kSampleEstimateMaxAge) {
       // Compare with the truth closest to the estimate's stamp.
       const auto closest =
           std::min_element(truth_.begin(), truth_.end(), [&](const auto& a, const auto& b) {

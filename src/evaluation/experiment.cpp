@@ -108,7 +108,7 @@ std::vector<Experiment> loadExperiments(const std::string& path) {
   return experiments;
 }
 
-std::vector<std::string> checkRun(const ExperimentCheck& check, const FollowReport& r,
+std::vector<std::string> checkRun(const ExperimentCheck& check, const control::FollowReport& r,
                                   const std::vector<CommandAt>& commands) {
   std::vector<std::string> violations;
   if (check.min_gap_while_moving && !(r.min_gap_while_moving >= *check.min_gap_while_moving)) {
@@ -167,7 +167,7 @@ std::vector<std::string> checkRun(const ExperimentCheck& check, const FollowRepo
   return violations;
 }
 
-bool keptFollowing(const FollowReport& report, const FollowSettings& settings) {
+bool keptFollowing(const control::FollowReport& report, const control::FollowSettings& settings) {
   return !report.collided &&
          std::abs(report.final_gap - settings.follow_distance) <= settings.gap_tolerance;
 }

@@ -6,14 +6,13 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <functional>
 #include <iostream>
-#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "radio_follow/common/angles.hpp"
+#include "radio_follow/common/command_line.hpp"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/common/yaml_keys.hpp"
 #include "radio_follow/config/layout_writer.hpp"
@@ -23,41 +22,6 @@ namespace rf = radio_follow;
 namespace est = radio_follow::estimation;
 
 namespace {
-
-const char* const kUsage =
-    "usage: calibrate_layout --bag BAG --layout LAYOUT.yaml --out CALIBRATED.yaml\n"
-    "         (--truth-topic TOPIC | --points POINTS.yaml) [--degree N] [--max-gap S]\n"
-    "         [--min-samples N] [--uwb-topics T1,T2,...] [--aoa-topics T1,...] [--no-aoa]\n";
-
-const char* const kHelp =
-    "Fits each UWB module's range calibration polynomial and each AoA board's yaw offset\n"
-    "from a bag and writes the layout with the new `calibration` and `rpy_deg` yaw.\n"
-    "\n"
-    "  --bag BAG           the recording (raw driver topics and the reference)\n"
-    "  --layout FILE       the robot's layout (module and board positions, old calibration)\n"
-    "  --out FILE          the calibrated layout to write; everything but `calibration` and\n"
-    "                      `rpy_deg` is kept, key order and quoting too, COMMENTS ARE NOT\n"
-    "  --truth-topic T     reference: the tag's position in the layout's fixed frame,\n"
-    "                      geometry_msgs/PointStamped (the simulator's\n"
-    "                      ground_truth/target_relative), PoseStamped or nav_msgs/Odometry,\n"
-    "                      interpolated to each measurement's stamp\n"
-    "  --points FILE       reference: tape-measured points, YAML\n"
-    "                      `points: [{position: [x, y, z], from: s, until: s}, ...]`\n"
-    "                      (fixed frame, m; seconds from the bag's start); measurements\n"
-    "                      outside every window are ignored\n"
-    "  --degree N          range polynomial degree, 0 (offset) to 3; default 1\n"
-    "  --max-gap S         with --truth-topic: drop a measurement farther than S seconds\n"
-    "                      from any reference sample; default 0.1\n"
-    "  --min-samples N     fewer paired samples keep a sensor's old value; default 30\n"
-    "  --uwb-topics LIST   UwbRanges topics; default uwb/<module id>/ranges per module\n"
-    "  --aoa-topics LIST   AoaBearing topics; default aoa/<board id>/bearing per board\n"
-    "  --no-aoa            fit the modules only; boards keep their rpy_deg\n"
-    "\n"
-    "Prints one row per module and board: samples used and rejected (outliers: NLOS,\n"
-    "reflections), RMS error before and after, the coefficients or the offset. A sensor\n"
-    "that cannot be fitted keeps its old value. Exit 0 when at least one sensor was\n"
-    "fitted and the file written, 1 when none could be (or the bag cannot be used),\n"
-    "2 on bad flags or a bad layout / points file.\n";
 
 struct Options {
   std::string bag;
@@ -73,9 +37,43 @@ struct Options {
   bool aoa = true;
 };
 
-[[noreturn]] void usage(const std::string& error) {
-  std::cerr << "calibrate_layout: " << error << "\n" << kUsage;
-  std::exit(2);
+rf::cli::CommandLine commandLine() {
+  rf::cli::CommandLine cli(
+      "calibrate_layout",
+      "usage: calibrate_layout --bag BAG --layout LAYOUT.yaml --out CALIBRATED.yaml\n"
+      "         (--truth-topic TOPIC | --points POINTS.yaml) [--degree N] [--max-gap S]\n"
+      "         [--min-samples N] [--uwb-topics T1,T2,...] [--aoa-topics T1,...] [--no-aoa]\n",
+      "Fits each UWB module's range calibration polynomial and each AoA board's yaw offset\n"
+      "from a bag and writes the layout with the new `calibration` and `rpy_deg` yaw.\n"
+      "Prints one row per module and board: samples used and rejected (outliers: NLOS,\n"
+      "reflections), RMS error before and after, the coefficients or the offset. A sensor\n"
+      "that cannot be fitted keeps its old value. Exit 0 when at least one sensor was\n"
+      "fitted and the file written, 1 when none could be (or the bag cannot be used),\n"
+      "2 on bad flags or a bad layout / points file.\n");
+  namespace po = rf::cli::po;
+  const auto text = [](const char* name) { return po::value<std::string>()->value_name(name); };
+  cli.options()("bag", text("BAG"), "the recording (raw driver topics and the reference)")(
+      "layout", text("FILE"), "the robot's layout (module and board positions, old calibration)")(
+      "out", text("FILE"),
+      "the calibrated layout to write; everything but `calibration` and `rpy_deg` is kept, "
+      "key order and quoting too, COMMENTS ARE NOT")(
+      "truth-topic", text("T"),
+      "reference: the tag's position in the layout's fixed frame, geometry_msgs/PointStamped "
+      "(the simulator's ground_truth/target_relative), PoseStamped or nav_msgs/Odometry, "
+      "interpolated to each measurement's stamp")(
+      "points", text("FILE"),
+      "reference: tape-measured points, YAML `points: [{position: [x, y, z], from: s, until: "
+      "s}, ...]` (fixed frame, m; seconds from the bag's start); measurements outside every "
+      "window are ignored")("degree", text("N"),
+                            "range polynomial degree, 0 (offset) to 3; default 1")(
+      "max-gap", text("S"),
+      "with --truth-topic: drop a measurement farther than S seconds from any reference "
+      "sample; default 0.1")("min-samples", text("N"),
+                             "fewer paired samples keep a sensor's old value; default 30")(
+      "uwb-topics", text("LIST"), "UwbRanges topics; default uwb/<module id>/ranges per module")(
+      "aoa-topics", text("LIST"), "AoaBearing topics; default aoa/<board id>/bearing per board")(
+      "no-aoa", po::bool_switch(), "fit the modules only; boards keep their rpy_deg");
+  return cli;
 }
 
 std::vector<std::string> splitList(const std::string& flag, const std::string& text) {
@@ -83,97 +81,64 @@ std::vector<std::string> splitList(const std::string& flag, const std::string& t
   std::stringstream in(text);
   for (std::string item; std::getline(in, item, ',');) {
     if (item.empty()) {
-      usage(flag + " '" + text + "': expected topics separated by commas, none empty");
+      throw rf::cli::UsageError(flag + " '" + text +
+                                "': expected topics separated by commas, none empty");
     }
     items.push_back(item);
   }
   if (items.empty()) {
-    usage(flag + " '" + text + "': expected at least one topic");
+    throw rf::cli::UsageError(flag + " '" + text + "': expected at least one topic");
   }
   return items;
 }
 
-double parseNumber(const std::string& flag, const std::string& text, const std::string& expected) {
-  std::size_t used = 0;
-  double v = 0.0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
+Options read(const rf::cli::po::variables_map& values) {
+  using rf::cli::CommandLine;
+  Options o;
+  o.bag = CommandLine::text(values, "bag");
+  o.layout = CommandLine::text(values, "layout");
+  o.out = CommandLine::text(values, "out");
+  o.truth_topic = CommandLine::text(values, "truth-topic");
+  o.points = CommandLine::text(values, "points");
+  o.aoa = !values["no-aoa"].as<bool>();
+  if (values.count("degree")) {
+    o.degree = static_cast<int>(rf::cli::wholeNumber(
+        "--degree", CommandLine::text(values, "degree"), 0, 3, "a whole number from 0 to 3"));
   }
-  if (used == 0 || used != text.size() || !std::isfinite(v)) {
-    usage(flag + " '" + text + "': expected " + expected);
+  if (values.count("max-gap")) {
+    o.max_gap = rf::cli::number("--max-gap", CommandLine::text(values, "max-gap"), "seconds > 0",
+                                [](double s) { return s > 0.0; });
   }
-  return v;
+  if (values.count("min-samples")) {
+    o.min_samples = static_cast<std::size_t>(rf::cli::wholeNumber(
+        "--min-samples", CommandLine::text(values, "min-samples"), 5, 1e9, "a whole number >= 5"));
+  }
+  if (values.count("uwb-topics")) {
+    o.uwb_topics = splitList("--uwb-topics", CommandLine::text(values, "uwb-topics"));
+  }
+  if (values.count("aoa-topics")) {
+    o.aoa_topics = splitList("--aoa-topics", CommandLine::text(values, "aoa-topics"));
+  }
+  if (o.bag.empty() || o.layout.empty() || o.out.empty()) {
+    throw rf::cli::UsageError("--bag, --layout and --out are required");
+  }
+  if (o.truth_topic.empty() == o.points.empty()) {
+    throw rf::cli::UsageError("give exactly one reference: --truth-topic TOPIC or --points FILE");
+  }
+  if (!o.aoa && !o.aoa_topics.empty()) {
+    throw rf::cli::UsageError("--aoa-topics with --no-aoa: choose one");
+  }
+  return o;
 }
 
 Options parse(int argc, char** argv) {
-  Options o;
-  // Every flag but --help and --no-aoa takes one value.
-  using Setter = std::function<void(const std::string& flag, const std::string& value)>;
-  const std::map<std::string, Setter> flags = {
-      {"--bag", [&](const std::string&, const std::string& v) { o.bag = v; }},
-      {"--layout", [&](const std::string&, const std::string& v) { o.layout = v; }},
-      {"--out", [&](const std::string&, const std::string& v) { o.out = v; }},
-      {"--truth-topic", [&](const std::string&, const std::string& v) { o.truth_topic = v; }},
-      {"--points", [&](const std::string&, const std::string& v) { o.points = v; }},
-      {"--degree",
-       [&](const std::string& f, const std::string& v) {
-         const double d = parseNumber(f, v, "a whole number from 0 to 3");
-         if (d != std::floor(d) || d < 0 || d > 3) {
-           usage(f + " '" + v + "': expected a whole number from 0 to 3");
-         }
-         o.degree = static_cast<int>(d);
-       }},
-      {"--max-gap",
-       [&](const std::string& f, const std::string& v) {
-         o.max_gap = parseNumber(f, v, "seconds > 0");
-         if (o.max_gap <= 0.0) {
-           usage(f + " '" + v + "': expected seconds > 0");
-         }
-       }},
-      {"--min-samples",
-       [&](const std::string& f, const std::string& v) {
-         const double n = parseNumber(f, v, "a whole number >= 5");
-         if (n != std::floor(n) || n < 5) {
-           usage(f + " '" + v + "': expected a whole number >= 5");
-         }
-         o.min_samples = static_cast<std::size_t>(n);
-       }},
-      {"--uwb-topics",
-       [&](const std::string& f, const std::string& v) { o.uwb_topics = splitList(f, v); }},
-      {"--aoa-topics",
-       [&](const std::string& f, const std::string& v) { o.aoa_topics = splitList(f, v); }},
-  };
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "-h" || a == "--help") {
-      std::cout << kUsage << "\n" << kHelp;
-      std::exit(0);
-    }
-    if (a == "--no-aoa") {
-      o.aoa = false;
-      continue;
-    }
-    const auto flag = flags.find(a);
-    if (flag == flags.end()) {
-      usage("unknown argument '" + a + "'");
-    }
-    if (i + 1 >= argc) {
-      usage(a + " needs a value");
-    }
-    flag->second(a, argv[++i]);
+  const rf::cli::CommandLine cli = commandLine();
+  const auto values = cli.parse(argc, argv);
+  try {
+    return read(values);
+  } catch (const rf::cli::UsageError& e) {
+    cli.fail(e.what());
   }
-  if (o.bag.empty() || o.layout.empty() || o.out.empty()) {
-    usage("--bag, --layout and --out are required");
-  }
-  if (o.truth_topic.empty() == o.points.empty()) {
-    usage("give exactly one reference: --truth-topic TOPIC or --points FILE");
-  }
-  if (!o.aoa && !o.aoa_topics.empty()) {
-    usage("--aoa-topics with --no-aoa: choose one");
-  }
-  return o;
 }
 
 std::string coefficients(const std::vector<double>& c) {

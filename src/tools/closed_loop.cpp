@@ -105,7 +105,7 @@ int main(int argc, char** argv) {
       config.world.hardware_seed = static_cast<std::uint64_t>(*hardware_seed);
     }
     radio_follow::evaluation::ClosedLoop loop(config);
-    const radio_follow::evaluation::FollowReport report = loop.run();
+    const radio_follow::control::FollowReport report = loop.run();
     std::printf("%s\n", report.toJson().c_str());
     if (!csv.empty()) {
       std::ofstream(csv) << loop.metrics().toCsv();

@@ -28,7 +28,7 @@ namespace {
 
 struct Column {
   const char* title;
-  double (*value)(const radio_follow::evaluation::FollowReport&);
+  double (*value)(const radio_follow::control::FollowReport&);
   const char* format;  ///< of one number
   double scale;
 };

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "radio_follow/common/command_line.hpp"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/common/yaml_params.hpp"
 #include "radio_follow/ros/locator/locator_node.hpp"
@@ -35,73 +36,55 @@ struct Options {
   double rate = 0.0;  ///< 0: the parameter files' `rate` (default 20 Hz)
 };
 
-[[noreturn]] void usage(const std::string& error) {
-  std::cerr << "locator_offline: " << error << "\n"
-            << "usage: locator_offline BAG --layout LAYOUT.yaml [--params LOCATOR.yaml]...\n"
-            << "         [--rate HZ] [--truth-topic TOPIC] [--out DIR] [--sweep GRID.yaml]\n";
-  std::exit(2);
-}
-
-[[noreturn]] void help() {
-  std::cout
-      << "usage: locator_offline BAG --layout LAYOUT.yaml [--params LOCATOR.yaml]...\n"
-      << "         [--rate HZ] [--truth-topic TOPIC] [--out DIR] [--sweep GRID.yaml]\n\n"
-      << "Replays a bag's raw ranges, bearings and TDoA differences through the locator\n"
-      << "library, as fast as the CPU allows, without a ROS master (doc/offline_evaluation.md).\n"
-      << "With a ground truth in the bag it prints the position error (overall, by direction,\n"
-      << "by distance) and the heading error by status.\n\n"
-      << "  BAG                  the bag (any topics with UwbRanges, AoaBearing, TdoaMeasurements)\n"
-      << "  --layout FILE        the recorded robot's layout\n"
-      << "  --params FILE        locator parameters; repeat: later files override earlier keys\n"
-      << "                       (default: the locator's own defaults)\n"
-      << "  --rate HZ            update rate (default: the files' rate, 20 Hz)\n"
-      << "  --truth-topic TOPIC  PointStamped ground truth in the robot frame\n"
-      << "                       (default: ground_truth/target_relative, the simulator's)\n"
-      << "  --out DIR            write estimates.csv and summary.json (sweep.csv) there\n"
-      << "  --sweep GRID.yaml    try every combination of a grid of parameter values, ranked\n"
-      << "  -h, --help           print this help\n";
-  std::exit(0);
+rf::cli::CommandLine commandLine() {
+  rf::cli::CommandLine cli(
+      "locator_offline",
+      "usage: locator_offline BAG --layout LAYOUT.yaml [--params LOCATOR.yaml]...\n"
+      "         [--rate HZ] [--truth-topic TOPIC] [--out DIR] [--sweep GRID.yaml]\n",
+      "Replays a bag's raw ranges, bearings and TDoA differences (any topics with UwbRanges,\n"
+      "AoaBearing, TdoaMeasurements) through the locator library, as fast as the CPU allows,\n"
+      "without a ROS master (doc/offline_evaluation.md). With a ground truth in the bag it\n"
+      "prints the position error (overall, by direction, by distance) and the heading error\n"
+      "by status.\n");
+  namespace po = rf::cli::po;
+  cli.options()("layout", po::value<std::string>()->value_name("FILE"),
+                "the recorded robot's layout")(
+      "params", po::value<std::vector<std::string>>()->value_name("FILE"),
+      "locator parameters; repeat: later files override earlier keys (default: the "
+      "locator's own defaults)")("rate", po::value<std::string>()->value_name("HZ"),
+                                 "update rate (default: the files' rate, 20 Hz)")(
+      "truth-topic", po::value<std::string>()->value_name("TOPIC"),
+      "PointStamped ground truth in the robot frame (default: ground_truth/target_relative, "
+      "the simulator's)")("out", po::value<std::string>()->value_name("DIR"),
+                          "write estimates.csv and summary.json (sweep.csv) there")(
+      "sweep", po::value<std::string>()->value_name("GRID.yaml"),
+      "try every combination of a grid of parameter values, ranked");
+  cli.positional("bag", -1);
+  return cli;
 }
 
 Options parse(int argc, char** argv) {
+  const rf::cli::CommandLine cli = commandLine();
+  const auto values = cli.parse(argc, argv);
+  using rf::cli::CommandLine;
   Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--help" || a == "-h") {
-      help();
-    }
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) {
-        usage(a + " needs a value");
-      }
-      return argv[++i];
-    };
-    if (a == "--layout") {
-      o.layout = value();
-    } else if (a == "--params") {
-      o.params.push_back(value());
-    } else if (a == "--sweep") {
-      o.sweep = value();
-    } else if (a == "--out") {
-      o.out = value();
-    } else if (a == "--truth-topic") {
-      o.truth_topic = value();
-    } else if (a == "--rate") {
-      try {
-        o.rate = std::stod(value());
-      } catch (const std::exception&) {
-        usage("--rate needs a number in Hz");
-      }
-    } else if (!a.empty() && a[0] == '-') {
-      usage("unknown option " + a);
-    } else if (o.bag.empty()) {
-      o.bag = a;
-    } else {
-      usage("more than one bag given");
-    }
+  const std::vector<std::string> bags = CommandLine::texts(values, "bag");
+  o.layout = CommandLine::text(values, "layout");
+  if (bags.size() != 1 || o.layout.empty()) {
+    cli.fail(bags.size() > 1 ? "more than one bag given" : "a bag and --layout are required");
   }
-  if (o.bag.empty() || o.layout.empty()) {
-    usage("a bag and --layout are required");
+  o.bag = bags.front();
+  o.params = CommandLine::texts(values, "params");
+  o.sweep = CommandLine::text(values, "sweep");
+  o.out = CommandLine::text(values, "out");
+  o.truth_topic = CommandLine::text(values, "truth-topic", o.truth_topic);
+  try {
+    if (values.count("rate")) {
+      o.rate = rf::cli::number("--rate", CommandLine::text(values, "rate"), "a rate > 0 Hz",
+                               [](double hz) { return hz > 0.0; });
+    }
+  } catch (const rf::cli::UsageError& e) {
+    cli.fail(e.what());
   }
   return o;
 }

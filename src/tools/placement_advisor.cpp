@@ -32,6 +32,7 @@
 #include <string>
 #include <vector>
 
+#include "placement_advisor/options.hpp"
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/error_statistics.hpp"
 #include "radio_follow/common/param_error.hpp"
@@ -47,180 +48,15 @@ using rf::jsonString;
 namespace {
 
 namespace est = rf::estimation;
-
-/// --optimise: the search to run and what to change in the region file.
-struct OptimiseOptions {
-  std::string region;
-  std::vector<std::string> methods{"greedy"};
-  std::vector<std::string> objectives;  ///< empty: the region's
-  std::optional<int> modules;
-  std::optional<int> boards;
-  int restarts = 20;
-  int samples = 2000;
-  int runs = 1;
-  std::uint64_t seed = 1;
-  double max_combinations = 2e6;
-  std::optional<double> limit;  ///< m: find the fewest sensors reaching it
-  est::GrowSensors grow = est::GrowSensors::kBoth;
-  std::string grow_text = "both";
-};
-
-struct Options {
-  std::string layout;
-  std::optional<OptimiseOptions> optimise;
-  std::optional<std::string> compare;
-  std::string out;
-  std::optional<std::string> plot_script;
-  rf::estimation::AdvisorConfig config;
-};
+using rf::placement_advisor::OptimiseOptions;
+using rf::placement_advisor::Options;
+using rf::placement_advisor::parse;
 
 struct Evaluated {
   std::string name;
   rf::Layout layout;
   rf::estimation::PlacementSummary summary;
 };
-
-const char* kUsage =
-    "usage: placement_advisor LAYOUT.yaml [--compare OTHER.yaml] [--extent M (10)]\n"
-    "         [--resolution M (0.25)] [--height M (1.0)] [--3d] [--sectors N (16)]\n"
-    "         [--weak-factor K (2)] [--plot PLOT_SCRIPT.py] --out DIR\n"
-    "       placement_advisor --optimise REGION.yaml [--method exhaustive|greedy|random|all\n"
-    "         (greedy)] [--objective mean|p90|max|all (the region's)] [--modules N]\n"
-    "         [--boards N] [--restarts N (20)] [--samples N (2000)] [--runs N (1)]\n"
-    "         [--seed S (1)] [--max-combinations N (2e6)] [--limit M]\n"
-    "         [--grow modules|boards|both (both)] [--compare REFERENCE.yaml]\n"
-    "         [--3d] [--plot PLOT_SCRIPT.py] --out DIR\n";
-
-const char* kHelp =
-    "\nThe Cramer-Rao bound of the target position over a grid around the robot for a\n"
-    "layout (the locator's YAML format), summarised per distance ring and direction, with\n"
-    "the weak directions and the thesis's placement guidelines (doc/placement_advisor.md).\n"
-    "No ROS master needed.\n\n"
-    "  LAYOUT.yaml            the layout to map\n"
-    "  --compare OTHER.yaml   map a second layout beside it\n"
-    "  --extent M             half-width of the square grid, m\n"
-    "  --resolution M         grid spacing, m\n"
-    "  --height M             the tag's height, m\n"
-    "  --3d                   bound the 3D position (default: planar)\n"
-    "  --sectors N            directions of the summary\n"
-    "  --weak-factor K        a direction is weak beyond K x the median bound\n"
-    "  --plot SCRIPT.py       draw DIR/<layout>.png with scripts/plot_placement.py\n"
-    "  --out DIR              write <layout>_map.csv and <layout>_summary.json here\n"
-    "  --optimise REGION.yaml search the best layout in a mounting region instead; the\n"
-    "                         search options above tune it, the best layout is written as\n"
-    "                         DIR/<region>_optimised.yaml and mapped\n"
-    "  -h, --help             print this help\n";
-
-std::string csvNumber(double value);
-
-double number(const std::string& option, const char* text) {
-  char* end = nullptr;
-  const double value = std::strtod(text, &end);
-  if (end == text || *end != '\0' || !std::isfinite(value)) {
-    throw rf::ParamError(option, rf::paramValueString(std::string(text)), "a number");
-  }
-  return value;
-}
-
-int count(const std::string& option, const char* text, double lo, double hi) {
-  const double value = number(option, text);
-  rf::require(value >= lo && value <= hi && value == std::floor(value), option, value,
-              "a whole number from " + csvNumber(lo) + " to " + csvNumber(hi));
-  return static_cast<int>(value);
-}
-
-std::vector<std::string> choices(const std::string& option, const std::string& text,
-                                 const std::vector<std::string>& allowed) {
-  if (text == "all") {
-    return allowed;
-  }
-  rf::require(std::find(allowed.begin(), allowed.end(), text) != allowed.end(), option, text,
-              "one of the listed choices or 'all'");
-  return {text};
-}
-
-Options parse(int argc, char** argv) {
-  Options opt;
-  OptimiseOptions o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string key = argv[i];
-    if (key == "--help" || key == "-h") {
-      std::printf("%s%s", kUsage, kHelp);
-      std::exit(0);
-    }
-    const auto value = [&]() -> const char* {
-      if (i + 1 >= argc) {
-        throw rf::ParamError(key, "(missing)", "a value after the option");
-      }
-      return argv[++i];
-    };
-    if (key == "--compare") {
-      opt.compare = value();
-    } else if (key == "--out") {
-      opt.out = value();
-    } else if (key == "--plot") {
-      opt.plot_script = value();
-    } else if (key == "--extent") {
-      opt.config.extent = number(key, value());
-    } else if (key == "--resolution") {
-      opt.config.resolution = number(key, value());
-    } else if (key == "--height") {
-      opt.config.target_height = number(key, value());
-    } else if (key == "--sectors") {
-      const double sectors = number(key, value());
-      rf::require(sectors >= 1.0 && sectors <= 360.0 && sectors == std::floor(sectors), key,
-                  sectors, "a whole number of sectors from 1 to 360");
-      opt.config.sectors = static_cast<int>(sectors);
-    } else if (key == "--weak-factor") {
-      opt.config.weak_factor = number(key, value());
-    } else if (key == "--3d") {
-      opt.config.planar = false;
-    } else if (key == "--optimise") {
-      o.region = value();
-    } else if (key == "--method") {
-      o.methods = choices(key, value(), {"exhaustive", "greedy", "random"});
-    } else if (key == "--objective") {
-      o.objectives = choices(key, value(), {"mean", "p90", "max"});
-    } else if (key == "--modules") {
-      o.modules = count(key, value(), 0, 16);
-    } else if (key == "--boards") {
-      o.boards = count(key, value(), 0, 16);
-    } else if (key == "--restarts") {
-      o.restarts = count(key, value(), 1, 1e6);
-    } else if (key == "--samples") {
-      o.samples = count(key, value(), 1, 1e8);
-    } else if (key == "--runs") {
-      o.runs = count(key, value(), 1, 1000);
-    } else if (key == "--seed") {
-      o.seed = static_cast<std::uint64_t>(count(key, value(), 0, 1e9));
-    } else if (key == "--limit") {
-      o.limit = number(key, value());
-    } else if (key == "--grow") {
-      o.grow_text = value();
-      rf::require(o.grow_text == "modules" || o.grow_text == "boards" || o.grow_text == "both", key,
-                  o.grow_text, "modules, boards or both");
-      o.grow = o.grow_text == "modules"  ? est::GrowSensors::kModules
-               : o.grow_text == "boards" ? est::GrowSensors::kBoards
-                                         : est::GrowSensors::kBoth;
-    } else if (key == "--max-combinations") {
-      o.max_combinations = number(key, value());
-    } else if (!key.empty() && key[0] != '-' && opt.layout.empty()) {
-      opt.layout = key;
-    } else {
-      throw rf::ParamError(key, "given", "one layout file and the options above");
-    }
-  }
-  if (!o.region.empty()) {
-    opt.optimise = o;
-    rf::require(opt.layout.empty(), "LAYOUT.yaml", opt.layout,
-                "no layout with --optimise (the reference goes after --compare)");
-  } else {
-    rf::require(!opt.layout.empty(), "LAYOUT.yaml", std::string("(none)"), "a layout file");
-  }
-  rf::require(!opt.out.empty(), "--out", std::string("(none)"), "an output directory");
-  opt.config.validate();
-  return opt;
-}
 
 std::string csvNumber(double value) {
   char buffer[32];
@@ -560,13 +396,7 @@ std::string optimise(Options& opt, const fs::path& out) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  Options opt;
-  try {
-    opt = parse(argc, argv);
-  } catch (const std::exception& ex) {
-    std::fprintf(stderr, "placement_advisor: %s\n%s", ex.what(), kUsage);
-    return 2;
-  }
+  Options opt = parse(argc, argv);
   try {
     const fs::path out(opt.out);
     fs::create_directories(out);

@@ -11,11 +11,11 @@
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/control/command_pipeline.hpp"
 #include "radio_follow/control/follow_inputs.hpp"
+#include "radio_follow/control/follow_metrics.hpp"
 #include "radio_follow/control/path_follower.hpp"
 #include "radio_follow/control/target_motion.hpp"
 #include "radio_follow/control/velocity_law.hpp"
 #include "radio_follow/estimation/locator.hpp"
-#include "radio_follow/evaluation/follow_metrics.hpp"
 #include "radio_follow/sim/obstacles.hpp"
 #include "radio_follow/sim/target_path.hpp"
 #include "radio_follow/sim/world.hpp"
@@ -73,7 +73,7 @@ struct ClosedLoopConfig {
   /// The controller's tf_timeout: an estimate newer than the newest odometry pose is
   /// placed with that pose when it is at most this much newer, s.
   double tf_timeout = 0.05;
-  FollowSettings metrics;
+  control::FollowSettings metrics;
   double evaluator_rate = 20.0;  ///< Hz, as the follow evaluator samples
   std::vector<SensorOutage> outages;
 
@@ -113,12 +113,12 @@ class ClosedLoop {
 
   /// Runs the scenario to its end, or to the first collision with an obstacle, and
   /// returns the evaluator's report.
-  FollowReport run();
+  control::FollowReport run();
   /// One physics step (1 / step_rate s); false once the scenario is over or the robot has
   /// hit an obstacle.
   bool step();
 
-  const FollowMetrics& metrics() const { return metrics_; }
+  const control::FollowMetrics& metrics() const { return metrics_; }
   const sim::World& world() const { return world_; }
   /// The layout the locator runs with (calibrated with the realistic profile).
   const Layout& locatorLayout() const { return *config_.locator_layout; }
@@ -164,7 +164,7 @@ class ClosedLoop {
   control::PathFollowLaw path_law_;
   control::TargetTrack track_;
   control::TrackGate track_gate_;  ///< which estimates extend track_ and the path law's path
-  FollowMetrics metrics_;
+  control::FollowMetrics metrics_;
   Timer locator_timer_;
   Timer controller_timer_;
   Timer evaluator_timer_;

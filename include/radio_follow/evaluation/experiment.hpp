@@ -63,16 +63,16 @@ struct CommandAt {
 
 /// The sentences saying which threshold of `check` the run broke (empty: it passed).
 /// Used on lockstep runs and on the ROS runs' reports alike.
-std::vector<std::string> checkRun(const ExperimentCheck& check, const FollowReport& report,
+std::vector<std::string> checkRun(const ExperimentCheck& check, const control::FollowReport& report,
                                   const std::vector<CommandAt>& commands);
 
 /// Whether a run still followed at its end: no collision, and the final gap within
 /// `gap_tolerance` of `follow_distance` (every scenario ends with the person standing
 /// for its settle time, long enough for a robot that kept up to arrive).
-bool keptFollowing(const FollowReport& report, const FollowSettings& settings);
+bool keptFollowing(const control::FollowReport& report, const control::FollowSettings& settings);
 
 struct ExperimentResult {
-  FollowReport report;
+  control::FollowReport report;
   std::vector<std::string> violations;  ///< checkRun's, plus the report's own failures
   bool kept_following = false;          ///< keptFollowing(report, the run's settings)
 };

@@ -80,14 +80,14 @@ void FollowEvaluatorNode::Params::validate() const {
 }
 
 FollowEvaluatorNode::FollowEvaluatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
-    : metrics_(evaluation::FollowSettings{}) {
+    : metrics_(control::FollowSettings{}) {
   const ParamReader reader(private_nh);
   reader.param("report_dir", params_.report_dir, params_.report_dir);
   reader.param("rate", params_.rate, params_.rate);
   reader.param("write_period", params_.write_period, params_.write_period);
   reader.param("end_launch", params_.end_launch, params_.end_launch);
   reader.param("controller", params_.controller, params_.controller);
-  evaluation::FollowSettings& s = params_.settings;
+  control::FollowSettings& s = params_.settings;
   s.judge_following = true;
   if (params_.controller.empty()) {
     reader.param("follow_distance", s.follow_distance, s.follow_distance);
@@ -116,7 +116,7 @@ FollowEvaluatorNode::FollowEvaluatorNode(ros::NodeHandle& nh, ros::NodeHandle& p
     require(!error, "~report_dir", params_.report_dir,
             "a directory that exists or can be created (" + error.message() + ")");
   }
-  metrics_ = evaluation::FollowMetrics(params_.settings);
+  metrics_ = control::FollowMetrics(params_.settings);
   time_.setFutureTolerance(futureStampTolerance(ros::Time::isSimTime()));  // as the controllers
 
   odom_sub_ = barrier_.subscribe<nav_msgs::Odometry>(
@@ -206,7 +206,7 @@ void FollowEvaluatorNode::onFinished(const std_msgs::BoolConstPtr& msg) {
   timer_.stop();
   write_timer_.stop();
   writeFiles();
-  const evaluation::FollowReport result = metrics_.report();
+  const control::FollowReport result = metrics_.report();
   std_msgs::String report;
   report.data = result.toJson();
   report_pub_.publish(report);
@@ -216,7 +216,7 @@ void FollowEvaluatorNode::onFinished(const std_msgs::BoolConstPtr& msg) {
   }
 }
 
-void FollowEvaluatorNode::logVerdict(const evaluation::FollowReport& report) const {
+void FollowEvaluatorNode::logVerdict(const control::FollowReport& report) const {
   if (report.failures.empty()) {
     ROS_INFO(
         "follow_evaluator: closed loop OK: the robot drove %.1f m, the estimate was usable "
@@ -241,7 +241,7 @@ void FollowEvaluatorNode::onTick(const ros::TimerEvent& event) {
   if (time_.jumpedBack(event.current_real.toSec())) {
     // A restarted simulator or a looped bag: the samples so far belong to another run.
     ROS_WARN("follow_evaluator: the clock jumped back, metrics start over");
-    metrics_ = evaluation::FollowMetrics(params_.settings);
+    metrics_ = control::FollowMetrics(params_.settings);
     relative_history_.clear();
     estimate_.reset();
   }
@@ -249,7 +249,7 @@ void FollowEvaluatorNode::onTick(const ros::TimerEvent& event) {
     return;
   }
   const auto& relative = relative_history_.back();
-  evaluation::FollowSample s;
+  control::FollowSample s;
   s.t = event.current_real.toSec();
   s.robot_x = odom_->pose.pose.position.x;
   s.robot_y = odom_->pose.pose.position.y;
@@ -272,7 +272,7 @@ void FollowEvaluatorNode::onTick(const ros::TimerEvent& event) {
       usable && time_.check(estimate_->header.stamp.toSec(), event.current_real.toSec()) ==
                     TimePolicy::Verdict::kFresh;
   if (trusted && event.current_real.toSec() - estimate_->header.stamp.toSec() <=
-                     evaluation::kSampleEstimateMaxAge) {
+                     control::kSampleEstimateMaxAge) {
     // Compare with the truth closest to the estimate's stamp.
     const ros::Time stamp = estimate_->header.stamp;
     const auto closest = std::min_element(

@@ -63,8 +63,8 @@ constexpr double kErrorMedianTolerance = 0.15;  ///< m
 constexpr double kDistanceTolerance = 0.25;     ///< fraction of the lockstep distance
 
 /// The report fields the experiment checks read, from the evaluator's JSON.
-radio_follow::evaluation::FollowReport fromJson(const YAML::Node& report) {
-  radio_follow::evaluation::FollowReport r;
+radio_follow::control::FollowReport fromJson(const YAML::Node& report) {
+  radio_follow::control::FollowReport r;
   r.min_gap_while_moving = metric(report, "min_gap_while_moving_m");
   r.gap_within_tolerance = metric(report, "gap_within_tolerance");
   r.estimate_error_median = metric(report, "estimate_error_median_m");
@@ -142,7 +142,7 @@ TEST(Experiment, MeetsItsThresholds) {
     const auto e = std::find_if(experiments.begin(), experiments.end(),
                                 [&](const auto& x) { return x.name == experiment_name; });
     ASSERT_NE(e, experiments.end()) << experiment_name << " is not in " << file;
-    const radio_follow::evaluation::FollowReport ros_run = fromJson(report);
+    const radio_follow::control::FollowReport ros_run = fromJson(report);
     // On the ROS run, only the thresholds no load may move: safety (the gap and the
     // clearance while moving, no motion in the stop window) and driving again after a
     // fault. How well it follows is asserted on the lockstep run below.
@@ -164,7 +164,7 @@ TEST(Experiment, MeetsItsThresholds) {
     for (const std::string& v : lockstep.violations) {
       ADD_FAILURE() << "lockstep run: " << v;
     }
-    const radio_follow::evaluation::FollowReport& l = lockstep.report;
+    const radio_follow::control::FollowReport& l = lockstep.report;
     double gap_share_tolerance = kGapShareTolerance;
     ros::param::get("~gap_share_tolerance", gap_share_tolerance);
     EXPECT_NEAR(ros_run.gap_within_tolerance, l.gap_within_tolerance, gap_share_tolerance)

@@ -51,7 +51,7 @@ TEST(ClosedLoop, TheBlindFollowerHitsAnObstacleAndTheScanningOneDoesNot) {
     ClosedLoopConfig c = obstacleWalk(controller, "{use_scan: true}");
     ASSERT_TRUE(c.pipeline.use_scan);
     ClosedLoop scanning(c);
-    const FollowReport seen = scanning.run();
+    const control::FollowReport seen = scanning.run();
     EXPECT_FALSE(seen.collided) << "clearance " << seen.min_clearance << " m";
     EXPECT_GE(seen.min_clearance, 0.0);
     EXPECT_LT(seen.min_clearance, 1.0) << "the robot passed the obstacles";
@@ -59,7 +59,7 @@ TEST(ClosedLoop, TheBlindFollowerHitsAnObstacleAndTheScanningOneDoesNot) {
   }
   // Straight at the person, it cuts the building's corner. The run ends at the collision.
   ClosedLoop blind(obstacleWalk(FollowController::kVelocity, "{}"));
-  const FollowReport hit = blind.run();
+  const control::FollowReport hit = blind.run();
   EXPECT_TRUE(hit.collided);
   EXPECT_LT(hit.min_clearance, 0.0);
   EXPECT_GT(hit.min_clearance, -0.05) << "stopped at the first touch, 1 cm of travel a step";
@@ -75,7 +75,7 @@ TEST(ClosedLoop, UseScanWithoutObstaclesHasNoScanAndDoesNotDrive) {
       loadClosedLoopConfig(RF_CONFIG_DIR, "spot", "straight_walk", FollowController::kVelocity,
                            1, "", "", std::nullopt, YAML::Load("{use_scan: true}"));
   ClosedLoop loop(c);
-  const FollowReport r = loop.run();
+  const control::FollowReport r = loop.run();
   EXPECT_TRUE(std::isinf(r.min_clearance));
   EXPECT_FALSE(r.collided);
   EXPECT_LT(r.robot_distance, 0.1);
@@ -150,7 +150,7 @@ TEST(ClosedLoop, ThresholdsCanFail) {
   ClosedLoopConfig c = config(e.layout, e.scenario, e.controller, 1);
   c.law.feed_forward = 0.0;
   ClosedLoop loop(c);
-  const FollowReport r = loop.run();
+  const control::FollowReport r = loop.run();
   EXPECT_FALSE(checkRun(e.check, r, {}).empty());
 
   ExperimentCheck stop;
@@ -162,7 +162,7 @@ TEST(ClosedLoop, ThresholdsCanFail) {
 
   ExperimentCheck clear;
   clear.min_clearance = 0.0;
-  FollowReport near = r;
+  control::FollowReport near = r;
   near.min_clearance = 0.01;
   EXPECT_TRUE(checkRun(clear, near, {}).empty());
   near.min_clearance = -0.01;
@@ -172,7 +172,7 @@ TEST(ClosedLoop, ThresholdsCanFail) {
 
   ExperimentCheck path;
   path.max_path_deviation_beyond_estimate = 0.1;
-  FollowReport wide = r;
+  control::FollowReport wide = r;
   wide.estimate_error_p95 = 0.5;
   wide.path_deviation_max = 0.55;
   EXPECT_TRUE(checkRun(path, wide, {}).empty());

@@ -12,7 +12,7 @@
 #include <string>
 
 #include "radio_follow/common/time_policy.hpp"
-#include "radio_follow/evaluation/follow_metrics.hpp"
+#include "radio_follow/control/follow_metrics.hpp"
 #include "radio_follow/ros/common/callback_barrier.hpp"
 
 namespace radio_follow {
@@ -32,7 +32,7 @@ class FollowEvaluatorNode {
     /// The controller node whose follow_distance and safe_distance the run is judged by
     /// (read from its private namespace); empty: `~follow_distance`, `~safe_distance`.
     std::string controller;
-    evaluation::FollowSettings settings;
+    control::FollowSettings settings;
 
     void validate() const;
   };
@@ -49,7 +49,7 @@ class FollowEvaluatorNode {
   void onFinished(const std_msgs::BoolConstPtr& msg);
   void writeReport() const;
   /// One line saying whether the run worked as a closed loop, naming what failed.
-  void logVerdict(const evaluation::FollowReport& report) const;
+  void logVerdict(const control::FollowReport& report) const;
   void writeFiles() const;
   /// Whether an input is usable (finite, plausible); counts and warns (throttled,
   /// naming `topic`) when it is not, so one bad message cannot make the report NaN.
@@ -57,7 +57,7 @@ class FollowEvaluatorNode {
 
   Params params_;
   std::size_t implausible_ = 0;  ///< inputs dropped as not finite or implausible
-  evaluation::FollowMetrics metrics_;
+  control::FollowMetrics metrics_;
   TimePolicy time_;
   CallbackBarrier barrier_;  // every subscriber and timer runs inside it
   ros::Subscriber odom_sub_, truth_sub_, relative_sub_, estimate_sub_, cmd_sub_;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "radio_follow/evaluation/follow_metrics.hpp"
+#include "radio_follow/control/follow_metrics.hpp"
 
 #include <Eigen/Core>
 #include <algorithm>
@@ -12,7 +12,7 @@
 #include "radio_follow/common/error_statistics.hpp"
 
 namespace radio_follow {
-namespace evaluation {
+namespace control {
 namespace {
 
 /// Path points closer than this are merged: the person's path at 5 cm resolution.
@@ -316,5 +316,5 @@ std::string FollowMetrics::toCsv() const {
   return out.str();
 }
 
-}  // namespace evaluation
+}  // namespace control
 }  // namespace radio_follow

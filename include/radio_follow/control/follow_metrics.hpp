@@ -12,7 +12,7 @@
 #include "radio_follow/control/velocity_law.hpp"
 
 namespace radio_follow {
-namespace evaluation {
+namespace control {
 
 /// One moment of a follow run, as the evaluator samples it (world = odometry frame).
 struct FollowSample {
@@ -47,8 +47,8 @@ constexpr double kSampleEstimateMaxAge = 1.0;
 struct FollowSettings {
   /// The velocity controller's and the safety layer's defaults (their parameter tables).
   double follow_distance = control::VelocityLawParams().follow_distance;  ///< m
-  double safe_distance = control::SafetyParams().safe_distance;          ///< m
-  double gap_tolerance = 0.3;    ///< m
+  double safe_distance = control::SafetyParams().safe_distance;           ///< m
+  double gap_tolerance = 0.3;                                             ///< m
   double robot_max_speed = 1.5;  ///< m/s; the gap is judged while the person walks slower
   /// Gap statistics start once this time has passed and the gap has first come within
   /// gap_tolerance of follow_distance: the robot catching up from its start position is
@@ -139,5 +139,5 @@ class FollowMetrics {
   double collision_time_ = std::numeric_limits<double>::quiet_NaN();
 };
 
-}  // namespace evaluation
+}  // namespace control
 }  // namespace radio_follow

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "radio_follow/evaluation/follow_metrics.hpp"
+#include "radio_follow/control/follow_metrics.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <string>
 
 namespace radio_follow {
-namespace evaluation {
+namespace control {
 namespace {
 
 /// The person walks along +x at 1 m/s; the robot trails `lag` metres behind at a
@@ -213,5 +213,5 @@ TEST(FollowMetrics, CsvHasAHeaderAndOneRowPerSample) {
 }
 
 }  // namespace
-}  // namespace evaluation
+}  // namespace control
 }  // namespace radio_follow
