@@ -556,24 +556,33 @@ TEST(ParticleTracker, OneBoardNeverTurnsItsBackOnAPersonInFront) {
 
 TEST(ParticleTracker, OneBoardFindsAPersonBehindWhenTheRobotTurns) {
   // The evidence for behind: as the robot turns, a tag behind the board moves the other
-  // way in the board's frame than its mirror image in front would.
-  Locator locator(oneBoard(), particleConfig());
-  std::mt19937_64 rng(3);
-  const Eigen::Vector3d person(-3.0, 1.0, 1.0);  // odom; behind the board throughout
-  LocatorEstimate e;
-  for (int k = 1; k <= 200; ++k) {
-    const double t = 0.1 * k;
-    Pose2 pose;
-    pose.yaw = 0.4 * std::sin(0.6 * t);  // the robot turns +-23 deg in place
-    const Eigen::Vector2d ae = realBearing(pose.fromFixed(person), rng);
-    locator.addBearing("aoa", ae(0), ae(1), -60.0, t, pose);
-    e = locator.update(t + 0.01);
+  // way in the board's frame than its mirror image in front would. It builds up over
+  // seconds of turning against bearing errors correlated over time, so one walk's outcome
+  // hangs on its last bits (glibc picks sin/exp by the CPU): judged over 40 walks of
+  // 40 s (on the machine that wrote this, 31 of 40 ended on the person, 20 of 40 after
+  // 20 s; 37 swapped to the behind hypothesis at least once).
+  int found = 0;
+  int swapped = 0;
+  for (unsigned seed = 1; seed <= 40; ++seed) {
+    Locator locator(oneBoard(), particleConfig());
+    std::mt19937_64 rng(seed);
+    const Eigen::Vector3d person(-3.0, 1.0, 1.0);  // odom; behind the board throughout
+    LocatorEstimate e;
+    for (int k = 1; k <= 400; ++k) {
+      const double t = 0.1 * k;
+      Pose2 pose;
+      pose.yaw = 0.4 * std::sin(0.6 * t);  // the robot turns +-23 deg in place
+      const Eigen::Vector2d ae = realBearing(pose.fromFixed(person), rng);
+      locator.addBearing("aoa", ae(0), ae(1), -60.0, t, pose);
+      e = locator.update(t + 0.01);
+    }
+    ASSERT_EQ(e.status, TargetStatus::kHeadingOnly) << "seed " << seed;
+    const double heading = std::atan2(e.position.y(), e.position.x());
+    found += std::abs(wrapAngle(heading - std::atan2(person.y(), person.x()))) < deg2rad(30.0);
+    swapped += locator.tracker().stats().mirror_swaps >= 1;
   }
-  ASSERT_EQ(e.status, TargetStatus::kHeadingOnly);
-  EXPECT_GE(locator.tracker().stats().mirror_swaps, 1u);
-  const double heading = std::atan2(e.position.y() - 0.0, e.position.x());
-  EXPECT_LT(std::abs(wrapAngle(heading - std::atan2(person.y(), person.x()))), deg2rad(30.0))
-      << "estimate at " << e.position.transpose();
+  EXPECT_GE(found, 24) << "walks that ended on the person behind, of 40";
+  EXPECT_GE(swapped, 30) << "walks that took the behind hypothesis at least once, of 40";
 }
 
 }  // namespace
