@@ -49,23 +49,13 @@ def files_of(repo, layer):
 
 
 def runtime_files(repo):
-    """The ROS wrappers, the node mains and the operator tools (CMakeLists.txt's
-    RF_OPERATOR_TOOLS)."""
+    """The ROS wrappers, the node mains and the operator tools (src/tools/)."""
     for root in (os.path.join(repo, "src", "ros"), os.path.join(repo, "include", "radio_follow", "ros"),
-                 os.path.join(repo, "src", "nodes")):
+                 os.path.join(repo, "src", "nodes"), os.path.join(repo, "src", "tools")):
         for dirpath, _, names in os.walk(root):
             for name in sorted(names):
                 if name.endswith((".cpp", ".hpp", ".h")):
                     yield os.path.join(dirpath, name)
-    cmake = os.path.join(repo, "CMakeLists.txt")
-    if os.path.exists(cmake):
-        with open(cmake, encoding="utf-8") as f:
-            match = re.search(r"^set\(RF_OPERATOR_TOOLS ([^)]*)\)", f.read(), re.M)
-        for tool in (match.group(1).split() if match else []):
-            yield os.path.join(repo, "src", "tools", tool + ".cpp")
-            parts = os.path.join(repo, "src", "tools", tool)  # a tool's other files
-            for name in sorted(os.listdir(parts)) if os.path.isdir(parts) else []:
-                yield os.path.join(parts, name)
 
 
 def check(repo):
@@ -98,7 +88,7 @@ def check(repo):
     for base in (os.path.join(repo, "src"), os.path.join(repo, "include", "radio_follow")):
         for name in sorted(os.listdir(base)):
             if os.path.isdir(os.path.join(base, name)) and name not in ALLOWED and name not in (
-                    "ros", "nodes", "tools"):
+                    "ros", "nodes", "tools", "lab"):
                 problems.append("%s/%s: a folder that is no layer (add it to scripts/check_layers.py "
                                 "and CMakeLists.txt's RF_CORE_LAYERS)" % (os.path.relpath(base, repo), name))
     return problems
@@ -114,7 +104,6 @@ def self_test():
     try:
         shutil.copytree(os.path.join(repo, "src"), os.path.join(scratch, "src"))
         shutil.copytree(os.path.join(repo, "include"), os.path.join(scratch, "include"))
-        shutil.copy(os.path.join(repo, "CMakeLists.txt"), scratch)
         clean = check(scratch)
         planted = {
             "src/control/planted_ros.cpp": "#include <ros/ros.h>\n",

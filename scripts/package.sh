@@ -126,17 +126,15 @@ for f in lib/radio_follow/simulator lib/radio_follow/locator lib/radio_follow/pl
   share/radio_follow/package.xml; do
   [ -e "$prefix/$f" ] || fail "the .deb lacks $f"
 done
-# The runtime only: of src/tools/, the operator tools CMakeLists.txt names
-# (RF_OPERATOR_TOOLS) and no other; no library of the lab's evaluation layer.
-operator_tools=" $(sed -n 's/^set(RF_OPERATOR_TOOLS \(.*\))$/\1/p' "$repo/CMakeLists.txt") "
-[ "$operator_tools" != "  " ] || fail "no set(RF_OPERATOR_TOOLS ...) line in CMakeLists.txt"
+# The runtime only: every operator tool (src/tools/), no lab tool (src/lab/) and no
+# library of the lab's evaluation layer.
 for source in "$repo"/src/tools/*.cpp; do
   tool="$(basename "$source" .cpp)"
-  if [[ "$operator_tools" == *" $tool "* ]]; then
-    [ -e "$prefix/lib/radio_follow/$tool" ] || fail "the .deb lacks the operator tool $tool"
-  else
-    [ ! -e "$prefix/lib/radio_follow/$tool" ] || fail "the .deb installs the lab tool $tool"
-  fi
+  [ -e "$prefix/lib/radio_follow/$tool" ] || fail "the .deb lacks the operator tool $tool"
+done
+for source in "$repo"/src/lab/*.cpp; do
+  tool="$(basename "$source" .cpp)"
+  [ ! -e "$prefix/lib/radio_follow/$tool" ] || fail "the .deb installs the lab tool $tool"
 done
 if find "$prefix" -name 'libradio_follow_evaluation*' | grep -q .; then
   fail "the .deb installs the lab's evaluation library"

@@ -558,9 +558,10 @@ TEST(ParticleTracker, OneBoardFindsAPersonBehindWhenTheRobotTurns) {
   // The evidence for behind: as the robot turns, a tag behind the board moves the other
   // way in the board's frame than its mirror image in front would. It builds up over
   // seconds of turning against bearing errors correlated over time, so one walk's outcome
-  // hangs on its last bits (glibc picks sin/exp by the CPU): judged over 40 walks of
-  // 40 s (on the machine that wrote this, 31 of 40 ended on the person, 20 of 40 after
-  // 20 s; 37 swapped to the behind hypothesis at least once).
+  // can hang on the last bits of its arithmetic (one seed passed on one machine and
+  // failed on another, likely through libm's CPU-specific sin/exp): judged over 40 walks
+  // of 40 s (on the machine that wrote this, 31 of 40 ended on the person, 20 of 40
+  // after 20 s; 37 swapped to the behind hypothesis at least once).
   int found = 0;
   int swapped = 0;
   for (unsigned seed = 1; seed <= 40; ++seed) {

@@ -10,6 +10,8 @@
 //               [--sensor-profile ideal|realistic] [name ...]
 // --sensor-profile replaces every experiment's (default: the file's); with realistic each
 // seed is its own simulated robot, calibrated by the calibration run before it follows.
+#include <yaml-cpp/yaml.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -18,8 +20,6 @@
 #include <limits>
 #include <string>
 #include <vector>
-
-#include <yaml-cpp/yaml.h>
 
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/evaluation/experiment.hpp"
@@ -75,9 +75,8 @@ std::string obstacleRow(const radio_follow::evaluation::Experiment& experiment, 
     params = text.c_str();
   }
   char row[300];
-  std::snprintf(row, sizeof(row), "| %s | %s | %.0f | %d of %d | %.2f |\n",
-                experiment.name.c_str(), params.c_str(), 100.0 * kept_following / runs,
-                collisions, runs, min_clearance);
+  std::snprintf(row, sizeof(row), "| %s | %s | %.0f | %d of %d | %.2f |\n", experiment.name.c_str(),
+                params.c_str(), 100.0 * kept_following / runs, collisions, runs, min_clearance);
   return row;
 }
 
