@@ -30,6 +30,7 @@ import shutil
 import subprocess
 import sys
 import tempfile
+from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parent.parent
@@ -122,11 +123,17 @@ def evaluate_all(args, work):
     for p in args.params:
         params += ["--params", p]
     needed = set(runs) | ({"fast", "mid"} if args.calibrate else set())
-    for r in sorted(needed):
-        bag = work / ("%s.bag" % r)
-        if not bag.exists():
-            run([sys.executable, str(REPO / "scripts" / "real_recording_bag.py"), r, str(bag),
-                 "--layout", str(work / "trolley.yaml")])
+    # Independent conversions and replays run side by side, one per core; the results
+    # are read and printed in order.
+    pool = ThreadPoolExecutor(max_workers=os.cpu_count() or 1)
+    missing = [r for r in sorted(needed) if not (work / ("%s.bag" % r)).exists()]
+    conversions = [pool.submit(run, [sys.executable, str(REPO / "scripts" / "real_recording_bag.py"),
+                                     r, str(work / ("%s.bag" % r))] +
+                               # one writes the trolley's layout
+                               (["--layout", str(work / "trolley.yaml")] if i == 0 else []))
+                   for i, r in enumerate(missing)]
+    for c in conversions:
+        c.result()
 
     print("| run | anchor | median (m) | p95 (m) | max (m) | position available | "
           "longest > %.0f m (s) | OK yet > %.0f m |" % (WRONG, WRONG))
@@ -134,12 +141,15 @@ def evaluate_all(args, work):
     pooled, longest_all, ok_wrong_all = [], 0.0, 0
     updates_all, positions_all = 0, 0.0
     fits = []  # (rms before, rms after, offset, scale) of every module's calibration
+    replays = []  # (run, anchor, output directory, the replay running)
+    for k in args.anchors:  # written before any replay reads one
+        (work / ("layout_A%d.yaml" % k)).write_text(
+            (work / "trolley.yaml").read_text()
+            .replace('uwb_anchor_id: "A0"', 'uwb_anchor_id: "A%d"' % k))
     for r in runs:
         for k in args.anchors:
             anchor = "A%d" % k
             layout = work / ("layout_%s.yaml" % anchor)
-            layout.write_text((work / "trolley.yaml").read_text()
-                              .replace('uwb_anchor_id: "A0"', 'uwb_anchor_id: "%s"' % anchor))
             truth = "ground_truth/anchor_" + anchor
             if args.calibrate:
                 other = "fast" if r != "fast" else "mid"
@@ -156,18 +166,22 @@ def evaluate_all(args, work):
                         fits.append(tuple(float(v) for v in m.groups()[1:]))
                 layout = calibrated
             out = work / ("out_%s_%s" % (r, anchor))
-            run([tool("locator_offline"), str(work / ("%s.bag" % r)), "--layout", str(layout),
-                 "--truth-topic", truth, "--out", str(out)] + params)
-            errors, available, longest, ok_wrong, updates = evaluate(out)
-            pooled += errors
-            updates_all += updates
-            positions_all += available * updates
-            longest_all = max(longest_all, longest)
-            ok_wrong_all += ok_wrong
-            print("| %s | %s | %.3f | %.3f | %.2f | %.1f %% | %.1f | %.1f %% |" %
-                  (r, anchor, percentile(errors, 0.5), percentile(errors, 0.95),
-                   max(errors) if errors else float("nan"),
-                   100.0 * available, longest, 100.0 * ok_wrong / max(1, len(errors))))
+            replays.append((r, anchor, out, pool.submit(
+                run, [tool("locator_offline"), str(work / ("%s.bag" % r)), "--layout",
+                      str(layout), "--truth-topic", truth, "--out", str(out)] + params)))
+    for r, anchor, out, replay in replays:
+        replay.result()
+        errors, available, longest, ok_wrong, updates = evaluate(out)
+        pooled += errors
+        updates_all += updates
+        positions_all += available * updates
+        longest_all = max(longest_all, longest)
+        ok_wrong_all += ok_wrong
+        print("| %s | %s | %.3f | %.3f | %.2f | %.1f %% | %.1f | %.1f %% |" %
+              (r, anchor, percentile(errors, 0.5), percentile(errors, 0.95),
+               max(errors) if errors else float("nan"),
+               100.0 * available, longest, 100.0 * ok_wrong / max(1, len(errors))))
+    pool.shutdown()
     if fits:
         column = list(zip(*fits))
         print("\ncalibrations (calibrate_layout on the other run, %d module fits): offset "
