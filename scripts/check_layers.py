@@ -38,24 +38,24 @@ OWN_HEADER = re.compile(r"#\s*include\s*\"radio_follow/([A-Za-z_]+)/")
 OWN_MESSAGE = re.compile(r"#\s*include\s*[<\"]radio_follow/[A-Z][A-Za-z]*\.h[>\"]")
 
 
-def files_of(repo, layer):
-    for root in (os.path.join(repo, "src", layer), os.path.join(repo, "include", "radio_follow", layer)):
-        if not os.path.isdir(root):
-            continue
-        for dirpath, _, names in os.walk(root):
+def sources_under(*roots):
+    for root in roots:
+        for dirpath, _, names in os.walk(root):  # nothing for a missing root
             for name in sorted(names):
                 if name.endswith((".cpp", ".hpp", ".h")):
                     yield os.path.join(dirpath, name)
+
+
+def files_of(repo, layer):
+    return sources_under(os.path.join(repo, "src", layer),
+                         os.path.join(repo, "include", "radio_follow", layer))
 
 
 def runtime_files(repo):
     """The ROS wrappers, the node mains and the operator tools (src/tools/)."""
-    for root in (os.path.join(repo, "src", "ros"), os.path.join(repo, "include", "radio_follow", "ros"),
-                 os.path.join(repo, "src", "nodes"), os.path.join(repo, "src", "tools")):
-        for dirpath, _, names in os.walk(root):
-            for name in sorted(names):
-                if name.endswith((".cpp", ".hpp", ".h")):
-                    yield os.path.join(dirpath, name)
+    return sources_under(os.path.join(repo, "src", "ros"),
+                         os.path.join(repo, "include", "radio_follow", "ros"),
+                         os.path.join(repo, "src", "nodes"), os.path.join(repo, "src", "tools"))
 
 
 def check(repo):

@@ -132,13 +132,7 @@ Options read(const rf::cli::po::variables_map& values) {
 }
 
 Options parse(int argc, char** argv) {
-  const rf::cli::CommandLine cli = commandLine();
-  const auto values = cli.parse(argc, argv);
-  try {
-    return read(values);
-  } catch (const rf::cli::UsageError& e) {
-    cli.fail(e.what());
-  }
+  return commandLine().parse(argc, argv, read);
 }
 
 std::string coefficients(const std::vector<double>& c) {

@@ -63,30 +63,29 @@ rf::cli::CommandLine commandLine() {
   return cli;
 }
 
-Options parse(int argc, char** argv) {
-  const rf::cli::CommandLine cli = commandLine();
-  const auto values = cli.parse(argc, argv);
+Options read(const rf::cli::po::variables_map& values) {
   using rf::cli::CommandLine;
   Options o;
   const std::vector<std::string> bags = CommandLine::texts(values, "bag");
   o.layout = CommandLine::text(values, "layout");
   if (bags.size() != 1 || o.layout.empty()) {
-    cli.fail(bags.size() > 1 ? "more than one bag given" : "a bag and --layout are required");
+    throw rf::cli::UsageError(bags.size() > 1 ? "more than one bag given"
+                                              : "a bag and --layout are required");
   }
   o.bag = bags.front();
   o.params = CommandLine::texts(values, "params");
   o.sweep = CommandLine::text(values, "sweep");
   o.out = CommandLine::text(values, "out");
   o.truth_topic = CommandLine::text(values, "truth-topic", o.truth_topic);
-  try {
-    if (values.count("rate")) {
-      o.rate = rf::cli::number("--rate", CommandLine::text(values, "rate"), "a rate > 0 Hz",
-                               [](double hz) { return hz > 0.0; });
-    }
-  } catch (const rf::cli::UsageError& e) {
-    cli.fail(e.what());
+  if (values.count("rate")) {
+    o.rate = rf::cli::number("--rate", CommandLine::text(values, "rate"), "a rate > 0 Hz",
+                             [](double hz) { return hz > 0.0; });
   }
   return o;
+}
+
+Options parse(int argc, char** argv) {
+  return commandLine().parse(argc, argv, read);
 }
 
 /// The parameter files merged in order (later files override earlier keys).

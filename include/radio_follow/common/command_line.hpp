@@ -16,6 +16,8 @@
 #include <utility>
 #include <vector>
 
+#include "radio_follow/common/param_error.hpp"
+
 namespace radio_follow {
 namespace cli {
 
@@ -125,6 +127,21 @@ class CommandLine {
       std::exit(0);
     }
     return values;
+  }
+
+  /// parse(), then `read(values)`, which turns them into the tool's options: a UsageError
+  /// or ParamError it throws (a value that is not what its option expects, a missing
+  /// argument) exits 2 through fail() too.
+  template <typename Read>
+  auto parse(int argc, char** argv, Read read) const {
+    const po::variables_map values = parse(argc, argv);
+    try {
+      return read(values);
+    } catch (const UsageError& e) {
+      fail(e.what());
+    } catch (const ParamError& e) {
+      fail(e.what());
+    }
   }
 
   /// Prints "<tool>: <problem>" and the usage on stderr; exits 2.

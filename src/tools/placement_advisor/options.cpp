@@ -2,7 +2,6 @@
 #include "placement_advisor/options.hpp"
 
 #include <cstdio>
-#include <exception>
 
 #include "radio_follow/common/command_line.hpp"
 #include "radio_follow/common/param_error.hpp"
@@ -179,13 +178,7 @@ Options read(const rf::cli::po::variables_map& values) {
 }  // namespace
 
 Options parse(int argc, char** argv) {
-  const rf::cli::CommandLine cli = commandLine();
-  const auto values = cli.parse(argc, argv);
-  try {
-    return read(values);
-  } catch (const std::exception& e) {  // UsageError, ParamError (AdvisorConfig::validate)
-    cli.fail(e.what());
-  }
+  return commandLine().parse(argc, argv, read);
 }
 
 }  // namespace placement_advisor
