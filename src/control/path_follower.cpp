@@ -119,6 +119,19 @@ void PathFollowLaw::setLawParams(const VelocityLawParams& law) {
   speed_pid_.setGains(law.linear);
 }
 
+void PathFollowLaw::setCommon(const CommandPipelineParams& next) {
+  setLawParams(lawWithCommon(law_, next));
+}
+
+LawOutput PathFollowLaw::step(const FollowInput& input, double dt) {
+  if (!input.target) {
+    LawOutput out;
+    out.state = FollowerState::kWaitingForTarget;
+    return out;
+  }
+  return step(*input.target, input.robot, input.walking_speed, dt);
+}
+
 void PathFollowLaw::reset() {
   fallback_.reset();
   speed_pid_.reset();

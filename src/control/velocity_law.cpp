@@ -214,6 +214,19 @@ VelocityLawParams loadVelocityLawParams(const ParamSource& p, const CommandPipel
   return lawWithCommon(law, common);
 }
 
+LawOutput VelocityLaw::step(const FollowInput& input, double dt) {
+  if (!input.target) {
+    LawOutput out;
+    out.state = FollowerState::kWaitingForTarget;
+    return out;
+  }
+  return step(*input.target, dt);
+}
+
+void VelocityLaw::setCommon(const CommandPipelineParams& next) {
+  setParams(lawWithCommon(params_, next));
+}
+
 VelocityLawParams lawWithCommon(VelocityLawParams law, const CommandPipelineParams& common) {
   law.max_linear = common.limits.max_linear;
   law.max_linear_decel = common.limits.max_linear_decel;

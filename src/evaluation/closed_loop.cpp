@@ -142,7 +142,7 @@ ClosedLoopConfig loadClosedLoopConfig(const std::string& dir, const std::string&
   c.law = control::loadVelocityLawParams(p, c.pipeline);
   std::string odom_frame = "odom";
   p.param("odom_frame", odom_frame, odom_frame);
-  c.feed_forward_from_odometry = !odom_frame.empty();
+  c.track_in_odometry = !odom_frame.empty();
   p.param("tf_timeout", c.tf_timeout, c.tf_timeout);
   if (controller == FollowController::kPathFollower) {
     c.path.load(p);
@@ -186,9 +186,10 @@ ClosedLoop::ClosedLoop(const ClosedLoopConfig& config)
       }()),
       world_(config_.layout, config_.scenario, config_.world),
       locator_(*config_.locator_layout, config_.locator),
-      pipeline_(config_.pipeline),
-      velocity_law_(config_.law),
-      path_law_(config_.path, config_.law),
+      law_(config_.controller == FollowController::kVelocity
+               ? std::unique_ptr<control::FollowLaw>(new control::VelocityLaw(config_.law))
+               : std::make_unique<control::PathFollowLaw>(config_.path, config_.law)),
+      follower_(config_.pipeline),
       metrics_(config_.metrics),
       locator_timer_{1.0 / config_.locator_rate, kClockStart + 1.0 / config_.locator_rate},
       controller_timer_{1.0 / config_.controller_rate, kClockStart + 1.0 / config_.controller_rate},
@@ -196,7 +197,8 @@ ClosedLoop::ClosedLoop(const ClosedLoopConfig& config)
       // The ROS simulator scans on its first step, with a generator of its own.
       scan_timer_{1.0 / config_.scan.rate, kClockStart},
       scan_rng_(config_.world.seed + 1) {
-  pipeline_.setEnabled(true);  // start_enabled, as the demo and the experiments run
+  follower_.setLaw(*law_);
+  follower_.pipeline().setEnabled(true);  // start_enabled, as the demo and the experiments run
   poses_.push_back(PoseAt{kClockStart, world_.robot().pose()});
 }
 
@@ -254,9 +256,10 @@ void ClosedLoop::watchObstacles(double now) {
     // The controller's scan callback: sectors and the scan's stamp (its pipeline ignores
     // them without use_scan, as the node then does not subscribe).
     std::normal_distribution<double> noise(0.0, config_.scan.sigma);
-    pipeline_.onScan(
+    control::CommandPipeline& pipeline = follower_.pipeline();
+    pipeline.onScan(
         simulatedScanSectors(obstacles, config_.scan, pose,
-                             pipeline_.params().avoidance.side_threshold, noise, scan_rng_),
+                             pipeline.params().avoidance.side_threshold, noise, scan_rng_),
         now);
   }
 }
@@ -278,8 +281,8 @@ void ClosedLoop::feedSensors(const sim::StepEvents& events, double now) {
     }
     locator_.addRange(module.id, e.range, stamp, odometryAt(stamp));
     // The controller watches the same ranges (uwb/<id>/ranges) for its safety stop.
-    pipeline_.onRange(stamp, now, "uwb/" + module.id + "/ranges/" + module.id, module.id,
-                      layout.target_anchor_id, e.range);
+    follower_.pipeline().onRange(stamp, now, "uwb/" + module.id + "/ranges/" + module.id, module.id,
+                                 layout.target_anchor_id, e.range);
   }
   for (const sim::AoaEvent& e : events.aoa) {
     const AoaBoard& board = layout.aoa_boards[e.board];
@@ -337,52 +340,28 @@ void ClosedLoop::runLocator(double now) {
   estimate_stamp_ = estimate.status == TargetStatus::kLost ? now : std::max(0.0, estimate.stamp);
   const double range = estimate.position.head<2>().norm();
   const double bearing = std::atan2(estimate.position.y(), estimate.position.x());
-  // The controller's estimate callback: the safety layer first, then the odometry frame.
-  pipeline_.onEstimate(estimate_stamp_, now,
-                       control::estimateQuality(estimate.status, range, bearing));
-  if (track_gate_.accept(estimate.status)) {  // as TargetMotionTracker in the controller nodes
+  // The controller's estimate callback: the follower core, then the odometry frame.
+  const control::EstimateUse use = follower_.onEstimate(
+      estimate_stamp_, now, estimate.status, range, bearing,
+      polarSpread(estimate.position.head<2>(), estimate.covariance.topLeftCorner<2, 2>()),
+      estimate.hypotheses);
+  if (use == control::EstimateUse::kTrackPoint && config_.track_in_odometry) {
     if (const std::optional<Pose2> robot = poseAt(estimate_stamp_)) {
       const double c = std::cos(robot->yaw);
       const double s = std::sin(robot->yaw);
       const Eigen::Vector2d local = estimate.position.head<2>();
       const Eigen::Vector2d in_odom(robot->x + c * local.x() - s * local.y(),
                                     robot->y + s * local.x() + c * local.y());
-      track_.add(estimate_stamp_, robot->position(), in_odom);
-      path_law_.addTarget(in_odom);
+      follower_.addTrackPoint(estimate_stamp_, robot->position(), in_odom);
     }
   }
   estimate_ = std::move(estimate);
 }
 
 void ClosedLoop::runController(double now) {
-  const double dt = 1.0 / config_.controller_rate;
-  control::PipelineResult result;
-  const control::SafetyDecision decision = pipeline_.check(now);
-  if (!decision.may_move) {
-    velocity_law_.reset();
-    path_law_.reset();
-    result = pipeline_.stop(decision.reason);
-  } else {
-    const estimation::LocatorEstimate& e = *estimate_;  // may_move implies an estimate was heard
-    const double range = e.position.head<2>().norm();
-    const double bearing = std::atan2(e.position.y(), e.position.x());
-    const double module_gap = pipeline_.moduleGap(now);
-    const PolarSpread spread =
-        polarSpread(e.position.head<2>(), e.covariance.topLeftCorner<2, 2>());
-    control::LawOutput out;
-    if (config_.controller == FollowController::kVelocity) {
-      const std::optional<double> receding =
-          config_.feed_forward_from_odometry ? track_.recedingSpeed(now) : std::nullopt;
-      out = velocity_law_.step(control::targetPolar(e.status, range, bearing, spread, e.hypotheses,
-                                                    receding, module_gap),
-                               dt);
-    } else {
-      out = path_law_.step(control::targetPolar(e.status, range, bearing, spread, e.hypotheses,
-                                                std::nullopt, module_gap),
-                           poses_.back().pose, track_.speed(now), dt);
-    }
-    result = pipeline_.finish(out, now, dt);
-  }
+  // The path follower knows the robot's pose from TF; the velocity law does not ask.
+  const control::PipelineResult result =
+      follower_.tick(now, 1.0 / config_.controller_rate, poses_.back().pose);
   commands_.push_back(CommandSample{now, result.command, !result.moving});
   command_ = result.command;
   command_time_ = now;

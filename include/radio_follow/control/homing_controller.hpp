@@ -9,6 +9,7 @@
 #include "radio_follow/common/param_source.hpp"
 #include "radio_follow/common/pose2.hpp"
 #include "radio_follow/common/time_policy.hpp"
+#include "radio_follow/control/follow_law.hpp"
 #include "radio_follow/control/follower_state.hpp"
 #include "radio_follow/control/homing.hpp"
 #include "radio_follow/control/rssi_filter.hpp"
@@ -62,7 +63,7 @@ using HomingOutput = LawOutput;  ///< command, state and the sentence to report
 /// Before a goal exists it creeps along the newest bearing at search_speed, so that the
 /// parallax estimate gets its baseline; then it drives to the hybrid goal with eq 15 and
 /// stops once HybridHoming::arrived().
-class HomingController {
+class HomingController : public FollowLaw {
  public:
   /// Validates `params` (throws ParamError).
   explicit HomingController(const HomingControllerParams& params);
@@ -102,6 +103,9 @@ class HomingController {
   /// The command at `now`: waiting without fresh odometry, searching before a goal,
   /// homing with eq 15, zero once arrived.
   HomingOutput compute(double now) const;
+  /// FollowLaw: compute() at the input's time (the homing law keeps its own target from
+  /// the bearings; a safety stop does not make it forget them).
+  LawOutput step(const FollowInput& input, double /*dt*/) override { return compute(input.now); }
 
   /// Forgets the pose, the distance, the bearing and the estimate (homing starts over).
   void reset();

@@ -7,6 +7,7 @@
 
 #include "radio_follow/common/param_source.hpp"
 #include "radio_follow/common/pose2.hpp"
+#include "radio_follow/control/follow_law.hpp"
 #include "radio_follow/control/follower_state.hpp"
 #include "radio_follow/control/pid.hpp"
 #include "radio_follow/control/velocity_law.hpp"
@@ -81,7 +82,7 @@ struct PathFollowParams {
 /// line when that is shorter), the person's ground speed as feed-forward, turning in
 /// place when the goal is behind. Without the robot's pose (no odometry) or with a
 /// direction-only estimate it drives straight at the target with the velocity law.
-class PathFollowLaw {
+class PathFollowLaw : public FollowLaw {
  public:
   /// Both validated by the caller.
   PathFollowLaw(const PathFollowParams& params, const VelocityLawParams& law);
@@ -94,6 +95,13 @@ class PathFollowLaw {
   /// person's ground speed (nullopt: unknown, taken as 0).
   LawOutput step(const TargetPolar& target, const std::optional<Pose2>& robot,
                  std::optional<double> walking_speed, double dt);
+  /// FollowLaw: step() with the input's robot pose and walking speed; waiting without an
+  /// estimate.
+  LawOutput step(const FollowInput& input, double dt) override;
+  void onStopped() override { reset(); }
+  bool addTrackPoint(const Eigen::Vector2d& point) override { return addTarget(point); }
+  /// The common speed caps and stop distance through lawWithCommon (throws ParamError).
+  void setCommon(const CommandPipelineParams& next) override;
   /// New law parameters (live tuning; validated by the caller): the PIDs keep their state.
   void setLawParams(const VelocityLawParams& law);
   /// The safety layer took over: integrators and the arrived state start afresh.

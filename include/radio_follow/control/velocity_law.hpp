@@ -5,6 +5,7 @@
 #include <string>
 
 #include "radio_follow/common/param_source.hpp"
+#include "radio_follow/control/follow_law.hpp"
 #include "radio_follow/control/follower_state.hpp"
 #include "radio_follow/control/pid.hpp"
 #include "radio_follow/control/rate_limiter.hpp"
@@ -70,34 +71,12 @@ struct VelocityLawParams {
   void validate() const;
 };
 
-/// Target as the law sees it: range and bearing in the robot frame.
-struct TargetPolar {
-  double range = 0.0;    ///< m
-  double bearing = 0.0;  ///< rad, CCW from the robot's x axis
-  /// false for HEADING_ONLY estimates: turn towards the target, never drive forward.
-  bool range_valid = true;
-  /// The estimate is DEGRADED: too wide to be OK where it is (see caution()).
-  bool degraded = false;
-  /// 1-sigma spread of the position along the line of sight, m, and of the bearing, rad
-  /// (common/geometry.hpp polarSpread); +inf when unknown.
-  double range_sigma = 0.0;
-  double bearing_sigma = 0.0;
-  /// The locator holds a second hypothesis: the person may be at the mirror image.
-  bool mirror = false;
-  /// The target's ground speed away from the robot along the line of sight, m/s
-  /// (negative: walking towards it); 0 when unknown (no odometry).
-  double receding_speed = 0.0;
-  /// Smallest fresh (calibrated) module range minus safe_distance, m; +inf when no
-  /// range is watched.
-  double module_gap = std::numeric_limits<double>::infinity();
-};
-
 /// Feed-forward of the target's receding speed plus PID on (range - follow_distance) for
 /// speed (see gapSpeed()), PID on the heading error for yaw rate.
 /// It never backs away to grow the gap: the speed is zero, not negative, when the
 /// target is closer than follow_distance. With allow_backwards the reference direction
 /// flips to the robot's rear once the target stayed behind for backwards_cycles cycles.
-class VelocityLaw {
+class VelocityLaw : public FollowLaw {
  public:
   explicit VelocityLaw(const VelocityLawParams& params);
 
@@ -105,6 +84,12 @@ class VelocityLaw {
   /// update() with the state and status text the controller reports: turning to a
   /// direction-only target, arrived, following (slowly when degraded, backwards).
   LawOutput step(const TargetPolar& target, double dt);
+  /// FollowLaw: step() on the newest estimate (its receding speed is the feed-forward);
+  /// waiting without one.
+  LawOutput step(const FollowInput& input, double dt) override;
+  void onStopped() override { reset(); }
+  /// The common speed caps and stop distance through lawWithCommon (throws ParamError).
+  void setCommon(const CommandPipelineParams& next) override;
   /// New parameters (live tuning; validated by the caller): the PIDs keep their state.
   void setParams(const VelocityLawParams& params);
   const VelocityLawParams& params() const { return params_; }

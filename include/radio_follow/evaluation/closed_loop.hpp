@@ -4,14 +4,15 @@
 #include <yaml-cpp/yaml.h>
 
 #include <deque>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/control/command_pipeline.hpp"
-#include "radio_follow/control/follow_inputs.hpp"
 #include "radio_follow/control/follow_metrics.hpp"
+#include "radio_follow/control/follower.hpp"
 #include "radio_follow/control/path_follower.hpp"
 #include "radio_follow/control/target_motion.hpp"
 #include "radio_follow/control/velocity_law.hpp"
@@ -67,9 +68,9 @@ struct ClosedLoopConfig {
   double controller_rate = 20.0;  ///< Hz
   control::VelocityLawParams law;
   control::PathFollowParams path;
-  /// The velocity controller's speed feed-forward from the target's motion in the
-  /// odometry frame (its `odom_frame` parameter non-empty).
-  bool feed_forward_from_odometry = true;
+  /// The controller's `odom_frame` is set: it places the estimates in the odometry frame
+  /// (the target's track: the speed feed-forward, the path follower's path).
+  bool track_in_odometry = true;
   /// The controller's tf_timeout: an estimate newer than the newest odometry pose is
   /// placed with that pose when it is at most this much newer, s.
   double tf_timeout = 0.05;
@@ -159,11 +160,9 @@ class ClosedLoop {
   ClosedLoopConfig config_;
   sim::World world_;
   estimation::Locator locator_;
-  control::CommandPipeline pipeline_;
-  control::VelocityLaw velocity_law_;
-  control::PathFollowLaw path_law_;
-  control::TargetTrack track_;
-  control::TrackGate track_gate_;  ///< which estimates extend track_ and the path law's path
+  /// The controller node's law and core (the same classes the nodes run).
+  std::unique_ptr<control::FollowLaw> law_;
+  control::Follower follower_;
   control::FollowMetrics metrics_;
   Timer locator_timer_;
   Timer controller_timer_;

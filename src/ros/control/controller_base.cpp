@@ -77,10 +77,10 @@ ControllerBase::ControllerBase(ros::NodeHandle& nh, ros::NodeHandle& private_nh,
         p.validate();
         return p;
       }()),
-      pipeline_(common_) {
+      follower_(common_) {
   // The clock decides how far ahead a stamp may be (time_policy.hpp): a few ms between
   // wall clocks, a scheduling delay times the time factor between simulated ones.
-  pipeline_.setFutureTolerance(futureStampTolerance(ros::Time::isSimTime()));
+  follower_.pipeline().setFutureTolerance(futureStampTolerance(ros::Time::isSimTime()));
   warnUncalibrated();
 }
 
@@ -131,16 +131,17 @@ void ControllerBase::clearRunningMarker() {
   private_nh_.deleteParam(kRunningMarker);
 }
 
-void ControllerBase::start() {
+void ControllerBase::start(control::FollowLaw& law) {
   if (!params_checked_) {
     throw std::logic_error("ControllerBase::start() before requireKnownParams()");
   }
+  follower_.setLaw(law);
   cmd_pub_ = nh_.advertise<geometry_msgs::Twist>(common_.cmd_vel_topic, 1);
   // A callback that throws (a stamp no ros::Time arithmetic can hold, a bug) stops the
   // robot at once and for hold_time; the node keeps running and keeps publishing.
   barrier_.setFaultAction([this](const std::string& /*where*/, const std::string& /*what*/) {
     const std::lock_guard<std::mutex> lock(safety_mutex_);
-    pipeline_.onFault(ros::Time::now().toSec());
+    follower_.pipeline().onFault(ros::Time::now().toSec());
     publishStopLocked(control::StopReason::kInternalFault);
   });
   status_pub_ = private_nh_.advertise<FollowerStatus>("status", 10, true);
@@ -185,9 +186,10 @@ void ControllerBase::start() {
 
   reconfigure_ =
       makeControllerReconfigure(private_nh_, common_, [this](const ControllerCommonParams& params) {
-        onCommonChange(params);  // the law checks the new limits first; throws to refuse
         const std::lock_guard<std::mutex> lock(safety_mutex_);
-        pipeline_.setParams(params);  // validated by the caller: no partial update
+        // Validated by the caller; the law checks the new limits first and throws to
+        // refuse: no partial update.
+        follower_.setCommon(params);
         common_ = params;
       });
 
@@ -215,18 +217,38 @@ bool ControllerBase::noteEstimate(const ros::Time& stamp, control::EstimateQuali
   first_estimate_("the target input (estimate or bearing)");
   const ros::Time now = ros::Time::now();
   const std::lock_guard<std::mutex> lock(safety_mutex_);
-  if (pipeline_.onEstimate((stamp.isZero() ? now : stamp).toSec(), now.toSec(), quality)) {
+  if (follower_.onEstimate((stamp.isZero() ? now : stamp).toSec(), now.toSec(), quality)) {
     return true;
   }
-  // Seconds as double: a stamp 2^32 s ahead overflows ros::Duration (issue 34).
-  ROS_WARN_THROTTLE(2.0, "%s: estimate stamped %.3f s ahead of this node's clock refused; stopping",
-                    ros::this_node::getName().c_str(), stamp.toSec() - now.toSec());
+  warnFutureEstimate(stamp, now);
   return false;
 }
 
-double ControllerBase::moduleGap(const ros::Time& now) const {
+control::EstimateUse ControllerBase::noteEstimate(const ros::Time& stamp, TargetStatus status,
+                                                  double range, double bearing,
+                                                  const PolarSpread& spread, int hypotheses) {
+  first_estimate_("the target input (estimate or bearing)");
+  const ros::Time now = ros::Time::now();
   const std::lock_guard<std::mutex> lock(safety_mutex_);
-  return pipeline_.moduleGap(now.toSec());
+  const control::EstimateUse use =
+      follower_.onEstimate((stamp.isZero() ? now : stamp).toSec(), now.toSec(), status, range,
+                           bearing, spread, hypotheses);
+  if (use == control::EstimateUse::kRefused) {
+    warnFutureEstimate(stamp, now);
+  }
+  return use;
+}
+
+void ControllerBase::warnFutureEstimate(const ros::Time& stamp, const ros::Time& now) const {
+  // Seconds as double: a stamp 2^32 s ahead overflows ros::Duration (issue 34).
+  ROS_WARN_THROTTLE(2.0, "%s: estimate stamped %.3f s ahead of this node's clock refused; stopping",
+                    ros::this_node::getName().c_str(), stamp.toSec() - now.toSec());
+}
+
+bool ControllerBase::addTrackPoint(const ros::Time& stamp, const Eigen::Vector2d& robot,
+                                   const Eigen::Vector2d& target) {
+  const std::lock_guard<std::mutex> lock(safety_mutex_);
+  return follower_.addTrackPoint(stamp.toSec(), robot, target);
 }
 
 void ControllerBase::onRanges(const std::string& topic, const UwbRanges::ConstPtr& msg) {
@@ -235,14 +257,14 @@ void ControllerBase::onRanges(const std::string& topic, const UwbRanges::ConstPt
   const double stamp = (msg->header.stamp.isZero() ? now : msg->header.stamp).toSec();
   first_range_.at(topic)(topic);
   const std::lock_guard<std::mutex> lock(safety_mutex_);
-  const std::uint64_t future_before = pipeline_.monitor().time().futureRefused();
-  const std::uint64_t implausible_before = pipeline_.monitor().implausibleRanges();
+  const std::uint64_t future_before = follower_.pipeline().monitor().time().futureRefused();
+  const std::uint64_t implausible_before = follower_.pipeline().monitor().implausibleRanges();
   bool violation = false;
   for (const auto& r : msg->ranges) {
-    violation |= pipeline_.onRange(stamp, now.toSec(), topic + "/" + msg->tag_id, msg->tag_id,
-                                   r.anchor_id, r.range);
+    violation |= follower_.pipeline().onRange(stamp, now.toSec(), topic + "/" + msg->tag_id,
+                                              msg->tag_id, r.anchor_id, r.range);
   }
-  const bool future = pipeline_.monitor().time().futureRefused() != future_before;
+  const bool future = follower_.pipeline().monitor().time().futureRefused() != future_before;
   if (future) {
     ROS_WARN_THROTTLE(2.0, "%s: range on %s stamped %.3f s ahead of this node's clock refused",
                       ros::this_node::getName().c_str(), topic.c_str(), stamp - now.toSec());
@@ -250,14 +272,14 @@ void ControllerBase::onRanges(const std::string& topic, const UwbRanges::ConstPt
   // Do not wait for the next tick: a person stepping in front of the robot must stop
   // it within one range update. The law's own reset (onStopped) follows on the main
   // thread at the next tick, which sees the same verdict.
-  const bool implausible = pipeline_.monitor().implausibleRanges() != implausible_before;
+  const bool implausible = follower_.pipeline().monitor().implausibleRanges() != implausible_before;
   if (implausible) {
     ROS_WARN_THROTTLE(2.0,
                       "%s: range on %s that no module can report (non-finite, negative or "
                       "beyond %.0f m) refused; stopping",
                       ros::this_node::getName().c_str(), topic.c_str(), kMaxUwbRange);
   }
-  if (violation && pipeline_.enabled()) {
+  if (violation && follower_.pipeline().enabled()) {
     publishStopLocked(future        ? control::StopReason::kFutureStamp
                       : implausible ? control::StopReason::kImplausibleRange
                                     : control::StopReason::kTooClose);
@@ -269,14 +291,14 @@ void ControllerBase::onScan(const sensor_msgs::LaserScan::ConstPtr& msg) {
   double strip_half_width = 0.0;
   {
     const std::lock_guard<std::mutex> lock(safety_mutex_);
-    strip_half_width = pipeline_.params().avoidance.side_threshold;
+    strip_half_width = follower_.pipeline().params().avoidance.side_threshold;
   }
   // The sectors outside the lock: a stop from the range callback does not wait for a scan.
   const control::SectorRanges sectors =
       control::scanSectors(msg->ranges, msg->angle_min, msg->angle_increment, msg->range_min,
                            msg->range_max, strip_half_width);
   const std::lock_guard<std::mutex> lock(safety_mutex_);
-  pipeline_.onScan(sectors, stamp.toSec());
+  follower_.pipeline().onScan(sectors, stamp.toSec());
 }
 
 void ControllerBase::onEnableTopic(const std_msgs::Bool::ConstPtr& msg) {
@@ -294,7 +316,7 @@ bool ControllerBase::onEnableService(std_srvs::SetBool::Request& req,
 void ControllerBase::setEnabled(bool enabled) {
   {
     const std::lock_guard<std::mutex> lock(safety_mutex_);
-    pipeline_.setEnabled(enabled);
+    follower_.pipeline().setEnabled(enabled);
   }
   if (!enabled) {
     stopNow(control::StopReason::kDisabled);
@@ -304,13 +326,12 @@ void ControllerBase::setEnabled(bool enabled) {
 }
 
 void ControllerBase::stopNow(control::StopReason reason) {
-  onStopped();
   const std::lock_guard<std::mutex> lock(safety_mutex_);
-  publishStopLocked(reason);
+  publishLocked(follower_.stop(reason));
 }
 
 void ControllerBase::publishStopLocked(control::StopReason reason) {
-  publishLocked(pipeline_.stop(reason));
+  publishLocked(follower_.pipeline().stop(reason));
 }
 
 void ControllerBase::publishLocked(const control::PipelineResult& result) {
@@ -342,32 +363,22 @@ void ControllerBase::onTick(const ros::TimerEvent& event) {
     dt = 1.0 / common_.rate;
   }
 
-  control::SafetyDecision decision;
+  // TF before the lock: a range must not wait for a lookup to stop the robot.
+  const std::optional<Pose2> robot = robotPose();
+  control::PipelineResult result;
   {
     const std::lock_guard<std::mutex> lock(safety_mutex_);
-    decision = pipeline_.check(now.toSec());
-  }
-  if (!decision.may_move) {
-    stopNow(decision.reason);
-    ++stopped_ticks_;
-    diagnostics_.update();
-    return;
-  }
-
-  // The law runs without the lock: a range may stop the robot meanwhile, and the
-  // pipeline takes the verdict again at the time of sending.
-  const Output out = compute(now, dt);
-  bool scan_missing = false;
-  {
-    const std::lock_guard<std::mutex> lock(safety_mutex_);
-    const control::PipelineResult result = pipeline_.finish(out, ros::Time::now().toSec(), dt);
-    scan_missing = result.scan_missing;
+    result = follower_.tick(now.toSec(), dt, robot);
     publishLocked(result);
   }
-  if (scan_missing) {
+  if (!result.moving) {
+    ++stopped_ticks_;
+  }
+  if (result.scan_missing) {
     ROS_WARN_THROTTLE(5.0, "%s: no laser scan within %.2f s, forward motion blocked",
                       ros::this_node::getName().c_str(), common_.scan_timeout);
   }
+  afterTick(now);
   diagnostics_.update();
 }
 
@@ -408,9 +419,10 @@ void ControllerBase::diagnose(diagnostic_updater::DiagnosticStatusWrapper& statu
   status.add("state", control::toString(state_));
   status.add("cmd_vel topic", cmd_pub_.getTopic());
   status.add("stopped ticks", stopped_ticks_);
-  status.add("stamps from the future refused", pipeline_.monitor().time().futureRefused());
-  status.add("clock jumps back", pipeline_.monitor().time().clockJumps());
-  status.add("implausible ranges refused", pipeline_.monitor().implausibleRanges());
+  status.add("stamps from the future refused",
+             follower_.pipeline().monitor().time().futureRefused());
+  status.add("clock jumps back", follower_.pipeline().monitor().time().clockJumps());
+  status.add("implausible ranges refused", follower_.pipeline().monitor().implausibleRanges());
   status.add("callback faults", barrier_.faults());
   if (barrier_.faults() > 0) {
     status.add("last callback fault", barrier_.lastFault());

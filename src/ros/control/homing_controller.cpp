@@ -38,7 +38,7 @@ HomingControllerNode::HomingControllerNode(ros::NodeHandle& nh, ros::NodeHandle&
     distance_sub_ = barrier_.subscribe(nh_, params_.distance_range_topic, 10,
                                        &HomingControllerNode::onDistanceRanges, this);
   }
-  start();
+  start(law_);
 }
 
 void HomingControllerNode::onOdom(const nav_msgs::Odometry::ConstPtr& msg) {
@@ -110,15 +110,6 @@ void HomingControllerNode::onBearing(const AoaBearing::ConstPtr& msg) {
     goal.pose.orientation.w = std::cos(0.5 * goal_pose->yaw);
     goal_pub_.publish(goal);
   }
-}
-
-ControllerBase::Output HomingControllerNode::compute(const ros::Time& now, double /*dt*/) {
-  const control::HomingOutput law = law_.compute(now.toSec());
-  Output out;
-  out.command = law.command;
-  out.state = law.state;
-  out.text = law.text;
-  return out;
 }
 
 }  // namespace radio_follow

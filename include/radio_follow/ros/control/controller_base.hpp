@@ -19,6 +19,7 @@
 #include "radio_follow/UwbRanges.h"
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/control/command_pipeline.hpp"
+#include "radio_follow/control/follower.hpp"
 #include "radio_follow/control/follower_state.hpp"
 #include "radio_follow/ros/common/callback_barrier.hpp"
 #include "radio_follow/ros/common/output_diagnostic.hpp"
@@ -53,14 +54,15 @@ struct ControllerCommonParams : control::CommandPipelineParams {
   void validate() const;
 };
 
-/// The ROS side of the command pipeline (control::CommandPipeline) shared by the three
+/// The ROS side of the follower core (control::Follower) shared by the three
 /// controllers: raw-range safety stop on its own thread (published from the range
 /// callback, not only at the next tick), enable service and topic, status on change, the
-/// laser scan, cmd_vel at a fixed rate, and a last zero command on SIGINT/SIGTERM.
+/// laser scan, the tick and cmd_vel at a fixed rate, and a last zero command on
+/// SIGINT/SIGTERM.
 ///
-/// A derived node loads and validates its own parameters, creates its subscribers and
-/// then calls start(); the base calls compute() on every tick in which the safety
-/// monitor allows motion.
+/// A derived node loads and validates its own parameters and its law, creates its
+/// subscribers and then calls start(law); every tick runs the core (the safety verdict,
+/// the law, the limits) and sends what it decides.
 class ControllerBase {
  public:
   virtual ~ControllerBase();
@@ -71,9 +73,6 @@ class ControllerBase {
   ControllerBase& operator=(const ControllerBase&) = delete;
 
  protected:
-  /// What the control law wants this tick.
-  using Output = control::LawOutput;
-
   /// Loads and validates the common parameters (throws ParamError); subscribes nothing.
   /// `watch_ranges_default` decides whether ranges are watched when ~range_topics is unset.
   ControllerBase(ros::NodeHandle& nh, ros::NodeHandle& private_nh, bool watch_ranges_default);
@@ -85,31 +84,33 @@ class ControllerBase {
   /// its first subscriber. start() refuses to run without it.
   void requireKnownParams();
 
-  /// Creates the shared subscribers, service, publishers and timer.
-  void start();
+  /// Creates the shared subscribers, service, publishers and timer; every tick runs
+  /// `law` (owned by the derived node; it lives as long as the node).
+  void start(control::FollowLaw& law);
 
-  /// The control law; `dt` seconds since the previous tick.
-  virtual Output compute(const ros::Time& now, double dt) = 0;
-  /// Called when the safety layer takes over, so laws can reset their integrators.
-  virtual void onStopped() {}
-  /// Live tuning is about to install `next` common parameters: a law that depends on
-  /// them (safe_distance, max_linear) validates and takes them, or throws ParamError to
-  /// refuse the whole change.
-  virtual void onCommonChange(const ControllerCommonParams& /*next*/) {}
+  /// The robot's pose in the odometry frame for this tick's law, read before the core
+  /// runs (the path follower's TF lookup); nullopt: unknown.
+  virtual std::optional<Pose2> robotPose() { return std::nullopt; }
+  /// After each tick, on the main thread (the path follower publishes its path).
+  virtual void afterTick(const ros::Time& /*now*/) {}
 
-  /// Feeds the safety monitor with an estimate (or a bearing, for homing). Returns false
-  /// when it was refused (stamped in the future: the robot stops; TimePolicy).
+  /// Feeds the safety monitor with an input that says only whether the target is usable
+  /// (a bearing, for homing). Returns false when it was refused (stamped in the future:
+  /// the robot stops; TimePolicy).
   bool noteEstimate(const ros::Time& stamp, control::EstimateQuality quality);
+  /// The locator's estimate (robot frame) into the core (control::Follower::onEstimate).
+  control::EstimateUse noteEstimate(const ros::Time& stamp, TargetStatus status, double range,
+                                    double bearing, const PolarSpread& spread, int hypotheses);
+  /// A track point of the newest estimate placed in the odometry frame
+  /// (control::Follower::addTrackPoint); true when the law kept it.
+  bool addTrackPoint(const ros::Time& stamp, const Eigen::Vector2d& robot,
+                     const Eigen::Vector2d& target);
 
   const ControllerCommonParams& common() const { return common_; }
 
   /// Every subscriber and timer of a controller goes through it: a callback that throws
   /// stops the robot for hold_time (StopReason::kInternalFault) and the node goes on.
   CallbackBarrier barrier_;
-
-  /// Nearest fresh (calibrated) module range minus safe_distance at `now`, m; +inf when
-  /// ranges are not watched or none is fresh (the safety layer stops the robot then).
-  double moduleGap(const ros::Time& now) const;
 
   ros::NodeHandle nh_;
   ros::NodeHandle private_nh_;
@@ -124,11 +125,13 @@ class ControllerBase {
   bool onEnableService(std_srvs::SetBool::Request& req, std_srvs::SetBool::Response& res);
   void setEnabled(bool enabled);
   void onTick(const ros::TimerEvent& event);
+  void warnFutureEstimate(const ros::Time& stamp, const ros::Time& now) const;
   /// Handles SIGINT/SIGTERM (flag set by the signal handler): last zero, then shutdown.
   void onStopCheck(const ros::WallTimerEvent& event);
-  /// Main thread: resets the law (onStopped) and publishes the stop.
+  /// Main thread: the law forgets its integrators (Follower::stop), the stop goes out.
   void stopNow(control::StopReason reason);
-  /// Any thread, safety_mutex_ held: zero command and status, limiter reset.
+  /// Any thread, safety_mutex_ held: zero command and status, limiter reset. The law is
+  /// the main thread's: it forgets its integrators at the next tick, which sees the stop.
   void publishStopLocked(control::StopReason reason);
   /// safety_mutex_ held: sends what the pipeline decided.
   void publishLocked(const control::PipelineResult& result);
@@ -142,13 +145,13 @@ class ControllerBase {
 
   ParamReader params_in_;
   /// Guards what the safety thread (range callbacks) and the main thread share: the
-  /// pipeline, the published state, common_ during live tuning.
+  /// follower core, the published state, common_ during live tuning.
   mutable std::mutex safety_mutex_;
   ros::CallbackQueue safety_queue_;
   std::unique_ptr<ros::AsyncSpinner> safety_spinner_;
   bool params_checked_ = false;
   ControllerCommonParams common_;
-  control::CommandPipeline pipeline_;
+  control::Follower follower_;
   control::StatusTracker status_tracker_;
   control::FollowerState state_ = control::FollowerState::kDisabled;
   std::string status_text_;

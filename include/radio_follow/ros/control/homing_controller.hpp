@@ -34,7 +34,6 @@ class HomingControllerNode : public ControllerBase {
   HomingControllerNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh);
 
  private:
-  Output compute(const ros::Time& now, double dt) override;
   void onBearing(const AoaBearing::ConstPtr& msg);
   void onOdom(const nav_msgs::Odometry::ConstPtr& msg);
   void onDistanceRanges(const UwbRanges::ConstPtr& msg);
