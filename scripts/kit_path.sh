@@ -3,7 +3,8 @@
 # A new user's path on the simulator, end to end (issue 33; doc/deployment.md steps 3-8):
 #   1. the small kit's layout as shipped (config/layouts/small_kit.yaml: two modules and
 #      one board, uncalibrated), its devices simulated as serial ports and read by the
-#      drivers robot.launch starts (layout_drivers);
+#      drivers robot.launch starts (layout_drivers), under the work directory (it may run
+#      beside other tests);
 #   2. a recorded calibration walk, the person standing at tape points around the standing
 #      robot (test/ros/kit_path/calibration_walk.launch, record.launch);
 #   3. calibrate_layout --points with the shipped example points file
@@ -25,7 +26,7 @@ layout="$repo/config/layouts/small_kit.yaml"
 echo "kit_path: 1-2. calibration walk of $layout (log $work/walk.log)"
 rm -f "$work"/walk*.bag
 if ! timeout 600 roslaunch -p "$port" "$repo/test/ros/kit_path/calibration_walk.launch" \
-  layout_file:="$layout" prefix:="$work/walk" >"$work/walk.log" 2>&1; then
+  layout_file:="$layout" prefix:="$work/walk" serial_dir:="$work/devices" >"$work/walk.log" 2>&1; then
   echo "kit_path: the calibration walk failed (log $work/walk.log)" >&2
   exit 1
 fi
@@ -59,7 +60,8 @@ echo "kit_path: 3. calibrate_layout --points"
 
 echo "kit_path: 4. closed loop on the calibrated layout (scripts/demo.sh serial:=true)"
 RF_DEMO_PORT="$port" RF_REPORT_DIR="$work/report" bash "$repo/scripts/demo.sh" \
-  layout_file:="$work/small_kit_calibrated.yaml" serial:=true scenario:=straight_walk \
+  layout_file:="$work/small_kit_calibrated.yaml" serial:=true serial_dir:="$work/devices" \
+  scenario:=straight_walk \
   >"$work/demo.log" 2>&1 || {
   tail -n 5 "$work/demo.log" >&2
   echo "kit_path: the closed loop on the calibrated layout failed (log $work/demo.log)" >&2

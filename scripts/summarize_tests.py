@@ -8,18 +8,25 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 
 
-def print_slowest(files, count=12):
-    """run_tests runs one suite at a time (-j1) and each writes its file when it ends, so
-    the time between one file and the one before it is about that suite's wall time
-    (build steps run_tests makes between suites included)."""
-    if len(files) < 2:
+def suite_seconds(path, tree):
+    """The wall time a result file records for its whole suite: a gtest binary's
+    (testsuites time) or a rostest's (launch, nodes and test node: testsuite time); None
+    for a rostest's test-node file (rosunit-*), which its rostest file covers."""
+    if path.name.startswith("rosunit-"):
+        return None
+    try:
+        return float(tree.getroot().get("time", ""))
+    except ValueError:
+        return None
+
+
+def print_slowest(times, count=12):
+    """run_tests may run suites side by side: each suite's own recorded time, and their
+    sum, which against run_tests' wall time shows what running them at once saves."""
+    if not times:
         return
-    ordered = sorted(files, key=lambda p: p.stat().st_mtime)
-    spans = [(b.stat().st_mtime - a.stat().st_mtime, b.name) for a, b in zip(ordered, ordered[1:])]
-    total = ordered[-1].stat().st_mtime - ordered[0].stat().st_mtime
-    print(f"slowest suites (time since the previous result file; {total:.0f} s from the "
-          f"first file to the last):")
-    for seconds, name in sorted(spans, reverse=True)[:count]:
+    print(f"slowest suites ({sum(s for s, _ in times):.0f} s of suite time in all):")
+    for seconds, name in sorted(times, reverse=True)[:count]:
         print(f"  {seconds:6.0f} s  {name}")
 
 
@@ -28,12 +35,16 @@ def main(results_dir: str) -> int:
     files = sorted(root.glob("*.xml")) if root.is_dir() else []
     passed = failed = skipped = 0
     broken = []
+    times = []
     for path in files:
         try:
             tree = ET.parse(path)
         except ET.ParseError as e:
             broken.append(f"{path.name}: unreadable ({e})")
             continue
+        seconds = suite_seconds(path, tree)
+        if seconds is not None:
+            times.append((seconds, path.name))
         for case in tree.iter("testcase"):
             name = f"{case.get('classname', '')}.{case.get('name', '')}"
             if case.find("failure") is not None or case.find("error") is not None:
@@ -49,7 +60,7 @@ def main(results_dir: str) -> int:
                 broken.append(f"{path.name}: suite {suite.get('name')} errored before any test")
     for line in broken:
         print(f"ERROR   {line}")
-    print_slowest(files)
+    print_slowest(times)
     print(f"test result files: {len(files)} in {results_dir}")
     total_failed = failed + len(broken)
     print(f"{passed} passed, {total_failed} failed, {skipped} skipped")

@@ -7,8 +7,6 @@
 namespace radio_follow::drivers {
 namespace {
 
-constexpr std::string_view kPrompt = "dwm>";
-
 // An integer is a well-formed quality field; one outside 0..100 is a device fault, which
 // sets `implausible` (the line is then rejected as such, not as malformed).
 bool parseQuality(std::string_view field, std::uint8_t& out, bool& implausible) {
@@ -208,7 +206,7 @@ const char* toString(DwmLineStatus status) {
 DwmLineStatus decodeDwmLine(std::string_view line, DwmMeasurement& out) {
   out.clear();
   line = trimSpaces(line);
-  if (startsWith(line, kPrompt)) {
+  if (startsWith(line, kDwmPrompt)) {
     // "dwm> les" is the echo of a command we (or a user) typed: never data.
     return DwmLineStatus::kIgnored;
   }

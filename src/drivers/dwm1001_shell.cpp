@@ -3,17 +3,18 @@
 
 #include <utility>
 
+#include "radio_follow/drivers/dwm1001_decoder.hpp"
+
 namespace radio_follow::drivers {
 namespace {
 
-constexpr std::string_view kPrompt = "dwm>";
 constexpr std::string_view kLabel = "label=";
 
 bool isPrompt(std::string_view text) {
   while (!text.empty() && text.front() == ' ') {
     text.remove_prefix(1);
   }
-  return text.substr(0, kPrompt.size()) == kPrompt;
+  return text.substr(0, kDwmPrompt.size()) == kDwmPrompt;
 }
 
 }  // namespace

@@ -15,7 +15,7 @@ namespace radio_follow {
 namespace estimation {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 constexpr double kTie = 1e-12;  // m: scores closer than this are equal
 
 /// sqrt(trace CRLB) from a summed information matrix; infinity when unobservable.
@@ -30,12 +30,12 @@ double pointBound(const Eigen::Matrix3d& info, bool planar) {
     const double largest = 0.5 * (a + c + disc);
     const double smallest = 0.5 * (a + c - disc);
     if (!(largest > 0.0) || smallest < 1e-10 * largest) {
-      return kInf;
+      return kUnbounded;
     }
     return std::sqrt((a + c) / (a * c - b * b));
   }
   const auto crlb = positionCrlb(info, false);
-  return crlb ? std::sqrt(crlb->trace()) : kInf;
+  return crlb ? std::sqrt(crlb->trace()) : kUnbounded;
 }
 
 PlacementScore scoreFromInformation(const PlacementProblem& problem,
@@ -149,8 +149,8 @@ class Enumerator {
               std::vector<Eigen::Matrix3d>(p.targets.size(), Eigen::Matrix3d::Zero())) {}
 
   SearchResult run() {
-    result_.score.objective = kInf;
-    result_.score.mean = kInf;
+    result_.score.objective = kUnbounded;
+    result_.score.mean = kUnbounded;
     visit(0);
     return result_;
   }

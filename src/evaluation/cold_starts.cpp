@@ -17,8 +17,6 @@ namespace radio_follow {
 namespace evaluation {
 namespace {
 
-/// The locator's update period, s.
-constexpr double kUpdatePeriod = 0.05;
 /// A mirror image closer than this to the person is no wrong side, m.
 constexpr double kMinMirrorSeparation = 1.0;
 
@@ -73,7 +71,7 @@ ColdStartResult runColdStarts(const Layout& layout, sim::WorldConfig world,
     double longest = 0.0;
     double longest_start = 0.0;
     bool usable_seen = false;
-    for (double now = kUpdatePeriod; now <= params.duration + 1e-9; now += kUpdatePeriod) {
+    for (double now = kLocatorUpdatePeriod; now <= params.duration + 1e-9; now += kLocatorUpdatePeriod) {
       sensors.feed(estimator, now, at_target, rng);
       const estimation::LocatorEstimate e = estimator.update(now);
       if (params.observer) {
@@ -91,10 +89,10 @@ ColdStartResult runColdStarts(const Layout& layout, sim::WorldConfig world,
       }
       const double to_target = (e.position - target).head<2>().norm();
       const bool on_mirror = has_mirror && (e.position - mirror).head<2>().norm() < to_target;
-      mirror_run = on_mirror ? mirror_run + kUpdatePeriod : 0.0;
+      mirror_run = on_mirror ? mirror_run + kLocatorUpdatePeriod : 0.0;
       if (mirror_run > longest) {
         longest = mirror_run;
-        longest_start = now - mirror_run + kUpdatePeriod;
+        longest_start = now - mirror_run + kLocatorUpdatePeriod;
       }
       if (now >= 1.0) {
         errors.push_back(to_target);

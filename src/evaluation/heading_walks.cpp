@@ -14,9 +14,6 @@ namespace radio_follow {
 namespace evaluation {
 namespace {
 
-/// The locator's update period, s (config/locator.yaml's rate, 20 Hz).
-constexpr double kUpdatePeriod = 0.05;
-
 /// The person's path: positions at key times, straight lines between them.
 struct Keyframe {
   double t;
@@ -113,7 +110,7 @@ HeadingWalkResult runHeadingWalks(const Layout& layout, sim::WorldConfig world,
       return Eigen::Vector3d(p.x(), p.y(), locator.height);
     };
     double last_error = std::nan("");
-    for (double now = kUpdatePeriod; now <= params.duration + 1e-9; now += kUpdatePeriod) {
+    for (double now = kLocatorUpdatePeriod; now <= params.duration + 1e-9; now += kLocatorUpdatePeriod) {
       sensors.feed(estimator, now, target, rng);
       const estimation::LocatorEstimate e = estimator.update(now);
       if (now < params.settle) {

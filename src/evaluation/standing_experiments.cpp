@@ -13,12 +13,6 @@
 
 namespace radio_follow {
 namespace evaluation {
-namespace {
-
-/// The locator's update period, s (config/locator.yaml's rate, 20 Hz).
-constexpr double kUpdatePeriod = 0.05;
-
-}  // namespace
 
 void StaticAccuracyParams::validate() const {
   require(!distances.empty(), "distances", distances.size(), "at least one distance");
@@ -52,7 +46,7 @@ std::vector<StaticPoint> runStaticAccuracy(const Layout& layout, sim::WorldConfi
       Eigen::Vector2d sum_sq = Eigen::Vector2d::Zero();
       std::size_t used = 0;
       std::size_t updates = 0;
-      for (double now = kUpdatePeriod; now <= params.duration + 1e-9; now += kUpdatePeriod) {
+      for (double now = kLocatorUpdatePeriod; now <= params.duration + 1e-9; now += kLocatorUpdatePeriod) {
         sensors.feed(estimator, now, at_target, rng);
         const estimation::LocatorEstimate e = estimator.update(now);
         if (now < params.settle) {
@@ -100,7 +94,7 @@ std::vector<WalkSample> runWalkAround(const Layout& layout, sim::WorldConfig wor
     return Eigen::Vector3d(p.x, p.y, locator.height);
   };
   std::vector<WalkSample> samples;
-  for (double now = kUpdatePeriod; now <= duration + 1e-9; now += kUpdatePeriod) {
+  for (double now = kLocatorUpdatePeriod; now <= duration + 1e-9; now += kLocatorUpdatePeriod) {
     sensors.feed(estimator, now, at_target, rng);
     const estimation::LocatorEstimate e = estimator.update(now);
     if (now < params.settle) {

@@ -8,6 +8,9 @@
 
 namespace radio_follow::drivers {
 
+/// The DWM1001 shell's prompt, at the start of a line.
+constexpr std::string_view kDwmPrompt = "dwm>";
+
 /// One anchor's entry in a DWM1001 tag output line.
 struct DwmAnchorRange {
   std::string id;  ///< 4 hex digits, upper case, e.g. "0CA8"

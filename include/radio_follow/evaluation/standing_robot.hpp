@@ -17,6 +17,9 @@
 namespace radio_follow {
 namespace evaluation {
 
+/// The locator node's update period in the lab's open-loop runs (its shipped 20 Hz), s.
+constexpr double kLocatorUpdatePeriod = 0.05;
+
 /// One range or bearing the standing robot's sensors delivered, as the locator got it.
 struct SensorReading {
   enum class Kind { kRange, kBearing };

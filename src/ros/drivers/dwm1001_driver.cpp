@@ -17,7 +17,7 @@ namespace {
 // module had queued. 4096 lines are 400 s of the module's output; in the rostest
 // driver_burst (doc/nodes/dwm1001_driver.md) they absorb 200,000 lines at 20,000 lines/s
 // and bursts of 30 without a loss.
-constexpr std::size_t kQueueDepth = 4096;
+constexpr std::size_t kRangeQueueDepth = 4096;
 
 // The module's top update rate (lines/s): more on `ranges` is a backlog arriving.
 constexpr double kMaxLineRate = 10.0;
@@ -71,11 +71,11 @@ Dwm1001DriverNode::Dwm1001DriverNode(ros::NodeHandle& nh, ros::NodeHandle& priva
 Dwm1001DriverNode::Dwm1001DriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh,
                                      const Params& params)
     : QueuedSerialLineDriver(nh, private_nh, params, "dwm1001 " + params.port, hardwareId(params),
-                             kQueueDepth),
+                             kRangeQueueDepth),
       params_(params),
       shell_(params.output_mode, params.shell_timeout) {
-  ranges_pub_ = nh.advertise<UwbRanges>("ranges", kQueueDepth);
-  location_pub_ = nh.advertise<UwbTagLocation>("tag_location", kQueueDepth);
+  ranges_pub_ = nh.advertise<UwbRanges>("ranges", kRangeQueueDepth);
+  location_pub_ = nh.advertise<UwbTagLocation>("tag_location", kRangeQueueDepth);
   ranges_output_ = &watchOutput(ranges_pub_, kMaxLineRate);
   // A module may give no position: no lower rate on tag_location.
   location_output_ = &watchOutput(location_pub_, kMaxLineRate, false);

@@ -14,7 +14,7 @@ namespace {
 // receive buffer (212 KiB by default, a few hundred reports) or the grouper (64 open
 // blinks, emitted at once when their window passes) hands over at once. 1024 blinks are
 // 10 s of ten tags at 10 Hz.
-constexpr std::size_t kQueueDepth = 1024;
+constexpr std::size_t kBlinkQueueDepth = 1024;
 
 // Blinks/s of ten tags at 10 Hz: more on `measurements` is a backlog arriving.
 constexpr double kMaxBlinkRate = 100.0;
@@ -26,9 +26,9 @@ TdoaDriverNode::TdoaDriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
   receiver_ =
       std::make_unique<drivers::TdoaReceiver>(params_.differenceConfig(), params_.group_window);
 
-  pub_ = nh.advertise<TdoaMeasurements>("measurements", kQueueDepth);
+  pub_ = nh.advertise<TdoaMeasurements>("measurements", kBlinkQueueDepth);
   queue_ = std::make_unique<drivers::DeliveryQueue<TdoaMeasurements>>(
-      kQueueDepth, [this](TdoaMeasurements& msg) {
+      kBlinkQueueDepth, [this](TdoaMeasurements& msg) {
         barrier_.run("publish", [&] {
           pub_.publish(msg);
           output_diagnostic_->tick(msg.header.stamp);

@@ -17,7 +17,7 @@ namespace {
 // tty buffers (up to 640 KiB) while the reader or a subscriber was held up. 4096 events
 // are 80 s of a busy board; in the rostest driver_burst (doc/nodes/ublox_aoa_driver.md)
 // they absorb 200,000 lines at 20,000 lines/s and bursts of 30 without a loss.
-constexpr std::size_t kQueueDepth = 4096;
+constexpr std::size_t kBearingQueueDepth = 4096;
 
 // Events/s of a busy board (several tags): more on `bearing` is a backlog arriving.
 constexpr double kMaxEventRate = 100.0;
@@ -54,9 +54,9 @@ UbloxAoaDriverNode::UbloxAoaDriverNode(ros::NodeHandle& nh, ros::NodeHandle& pri
 UbloxAoaDriverNode::UbloxAoaDriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh,
                                        const Params& params)
     : QueuedSerialLineDriver(nh, private_nh, params, "ublox aoa " + params.port,
-                             params.port + " (board " + params.frame_id + ")", kQueueDepth),
+                             params.port + " (board " + params.frame_id + ")", kBearingQueueDepth),
       params_(params) {
-  bearing_pub_ = nh.advertise<AoaBearing>("bearing", kQueueDepth);
+  bearing_pub_ = nh.advertise<AoaBearing>("bearing", kBearingQueueDepth);
   bearing_output_ = &watchOutput(bearing_pub_, kMaxEventRate);
   start();
 }
