@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../../support/shipped_layout.hpp"
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/estimation/synthetic_observations.hpp"
 
@@ -10,15 +11,11 @@ namespace radio_follow {
 namespace estimation {
 namespace {
 
-Layout layoutFile(const std::string& name) {
-  return loadLayoutFile(std::string(RF_CONFIG_DIR) + "/layouts/" + name);
-}
-
 class TrilaterationQuadrants : public ::testing::TestWithParam<double> {};
 
 TEST_P(TrilaterationQuadrants, RecoversNoiseFreeTargetInEveryDirection) {
   for (const char* name : {"spot_twr.yaml", "tracked.yaml"}) {
-    const Layout layout = layoutFile(name);
+    const Layout layout = test::shippedLayout(name);
     InitializerConfig config;
     config.height = 1.1;
     for (double distance : {1.0, 4.0, 10.0}) {
@@ -130,7 +127,7 @@ TEST(Trilateration, CollinearModulesAreRejected) {
 }
 
 TEST(MultiStart, BearingCandidateComesFirstAtTheRange) {
-  const Layout layout = layoutFile("cube.yaml");
+  const Layout layout = test::shippedLayout("cube.yaml");
   const Eigen::Vector3d truth(-3.0, 2.0, 1.0);
   const ObservationSet obs = idealObservations(layout, truth, SyntheticNoise{}, 1);
   ASSERT_EQ(obs.bearings.size(), 1u);

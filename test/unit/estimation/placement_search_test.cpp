@@ -15,7 +15,7 @@ namespace estimation {
 namespace {
 
 /// A 0.4 m square robot, candidates every 0.2 m (9 module points, 8 board points).
-MountingRegion square() {
+MountingRegion squareRegion() {
   MountingRegion r;
   r.outline = {{-0.2, -0.2}, {0.2, -0.2}, {0.2, 0.2}, {-0.2, 0.2}};
   r.grid_spacing = 0.2;
@@ -32,7 +32,7 @@ MountingRegion square() {
 
 /// Targets only ahead of the robot (+-30 deg).
 MountingRegion squareAhead() {
-  MountingRegion r = square();
+  MountingRegion r = squareRegion();
   r.target.from = deg2rad(-30.0);
   r.target.to = deg2rad(30.0);
   return r;
@@ -95,7 +95,7 @@ TEST(PlacementSearch, ExhaustivePicksTheBoardFacingTheTargets) {
 }
 
 TEST(PlacementSearch, ScoreMatchesTheAdvisorsBoundAtEveryTarget) {
-  MountingRegion region = square();
+  MountingRegion region = squareRegion();
   region.twr_count = 2;
   region.aoa_count = 2;
   const AdvisorConfig advisor;
@@ -118,7 +118,7 @@ TEST(PlacementSearch, ScoreMatchesTheAdvisorsBoundAtEveryTarget) {
 }
 
 TEST(PlacementSearch, GreedyIsNeverWorseThanItsStart) {
-  MountingRegion region = square();
+  MountingRegion region = squareRegion();
   region.grid_spacing = 0.1;
   region.twr_count = 3;
   region.twr_min_spacing = 0.2;
@@ -139,7 +139,7 @@ TEST(PlacementSearch, GreedyIsNeverWorseThanItsStart) {
 }
 
 TEST(PlacementSearch, GreedyAndRandomNeverBeatTheExhaustiveOptimum) {
-  MountingRegion region = square();
+  MountingRegion region = squareRegion();
   region.grid_spacing = 0.1;
   region.twr_count = 3;
   region.twr_min_spacing = 0.2;
@@ -152,7 +152,7 @@ TEST(PlacementSearch, GreedyAndRandomNeverBeatTheExhaustiveOptimum) {
 }
 
 TEST(PlacementSearch, ModulesInOneLineAreNotAPlacement) {
-  MountingRegion region = square();
+  MountingRegion region = squareRegion();
   region.twr_count = 3;
   region.twr_min_off_line = 1e-6;  // exactly in one line only
   PlacementProblem p = buildPlacementProblem(region, AdvisorConfig{});
@@ -169,7 +169,7 @@ TEST(PlacementSearch, ModulesInOneLineAreNotAPlacement) {
 }
 
 TEST(PlacementSearch, KeepOutZonesHoldNoSensor) {
-  MountingRegion region = square();
+  MountingRegion region = squareRegion();
   region.grid_spacing = 0.1;
   region.aoa_count = 2;
   const Polygon zone{{0.0, -0.25}, {0.25, -0.25}, {0.25, 0.25}, {0.0, 0.25}};  // front half
@@ -189,7 +189,7 @@ TEST(PlacementSearch, KeepOutZonesHoldNoSensor) {
 }
 
 TEST(PlacementSearch, CandidatesStayInANonConvexOutlineAndBoardsFaceOut) {
-  MountingRegion region = square();
+  MountingRegion region = squareRegion();
   // An L: the square without its front-left quarter.
   region.outline = {{-0.2, -0.2}, {0.2, -0.2}, {0.2, 0.0}, {0.0, 0.0}, {0.0, 0.2}, {-0.2, 0.2}};
   region.grid_spacing = 0.05;
@@ -209,7 +209,7 @@ TEST(PlacementSearch, CandidatesStayInANonConvexOutlineAndBoardsFaceOut) {
 }
 
 TEST(PlacementSearch, TooLargeExhaustiveSearchIsRefused) {
-  MountingRegion region = square();
+  MountingRegion region = squareRegion();
   region.grid_spacing = 0.05;  // 81 module candidates
   region.twr_count = 4;
   const PlacementProblem p = buildPlacementProblem(region, AdvisorConfig{});
@@ -223,7 +223,7 @@ TEST(PlacementSearch, TooLargeExhaustiveSearchIsRefused) {
 }
 
 TEST(PlacementSearch, TooManySensorsForTheRegionFailNamingTheCount) {
-  MountingRegion region = square();
+  MountingRegion region = squareRegion();
   region.twr_count = 10;  // 9 candidates
   try {
     buildPlacementProblem(region, AdvisorConfig{});
@@ -234,7 +234,7 @@ TEST(PlacementSearch, TooManySensorsForTheRegionFailNamingTheCount) {
 }
 
 TEST(PlacementSearch, WrittenLayoutLoadsWithTheSensorsPlaced) {
-  MountingRegion region = square();
+  MountingRegion region = squareRegion();
   region.aoa_count = 2;
   const PlacementProblem p = buildPlacementProblem(region, AdvisorConfig{});
   const Placement placement{{0, 8}, {1, 5}};

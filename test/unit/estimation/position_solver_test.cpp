@@ -5,6 +5,7 @@
 
 #include <random>
 
+#include "../../support/shipped_layout.hpp"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/estimation/fisher.hpp"
 #include "radio_follow/estimation/initializer.hpp"
@@ -14,12 +15,8 @@ namespace radio_follow {
 namespace estimation {
 namespace {
 
-Layout layoutFile(const std::string& name) {
-  return loadLayoutFile(std::string(RF_CONFIG_DIR) + "/layouts/" + name);
-}
-
 TEST(PositionSolver, RecoversTruthAndCovarianceFromNoiseFreeRanges) {
-  const Layout layout = layoutFile("tracked.yaml");
+  const Layout layout = test::shippedLayout("tracked.yaml");
   SolverConfig config;
   PositionSolver solver(config);
   const Eigen::Vector3d truth(3.0, -2.0, config.height);
@@ -36,7 +33,7 @@ TEST(PositionSolver, RecoversTruthAndCovarianceFromNoiseFreeRanges) {
 }
 
 TEST(PositionSolver, CeresCovarianceAgreesWithFisherWithoutLoss) {
-  const Layout layout = layoutFile("spot.yaml");
+  const Layout layout = test::shippedLayout("spot.yaml");
   SolverConfig config;
   config.range_loss.type = config.bearing_loss.type = LossType::kNone;
   config.ceres_covariance = true;
@@ -53,7 +50,7 @@ TEST(PositionSolver, CeresCovarianceAgreesWithFisherWithoutLoss) {
 }
 
 TEST(PositionSolver, MultiStartFindsTheCubeTargetInEveryQuadrant) {
-  const Layout layout = layoutFile("cube.yaml");
+  const Layout layout = test::shippedLayout("cube.yaml");
   SolverConfig config;
   PositionSolver solver(config);
   InitializerConfig init;
@@ -67,7 +64,7 @@ TEST(PositionSolver, MultiStartFindsTheCubeTargetInEveryQuadrant) {
 }
 
 TEST(PositionSolver, RobustLossResistsANonLineOfSightRange) {
-  const Layout layout = layoutFile("tracked.yaml");
+  const Layout layout = test::shippedLayout("tracked.yaml");
   const Eigen::Vector3d truth(4.0, 3.0, 1.0);
   ObservationSet obs = idealObservations(layout, truth, SyntheticNoise{}, 0);
   obs.ranges[0].range += 2.0;  // NLOS: the direct path is blocked, the echo is longer
@@ -82,7 +79,7 @@ TEST(PositionSolver, RobustLossResistsANonLineOfSightRange) {
 }
 
 TEST(PositionSolver, BearingOnlyKeepsTheDirection) {
-  const Layout layout = layoutFile("cube.yaml");
+  const Layout layout = test::shippedLayout("cube.yaml");
   SolverConfig config;
   PositionSolver solver(config);
   const Eigen::Vector3d truth(-2.0, 6.0, config.height);

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 
+#include "../../support/shipped_loop.hpp"
 #include "radio_follow/common/error_statistics.hpp"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/evaluation/closed_loop.hpp"
@@ -14,13 +15,8 @@ namespace radio_follow {
 namespace evaluation {
 namespace {
 
-ClosedLoopConfig shipped(sim::SensorProfile profile) {
-  return loadClosedLoopConfig(RF_CONFIG_DIR, "spot", "outdoor_loop", FollowController::kVelocity,
-                              1, "", "", profile);
-}
-
 TEST(HeadingWalks, JudgesEveryUpdateAgainstTheNewestRawReading) {
-  const ClosedLoopConfig c = shipped(sim::SensorProfile::kIdeal);
+  const ClosedLoopConfig c = test::shippedLoop("spot", sim::SensorProfile::kIdeal);
   HeadingWalkParams params;
   params.walks = 4;
   params.duration = 20.0;
@@ -42,7 +38,7 @@ TEST(HeadingWalks, JudgesEveryUpdateAgainstTheNewestRawReading) {
 }
 
 TEST(HeadingWalks, RefusesAPersonBehindTheBoardAndALayoutWithoutOne) {
-  const ClosedLoopConfig c = shipped(sim::SensorProfile::kIdeal);
+  const ClosedLoopConfig c = test::shippedLoop("spot", sim::SensorProfile::kIdeal);
   HeadingWalkParams params;
   params.max_direction = 2.0;  // beyond 90 deg: behind the board
   EXPECT_THROW(runHeadingWalks(c.layout, c.world, c.locator, params), ParamError);

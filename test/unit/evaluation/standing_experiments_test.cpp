@@ -9,6 +9,7 @@
 
 #include <cmath>
 
+#include "../../support/shipped_loop.hpp"
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/evaluation/closed_loop.hpp"
@@ -17,11 +18,6 @@
 namespace radio_follow {
 namespace evaluation {
 namespace {
-
-ClosedLoopConfig shipped(const std::string& layout) {
-  return loadClosedLoopConfig(RF_CONFIG_DIR, layout, "outdoor_loop", FollowController::kVelocity,
-                              1);
-}
 
 StaticAccuracyParams shortStatic() {
   StaticAccuracyParams p;
@@ -60,7 +56,7 @@ TEST(StandingExperiments, StaticParamsAreValidated) {
 // 5.13-5.14); the TWR modules alone, three of them close together, are far worse (its
 // Figures 5.10-5.11: errors of metres where a module is blocked, spread up to 1 m).
 TEST(StandingExperiments, Experiment1SpotAoaHoldsInEveryDirectionTwrAloneDoesNot) {
-  const ClosedLoopConfig c = shipped("spot");
+  const ClosedLoopConfig c = test::shippedLoop("spot");
   const auto both = runStaticAccuracy(c.layout, c.world, c.locator, shortStatic());
   ASSERT_EQ(both.size(), 8u);
   double worst_both = 0.0;
@@ -79,7 +75,7 @@ TEST(StandingExperiments, Experiment1SpotAoaHoldsInEveryDirectionTwrAloneDoesNot
 }
 
 TEST(StandingExperiments, RunsAreDeterministic) {
-  const ClosedLoopConfig c = shipped("cube");
+  const ClosedLoopConfig c = test::shippedLoop("cube");
   StaticAccuracyParams p = shortStatic();
   p.directions = 2;
   p.duration = 4.0;
@@ -98,7 +94,7 @@ TEST(StandingExperiments, RunsAreDeterministic) {
 // direction a median error within the 0.3 m the follow experiments require.
 TEST(StandingExperiments, Experiment2TrackHeldAllRoundForTheAoaLayouts) {
   for (const char* layout : {"spot", "cube"}) {
-    const ClosedLoopConfig c = shipped(layout);
+    const ClosedLoopConfig c = test::shippedLoop(layout);
     const sim::Scenario walk =
         sim::loadScenarioFile(std::string(RF_CONFIG_DIR) + "/scenarios/walk_around.yaml", 1);
     const auto samples =

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../../support/shipped_loop.hpp"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/evaluation/closed_loop.hpp"
 
@@ -10,16 +11,11 @@ namespace radio_follow {
 namespace evaluation {
 namespace {
 
-ClosedLoopConfig shipped(const std::string& layout) {
-  return loadClosedLoopConfig(RF_CONFIG_DIR, layout, "outdoor_loop", FollowController::kVelocity, 1,
-                              "", "", sim::SensorProfile::kIdeal);
-}
-
 // Every measurement sigma, the process noise's and the prior's standard deviations twice as
 // large: the information is a quarter at every step, so the bound exactly doubles. Fails
 // when the bound does not count the simulator's sigmas or the locator's process noise.
 TEST(WalkingPcrb, TheBoundScalesWithTheNoiseItCounts) {
-  const ClosedLoopConfig c = shipped("tracked");
+  const ClosedLoopConfig c = test::shippedLoop("tracked", sim::SensorProfile::kIdeal);
   estimation::LocatorConfig locator = c.locator;
   locator.estimator = estimation::Estimator::kSolver;  // the faster one; the bound is the same
   WalkingPcrbParams params;
@@ -45,7 +41,7 @@ TEST(WalkingPcrb, TheBoundScalesWithTheNoiseItCounts) {
 // Bearings of boards that do not face the person are information too: the bound that counts
 // them is the tighter one.
 TEST(WalkingPcrb, EveryBearingCountedTightensTheBound) {
-  const ClosedLoopConfig c = shipped("spot");
+  const ClosedLoopConfig c = test::shippedLoop("spot", sim::SensorProfile::kIdeal);
   estimation::LocatorConfig locator = c.locator;
   locator.estimator = estimation::Estimator::kSolver;
   WalkingPcrbParams params;

@@ -14,14 +14,14 @@ namespace radio_follow {
 namespace sim {
 namespace {
 
-struct Stats {
+struct ChannelStats {
   double mean = 0.0;
   double sigma = 0.0;
   double lag1 = 0.0;  ///< autocorrelation of consecutive readings
 };
 
-Stats stats(const std::vector<double>& v) {
-  Stats s;
+ChannelStats channelStats(const std::vector<double>& v) {
+  ChannelStats s;
   for (double x : v) {
     s.mean += x;
   }
@@ -58,7 +58,7 @@ TEST(RssiChannel, WithoutFadesKeepsTheTablesMeanAndSpreadAndIsCorrelated) {
   f.dropout = 0.0;
   RssiChannel channel(AoaBoardKind::kXplrAoa1, f);
   Rng rng(3);
-  const Stats s = stats(run(channel, 2.0, 200000, rng, nullptr));
+  const ChannelStats s = channelStats(run(channel, 2.0, 200000, rng, nullptr));
   const models::AoaError table = models::aoaError(AoaBoardKind::kXplrAoa1, 0.0, 2.0);
   // The shadowing's 2 s correlation leaves some 5000 independent readings: SE 0.05 dB.
   EXPECT_NEAR(s.mean, table.rssi_mean, 0.25);
@@ -74,7 +74,7 @@ TEST(RssiChannel, FadesPullTheMeanDownAndReadingsGetLost) {
   Rng rng(4);
   int lost = 0;
   const int n = 200000;
-  const Stats s = stats(run(channel, 2.0, n, rng, &lost));
+  const ChannelStats s = channelStats(run(channel, 2.0, n, rng, &lost));
   EXPECT_NEAR(static_cast<double>(lost) / n, f.dropout, 0.005);
   // Share of faded readings ~ 0.01 * 5 / (1 + 0.01 * 5) = 4.8 %, 10 dB deep on average.
   const double expected_drop = 0.048 * (f.fade_min + f.fade_mean_excess);
