@@ -9,21 +9,29 @@
 
 namespace radio_follow::drivers {
 
+const ParamTable<SerialLineParams>& SerialLineParams::table() {
+  using P = SerialLineParams;
+  static const ParamTable<P> t =
+      ParamTable<P>()
+          .add("port", &P::port, "", "Serial device, the udev symlink (required).")
+          .add("baud", &P::baud, "baud", "UART speed (the devices use 115200).", Range::above(0))
+          .add("reconnect_backoff", &P::reconnect_backoff, "s",
+               "Longest wait between attempts to reopen an absent device.",
+               Range::aboveUpTo(0.0, 10.0))
+          .add("silence_timeout", &P::silence_timeout, "s",
+               "A connected device silent this long is reported.", Range::above(0.0))
+          .add("max_line_length", &P::max_line_length, "bytes",
+               "Longer lines are discarded and counted.", Range::atLeast(64));
+  return t;
+}
+
 void SerialLineParams::load(const ParamSource& params) {
-  params.param("port", port, port);
-  params.param("baud", baud, baud);
-  params.param("reconnect_backoff", reconnect_backoff, reconnect_backoff);
-  params.param("silence_timeout", silence_timeout, silence_timeout);
-  params.param("max_line_length", max_line_length, max_line_length);
+  table().load(params, *this);
 }
 
 void SerialLineParams::validate(const std::string& example_port) const {
-  require(!port.empty(), "port", port, "a device path such as " + example_port);
-  require(baud > 0, "baud", baud, "a positive baud rate (the devices use 115200)");
-  require(reconnect_backoff > 0.0 && reconnect_backoff <= 10.0, "reconnect_backoff",
-          reconnect_backoff, "seconds in (0, 10]");
-  require(silence_timeout > 0.0, "silence_timeout", silence_timeout, "positive seconds");
-  require(max_line_length >= 64, "max_line_length", max_line_length, "at least 64 bytes");
+  require(!port.empty(), "~port", port, "a device path such as " + example_port);
+  table().check(*this);
 }
 
 SerialTransport::Options SerialLineParams::transportOptions() const {

@@ -38,13 +38,13 @@ TEST(Dwm1001DriverParams, Validation) {
   auto invalid = [&p](auto change, const std::string& name) {
     radio_follow::test::expectRefused(p, change, name);
   };
-  invalid([](auto& q) { q.output_mode = "lep"; }, "output_mode");
-  invalid([](auto& q) { q.baud = 0; }, "baud");
-  invalid([](auto& q) { q.configure = false; }, "frame_id");  // no frame, no tag_id
-  invalid([](auto& q) { q.reconnect_backoff = 0.0; }, "reconnect_backoff");
-  invalid([](auto& q) { q.silence_timeout = -1.0; }, "silence_timeout");
-  invalid([](auto& q) { q.shell_timeout = 0.0; }, "shell_timeout");
-  invalid([](auto& q) { q.max_line_length = 10; }, "max_line_length");
+  invalid([](auto& q) { q.output_mode = "lep"; }, "~output_mode");
+  invalid([](auto& q) { q.baud = 0; }, "~baud");
+  invalid([](auto& q) { q.configure = false; }, "~frame_id");  // no frame, no tag_id
+  invalid([](auto& q) { q.reconnect_backoff = 0.0; }, "~reconnect_backoff");
+  invalid([](auto& q) { q.silence_timeout = -1.0; }, "~silence_timeout");
+  invalid([](auto& q) { q.shell_timeout = 0.0; }, "~shell_timeout");
+  invalid([](auto& q) { q.max_line_length = 10; }, "~max_line_length");
   p.configure = false;
   p.tag_id = "5722";
   EXPECT_NO_THROW(p.validate());

@@ -61,13 +61,13 @@ TEST(UbloxAoaDriverParams, Validation) {
   auto invalid = [&p](auto change, const std::string& name) {
     radio_follow::test::expectRefused(p, change, name);
   };
-  invalid([](auto& q) { q.frame_id.clear(); }, "frame_id");
-  invalid([](auto& q) { q.tag_ids = {"CCF9578E0D8"}; }, "tag_ids");
-  invalid([](auto& q) { q.tag_ids = {"CCF9578E0D8G"}; }, "tag_ids");
-  invalid([](auto& q) { q.init_commands = {"AT\r"}; }, "init_commands");
-  invalid([](auto& q) { q.init_commands = {""}; }, "init_commands");
-  invalid([](auto& q) { q.reconnect_backoff = 11.0; }, "reconnect_backoff");
-  invalid([](auto& q) { q.baud = -1; }, "baud");
+  invalid([](auto& q) { q.frame_id.clear(); }, "~frame_id");
+  invalid([](auto& q) { q.tag_ids = {"CCF9578E0D8"}; }, "~tag_ids");
+  invalid([](auto& q) { q.tag_ids = {"CCF9578E0D8G"}; }, "~tag_ids");
+  invalid([](auto& q) { q.init_commands = {"AT\r"}; }, "~init_commands");
+  invalid([](auto& q) { q.init_commands = {""}; }, "~init_commands");
+  invalid([](auto& q) { q.reconnect_backoff = 11.0; }, "~reconnect_backoff");
+  invalid([](auto& q) { q.baud = -1; }, "~baud");
 }
 
 TEST(UbloxAoaDriver, FiltersConvertsAndRecoversFromReplug) {

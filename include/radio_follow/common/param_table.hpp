@@ -160,6 +160,20 @@ class ParamTable {
     return *this;
   }
 
+  /// Every entry of a base class's table (a driver's parameters deriving from the ones
+  /// every serial-line driver has).
+  template <typename Base>
+  ParamTable& includeBase(const ParamTable<Base>& base) {
+    static_assert(std::is_base_of_v<Base, S>, "includeBase needs a base class of S");
+    for (const auto& e : base.entries()) {
+      entries_.push_back(
+          Entry{e.name, e.unit, e.doc, e.range, e.choices,
+                [get = e.get](const S& s) { return get(static_cast<const Base&>(s)); },
+                [set = e.set](S& s, const ParamValue& v) { set(static_cast<Base&>(s), v); }});
+    }
+    return *this;
+  }
+
   /// Reads every entry from `source`; absent keys keep the member's value. Types are
   /// checked by the source (ParamError), bounds and choices here.
   void load(const ParamSource& source, S& s) const {

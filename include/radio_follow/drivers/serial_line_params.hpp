@@ -4,6 +4,7 @@
 #include <string>
 
 #include "radio_follow/common/param_source.hpp"
+#include "radio_follow/common/param_table.hpp"
 #include "radio_follow/drivers/serial_transport.hpp"
 
 namespace radio_follow::drivers {
@@ -18,6 +19,8 @@ struct SerialLineParams {
   double silence_timeout = 2.0;    ///< s
   int max_line_length = 1024;      ///< bytes
 
+  /// port, baud, reconnect_backoff, silence_timeout, max_line_length.
+  static const ParamTable<SerialLineParams>& table();
   void load(const ParamSource& params);
   /// Throws ParamError naming the first invalid value; `example_port` (e.g.
   /// "/dev/aoa_front") completes the message for a missing port.

@@ -44,27 +44,6 @@ const ros::NodeHandle& requireUpperCaseId(const ros::NodeHandle& private_nh) {
 
 }  // namespace
 
-void Dwm1001DriverNode::Params::load(const ParamReader& private_nh) {
-  SerialLineParams::load(private_nh);
-  private_nh.param("configure", configure, configure);
-  private_nh.param("output_mode", output_mode, output_mode);
-  private_nh.param("tag_id", tag_id, tag_id);
-  tag_id = normalizeId(tag_id);  // IDs enter normalised (upper case), as the layout's
-  private_nh.param("frame_id", frame_id, frame_id);
-  private_nh.param("network_frame_id", network_frame_id, network_frame_id);
-  private_nh.param("shell_timeout", shell_timeout, shell_timeout);
-}
-
-void Dwm1001DriverNode::Params::validate() const {
-  SerialLineParams::validate("/dev/dwm1001_5722");
-  require(output_mode == "lec" || output_mode == "les", "output_mode", output_mode,
-          "'lec' or 'les'");
-  require(configure || !frame_id.empty() || !tag_id.empty(), "frame_id", frame_id,
-          "a frame (or a tag_id to derive it from) when configure is false");
-  require(!network_frame_id.empty(), "network_frame_id", network_frame_id, "a frame name");
-  require(shell_timeout > 0.0, "shell_timeout", shell_timeout, "positive seconds");
-}
-
 Dwm1001DriverNode::Dwm1001DriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
     : Dwm1001DriverNode(nh, private_nh, loadStrict<Params>(requireUpperCaseId(private_nh))) {}
 

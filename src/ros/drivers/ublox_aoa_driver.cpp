@@ -24,30 +24,6 @@ constexpr double kMaxEventRate = 100.0;
 
 }  // namespace
 
-void UbloxAoaDriverNode::Params::load(const ParamReader& private_nh) {
-  SerialLineParams::load(private_nh);
-  private_nh.param("frame_id", frame_id, frame_id);
-  private_nh.param("tag_ids", tag_ids, tag_ids);
-  private_nh.param("invert_azimuth", invert_azimuth, invert_azimuth);
-  private_nh.param("init_commands", init_commands, init_commands);
-  // The device reports IDs in upper case; accept either spelling in the config.
-  for (std::string& id : tag_ids) {
-    drivers::assignUpperHex(std::string(id), id);
-  }
-}
-
-void UbloxAoaDriverNode::Params::validate() const {
-  SerialLineParams::validate("/dev/aoa_front");
-  require(!frame_id.empty(), "frame_id", frame_id, "the antenna board's frame name");
-  for (const std::string& id : tag_ids) {
-    require(drivers::isHexId(id, 12), "tag_ids", id, "12 hexadecimal digits per tag");
-  }
-  for (const std::string& command : init_commands) {
-    require(!command.empty() && command.find_first_of("\r\n") == std::string::npos, "init_commands",
-            command, "one AT command per entry, without line ends");
-  }
-}
-
 UbloxAoaDriverNode::UbloxAoaDriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
     : UbloxAoaDriverNode(nh, private_nh, loadStrict<Params>(private_nh)) {}
 

@@ -21,6 +21,8 @@
 #include "radio_follow/control/homing_controller.hpp"
 #include "radio_follow/control/path_follower.hpp"
 #include "radio_follow/control/velocity_law.hpp"
+#include "radio_follow/drivers/dwm1001_params.hpp"
+#include "radio_follow/drivers/ublox_aoa_params.hpp"
 #include "radio_follow/estimation/locator.hpp"
 
 namespace radio_follow {
@@ -145,6 +147,9 @@ bool sameValue(const ParamValue& expected, const std::string& written) {
   if (std::holds_alternative<std::string>(expected)) {
     text = std::get<std::string>(expected);
   }
+  if (text.empty() && written == "(required)") {
+    return true;  // no default: the node refuses to start without it
+  }
   std::string w = written;
   for (const char quote : {'"', '\'', '`'}) {
     w.erase(std::remove(w.begin(), w.end(), quote), w.end());
@@ -177,7 +182,7 @@ void expectCovered(const ParamTable<S>& table, const std::vector<std::string>& y
   }
   const std::string doc = readFile(std::string(RF_CONFIG_DIR) + "/../doc/nodes/" + doc_file);
   ASSERT_FALSE(doc.empty()) << doc_file;
-  const S defaults{};
+  S defaults;  // (S{} trips a false maybe-uninitialized warning in GCC 12 for derived aggregates)
   for (const auto& e : table.entries()) {
     const ParamValue value = e.get(defaults);
     if (std::find(not_in_yaml.begin(), not_in_yaml.end(), e.name) == not_in_yaml.end()) {
@@ -264,7 +269,7 @@ std::vector<CfgField> cfgFields(const std::string& file) {
 
 template <typename S>
 void expectCfgDefaultsAreTheTables(const ParamTable<S>& table, const std::string& file) {
-  const S defaults{};
+  S defaults;  // (S{} trips a false maybe-uninitialized warning in GCC 12 for derived aggregates)
   const std::vector<CfgField> fields = cfgFields(file);
   EXPECT_GE(fields.size(), 5u) << file << ": the pattern found too few fields";
   for (const CfgField& field : fields) {
@@ -286,6 +291,14 @@ void expectCfgDefaultsAreTheTables(const ParamTable<S>& table, const std::string
     }
     EXPECT_TRUE(found) << "cfg/" << file << ": " << field.name << " is no parameter of the table";
   }
+}
+
+TEST(ParamTables, SerialDriversAreInTheirYamlAndDoc) {
+  // The device path differs per device (the launch file gives it); a board's frame too.
+  expectCovered(drivers::Dwm1001Params::table(), {"dwm1001_driver.yaml"}, "dwm1001_driver.md",
+                {"port"});
+  expectCovered(drivers::UbloxAoaParams::table(), {"ublox_aoa_driver.yaml"}, "ublox_aoa_driver.md",
+                {"port", "frame_id"});
 }
 
 TEST(ParamTables, LiveTuningDefaultsAreTheTables) {

@@ -41,7 +41,7 @@ TEST(SerialLineParams, Validation) {
     p.validate();
     ADD_FAILURE() << "no port accepted";
   } catch (const ParamError& e) {
-    EXPECT_EQ(e.name(), "port");
+    EXPECT_EQ(e.name(), "~port");
     EXPECT_NE(std::string(e.what()).find("/dev/aoa_front"), std::string::npos) << e.what();
   }
   p.port = "/dev/aoa_front";
@@ -49,11 +49,11 @@ TEST(SerialLineParams, Validation) {
   auto invalid = [&p](auto change, const std::string& name) {
     radio_follow::test::expectRefused(p, change, name);
   };
-  invalid([](auto& q) { q.baud = 0; }, "baud");
-  invalid([](auto& q) { q.reconnect_backoff = 0.0; }, "reconnect_backoff");
-  invalid([](auto& q) { q.reconnect_backoff = 10.5; }, "reconnect_backoff");
-  invalid([](auto& q) { q.silence_timeout = 0.0; }, "silence_timeout");
-  invalid([](auto& q) { q.max_line_length = 63; }, "max_line_length");
+  invalid([](auto& q) { q.baud = 0; }, "~baud");
+  invalid([](auto& q) { q.reconnect_backoff = 0.0; }, "~reconnect_backoff");
+  invalid([](auto& q) { q.reconnect_backoff = 10.5; }, "~reconnect_backoff");
+  invalid([](auto& q) { q.silence_timeout = 0.0; }, "~silence_timeout");
+  invalid([](auto& q) { q.max_line_length = 63; }, "~max_line_length");
 }
 
 TEST(SerialLineParams, TransportWaitsFromATenthUpToReconnectBackoff) {

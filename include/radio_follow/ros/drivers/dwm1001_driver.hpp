@@ -9,6 +9,7 @@
 #include "radio_follow/UwbRanges.h"
 #include "radio_follow/UwbTagLocation.h"
 #include "radio_follow/drivers/dwm1001_decoder.hpp"
+#include "radio_follow/drivers/dwm1001_params.hpp"
 #include "radio_follow/drivers/dwm1001_shell.hpp"
 #include "radio_follow/drivers/serial_line_params.hpp"
 #include "radio_follow/ros/common/output_diagnostic.hpp"
@@ -34,17 +35,8 @@ struct Dwm1001Output {
 /// QueuedSerialLineDriver's.
 class Dwm1001DriverNode : public QueuedSerialLineDriver<Dwm1001Output> {
  public:
-  struct Params : drivers::SerialLineParams {
-    bool configure = true;            ///< run the shell dialogue; false = only listen
-    std::string output_mode = "lec";  ///< "lec" or "les"
-    std::string tag_id;               ///< used when configure is false ("" = unknown)
-    std::string frame_id;             ///< "" = "uwb_<tag id>"
-    std::string network_frame_id = "uwb_network";
-    double shell_timeout = 2.0;  ///< s per dialogue step before it restarts
-
-    void load(const ParamReader& private_nh);
-    void validate() const;
-  };
+  /// config/dwm1001_driver.yaml (drivers::Dwm1001Params).
+  using Params = drivers::Dwm1001Params;
 
   Dwm1001DriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh);
   /// With `params` loaded and validated by the caller (layout_drivers: one driver per

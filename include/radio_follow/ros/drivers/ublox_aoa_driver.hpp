@@ -9,6 +9,7 @@
 
 #include "radio_follow/AoaBearing.h"
 #include "radio_follow/drivers/serial_line_params.hpp"
+#include "radio_follow/drivers/ublox_aoa_params.hpp"
 #include "radio_follow/drivers/uudf_decoder.hpp"
 #include "radio_follow/ros/common/output_diagnostic.hpp"
 #include "radio_follow/ros/common/params.hpp"
@@ -22,15 +23,8 @@ namespace radio_follow {
 /// and the delivery queue are the QueuedSerialLineDriver's.
 class UbloxAoaDriverNode : public QueuedSerialLineDriver<AoaBearing> {
  public:
-  struct Params : drivers::SerialLineParams {
-    std::string frame_id;                    ///< the board's frame, required
-    std::vector<std::string> tag_ids;        ///< accepted tags (12 hex digits); empty = all
-    bool invert_azimuth = true;              ///< publish counter-clockwise azimuth
-    std::vector<std::string> init_commands;  ///< AT commands sent on every connect
-
-    void load(const ParamReader& private_nh);
-    void validate() const;
-  };
+  /// config/ublox_aoa_driver.yaml (drivers::UbloxAoaParams).
+  using Params = drivers::UbloxAoaParams;
 
   UbloxAoaDriverNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh);
   /// With `params` loaded and validated by the caller (layout_drivers: one driver per
