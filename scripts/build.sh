@@ -2,10 +2,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # Builds radio_follow in a catkin workspace at $RF_WS (see scripts/workspace.sh; printed
 # at the end) whose src/ links to this clone. Extra arguments go to catkin_make.
-# RF_UNITY=ON makes a unity build (CMake compiles a target's sources in batches of 8):
-# 0.75x the CPU time but, on 2 cores, 0.86x the wall time of a fresh build of the
-# estimation and control layers (doc/architecture.md, "Executables"); off by default, as
-# it rebuilds 8 files for one change and can hide a missing include.
+# RF_UNITY=OFF (or ON) sets the unity build the workspace keeps (CMakeLists.txt: on unless
+# set; off rebuilds one changed file quicker).
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 RF_REPO="$repo"
@@ -23,7 +21,7 @@ cd "$ws"
 catkin_make -j"${RF_JOBS:-$(nproc)}" \
   -DPYTHON_EXECUTABLE=/usr/bin/python3 \
   -DCMAKE_BUILD_TYPE="${RF_BUILD_TYPE:-Release}" \
-  -DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DCMAKE_UNITY_BUILD="${RF_UNITY:-OFF}" \
+  -DCMAKE_EXPORT_COMPILE_COMMANDS=ON ${RF_UNITY:+-DCMAKE_UNITY_BUILD="$RF_UNITY"} \
   -DRADIO_FOLLOW_WERROR=ON -DRADIO_FOLLOW_BUILD_BENCHMARKS=ON \
   "$@"
 echo "build: workspace $ws"

@@ -93,10 +93,11 @@ bloom_args=(--os-name debian --os-version "$os_version" --ros-distro "$distro")
   >"$work/bloom.log" 2>&1 || { cat "$work/bloom.log" >&2; fail "bloom (templates)"; }
 # Changes to bloom's rules template: catkin installs its setup.* files into the prefix
 # (bloom leaves them to a ros-<distro>-catkin package, which Debian does not have);
-# benchmarks and the lab's tools stay off (they are never installed) and -Werror too;
+# benchmarks and the lab's tools stay off (they are never installed) and -Werror too; no
+# unity build (the one place CI compiles the runtime file by file: a missing include shows);
 # dh builds in parallel (bloom's debhelper compat 9 does not by default).
 # Tests are off through DEB_BUILD_OPTIONS=nocheck below.
-sed -i -e 's/-DCATKIN_BUILD_BINARY_PACKAGE="1"/-DCATKIN_BUILD_BINARY_PACKAGE="0" -DRADIO_FOLLOW_BUILD_BENCHMARKS=OFF -DRADIO_FOLLOW_BUILD_LAB=OFF -DRADIO_FOLLOW_WERROR=OFF/' \
+sed -i -e 's/-DCATKIN_BUILD_BINARY_PACKAGE="1"/-DCATKIN_BUILD_BINARY_PACKAGE="0" -DRADIO_FOLLOW_BUILD_BENCHMARKS=OFF -DRADIO_FOLLOW_BUILD_LAB=OFF -DRADIO_FOLLOW_WERROR=OFF -DCMAKE_UNITY_BUILD=OFF/' \
   -e 's/^\(\tdh \$@@ -v\) /\1 --parallel /' "$src/debian/rules.em"
 grep -q 'CATKIN_BUILD_BINARY_PACKAGE="0"' "$src/debian/rules.em" &&
   grep -q 'dh \$@@ -v --parallel' "$src/debian/rules.em" ||
