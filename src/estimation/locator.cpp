@@ -82,6 +82,7 @@ ParticleTrackerConfig trackerConfig(const LocatorConfig& c) {
   t.bearing.elevation_sigma = c.elevation_sigma;
   t.bearing.use_elevation = c.use_elevation;
   t.bearing.outlier_share = c.bearing_outlier_share;
+  t.bearing.elevation_outlier_share = c.elevation_outlier_share;
   t.max_age = c.max_age;
   t.ambiguity_margin = c.ambiguity_margin;
   t.max_position_sigma = c.max_position_sigma;

@@ -269,13 +269,16 @@ MeasurementFit ParticleFilter::weightBearing(const Eigen::Vector3d& board,
   const double el_inside = m.use_elevation ? concentration(m.elevation_sigma * inside_factor) : 0.0;
   const double el_outside =
       m.use_elevation ? concentration(m.elevation_sigma * outside_factor) : 0.0;
-  // (1 - eps) times the von Mises normalisers sqrt(kappa / 2 pi), azimuth and elevation.
-  const auto scale = [&m](double kappa_az, double kappa_el) {
-    return (1.0 - m.outlier_share) * std::sqrt(kappa_az / (2.0 * kPi)) *
-           (m.use_elevation ? std::sqrt(kappa_el / (2.0 * kPi)) : 1.0);
+  // The von Mises normalisers sqrt(kappa / 2 pi), each angle's times its inlier share: the
+  // azimuth's (1 - eps) against reflections from anywhere, the elevation's (1 - eps_e)
+  // against shadowing, which lifts the elevation while the azimuth holds.
+  const auto normaliser = [](double kappa, double share) {
+    return (1.0 - share) * std::sqrt(kappa / (2.0 * kPi));
   };
-  const double scale_inside = scale(az_inside, el_inside);
-  const double scale_outside = scale(az_outside, el_outside);
+  const double az_scale_inside = normaliser(az_inside, m.outlier_share);
+  const double az_scale_outside = normaliser(az_outside, m.outlier_share);
+  const double el_scale_inside = normaliser(el_inside, m.elevation_outlier_share);
+  const double el_scale_outside = normaliser(el_outside, m.elevation_outlier_share);
 
   // Board-frame offsets of every particle: (lx, ly, lz) = R^T (p - board), lz when needed.
   const Eigen::Matrix3f r = rt.cast<float>();
@@ -294,22 +297,22 @@ MeasurementFit ParticleFilter::weightBearing(const Eigen::Vector3d& board,
   };
   // cos(measured - predicted) - 1 as dot products of unit vectors, |lx| the array's
   // front/back mirror: in ly_ for the azimuth, in lz_ for the elevation.
+  ly_ = (lx_.abs() * std::cos(static_cast<float>(azimuth)) +
+         ly_ * std::sin(static_cast<float>(azimuth))) *
+            inv_rho_ -
+        1.0f;
+  // log of the von Mises density without its normaliser: kappa (cos - 1).
+  inlier_ = blend(az_scale_outside, az_scale_inside) * fastExp(blend(az_outside, az_inside) * ly_);
   if (m.use_elevation) {
     lz_ = r(2, 0) * (x_ - b.x()) + r(2, 1) * (y_ - b.y()) + r(2, 2) * (z_ - b.z());
     lz_ = (rho2_ * inv_rho_ * std::cos(static_cast<float>(elevation)) +
            lz_ * std::sin(static_cast<float>(elevation))) *
               (rho2_ + lz_.square()).rsqrt() -
           1.0f;
-  } else {
-    lz_.setZero(lx_.size());
+    // The elevation's own mixture: its von Mises or, shadowed, uniform over [-90, 90] deg.
+    inlier_ *= blend(el_scale_outside, el_scale_inside) * fastExp(blend(el_outside, el_inside) * lz_) +
+               static_cast<float>(m.elevation_outlier_share / kPi);
   }
-  ly_ = (lx_.abs() * std::cos(static_cast<float>(azimuth)) +
-         ly_ * std::sin(static_cast<float>(azimuth))) *
-            inv_rho_ -
-        1.0f;
-  // log of the von Mises density without its normaliser: kappa (cos - 1).
-  inlier_ = blend(scale_outside, scale_inside) *
-            fastExp(blend(az_outside, az_inside) * ly_ + blend(el_outside, el_inside) * lz_);
   // The field of view's prior on the side: behind (lx < 0) counts behind_weight.
   inlier_ *= 1.0f + static_cast<float>(m.behind_weight - 1.0) * step(-lx_);
   const double uniform = 1.0 / (2.0 * kPi) / (m.use_elevation ? kPi : 1.0);

@@ -39,6 +39,9 @@ constexpr double kParallelBoards = 0.2;
 /// Without a range the distance is the elevation's alone, and a real board's elevation is
 /// biased (the floor's bounce, a body's shadow): its sigma grows by this factor.
 constexpr double kUnrangedElevationFactor = 3.0;
+/// Without a range, a board's bearings closer in time than this count as one: an
+/// advertising interval's readings, one per channel, share the geometry's multipath, s.
+constexpr double kUnrangedBearingDecorrelation = 0.1;
 /// A hypothesis with more of its weight than this across the boards' plane is folded back.
 constexpr double kAstrayShare = 0.01;
 /// The robot moved between two measurements when its pose changed by more than this (m or
@@ -209,8 +212,13 @@ double ParticleTracker::sigmaScale(const TrackedMeasurement& m) {
   double& last = stamps[m.sensor];
   const double dt = m.t - last;
   last = std::max(last, m.t);
-  const double tau =
-      range ? config_.range_decorrelation_time : config_.bearing_decorrelation_time;
+  // A board's slowly varying error counted as independent readings would outweigh the
+  // ranges; with no range the bearings are all the direction there is, and only one
+  // advertising interval's readings (one per channel) count as one.
+  const double tau = range               ? config_.range_decorrelation_time
+                     : rangedAt(m.t)     ? config_.bearing_decorrelation_time
+                                         : std::min(config_.bearing_decorrelation_time,
+                                                    kUnrangedBearingDecorrelation);
   if (!(dt < tau)) {
     return 1.0;
   }

@@ -89,8 +89,6 @@ HeadingWalkResult runHeadingWalks(const Layout& layout, sim::WorldConfig world,
   const AoaBoard& board = one_board.aoa_boards.front();
   const double board_yaw = yawOf(board.orientation);
 
-  // Issue 35's boards: the errors measured on real XPLR-AOA-1 kits.
-  world.figures = sim::realBoardAoa(world.figures);
   HeadingWalkResult result;
   sim::Rng rng(params.seed);
   for (int k = 0; k < params.walks; ++k) {

@@ -129,8 +129,7 @@ int main(int argc, char** argv) {
                     degrees(rf::quantile(deg, 0.95)).c_str());
       };
       std::printf(
-          "Single-board heading (issue 35), layout %s's board %s alone, %s sensors with real "
-          "boards' AoA errors (sim::realBoardAoa; robots "
+          "Single-board heading (issue 35), layout %s's board %s alone, %s sensors (robots "
           "1-%d, uncalibrated): %d walks of %.0f s in front of it (%.1f-%.1f m, within "
           "%.0f deg of its boresight, standing %.0f %% of the waypoints for %.0f-%.0f s); "
           "heading error at every locator update after %.0f s, deg\n\n"

@@ -140,19 +140,6 @@ AoaBoard mountedAoaBoard(const AoaBoard& board, std::uint64_t hardware_seed,
   return mounted;
 }
 
-RealisticFigures realBoardAoa(RealisticFigures f) {
-  f.aoa_reflection = 0.05;
-  f.aoa_bias_sigma = deg2rad(3.5);
-  f.aoa_slow_sigma = deg2rad(6.0);
-  f.aoa_slow_length = 1.5;
-  f.aoa_event_scale = deg2rad(5.0);
-  f.aoa_event_dof = 3.0;
-  f.aoa_elevation_bias_min = deg2rad(-11.0);
-  f.aoa_elevation_bias_max = deg2rad(-2.0);
-  f.aoa_shadow = 0.03;
-  return f;
-}
-
 AoaErrorState::AoaErrorState(const AoaBoard& board, std::uint64_t hardware_seed,
                              const RealisticFigures& f)
     : figures_(f),

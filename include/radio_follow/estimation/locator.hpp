@@ -85,11 +85,14 @@ struct LocatorConfig {
   double range_outlier_length = 1.0;
   /// Share of bearings that are reflections (any direction).
   double bearing_outlier_share = 0.05;
+  /// Share of elevations that are shadowed (the wearer's body between tag and board: the
+  /// elevation reads high while the azimuth holds).
+  double elevation_outlier_share = 0.1;
   /// Worst-axis sigma beyond which a ranged track is LOST and restarts (or twice
   /// max_relative_sigma times the distance, if larger), m.
   double lost_sigma = 1.0;
   /// Particle estimator: time constant over which the mirror test's evidence fades, s.
-  double mirror_memory = 1.0;
+  double mirror_memory = ParticleTrackerConfig().mirror_memory;
   /// Particle estimator: a person who walks and stands by turns (particle_filter.hpp):
   /// mean length of a standing spell and of a walking one, s (stand_time 0: every
   /// particle walks, the plain constant-velocity model), and a standing person's sway,

@@ -54,6 +54,8 @@ struct BearingLikelihood {
   double elevation_sigma = 0.17;  ///< rad
   bool use_elevation = true;
   double outlier_share = 0.05;     ///< reflections, from any direction
+  /// Elevations alone off (shadowed: the wearer's body between tag and board), uniform.
+  double elevation_outlier_share = 0.1;
   double field_of_view = 1.22;     ///< rad; beyond it the sigma grows
   double edge_sigma_factor = 6.0;  ///< sigma factor of a bearing measured outside it
   double behind_weight = 0.5;      ///< likelihood factor of a particle behind the board

@@ -46,7 +46,9 @@ struct ParticleTrackerConfig {
   RssDirectionLikelihood rss;
   double max_age = 0.5;             ///< s; measurements older than this are dropped
   double ambiguity_margin = 2.0;    ///< nats; see ParticleTracker
-  double mirror_memory = 1.0;       ///< s, time constant of the mirror evidence's fading
+  /// s, time constant of the mirror evidence's fading: two of the bearings' correlation
+  /// times, so that one spell of correlated errors cannot decide the side.
+  double mirror_memory = 2.0;
   double max_position_sigma = 0.5;  ///< m, worst axis for OK
   double max_relative_sigma = 0.1;  ///< ... or this fraction of the distance
   double lost_sigma = 1.0;          ///< m, worst axis beyond which the track is LOST
@@ -57,9 +59,11 @@ struct ParticleTrackerConfig {
   /// sqrt(this / dt)), so a 100 Hz module carries the information of a 10 Hz one and the
   /// cloud does not collapse onto the current error. s; 0: every range counts fully.
   double range_decorrelation_time = 0.1;
-  /// The same for a board's bearings (real boards report one per advertising channel,
-  /// about 30 a second, whose errors share the geometry's multipath), s; 0: all fully.
-  double bearing_decorrelation_time = 0.1;
+  /// The same for a board's bearings while ranges fix the distance (real boards report
+  /// about 30 a second, whose errors share the geometry's multipath and stay correlated
+  /// for seconds while the person walks); without a range, at most one advertising
+  /// interval (0.1 s), s; 0: all fully.
+  double bearing_decorrelation_time = 0.5;
   /// The slowly varying part of each sensor's error (correlated_error.hpp): the floor
   /// of the reported covariance. Range and TDoA in m, azimuth in rad.
   double range_bias_sigma = 0.05;

@@ -50,8 +50,8 @@ struct HeadingWalkResult {
 };
 
 /// Runs the walks with `layout`'s first AoA board alone (placed as the layout has it) and
-/// the locator configuration `locator`; the board errs as real XPLR-AOA-1 boards do
-/// (sim::realBoardAoa on `world`'s figures, with its realistic profile).
+/// the locator configuration `locator`; with `world`'s realistic profile the board errs as
+/// real XPLR-AOA-1 boards do (sim::RealisticFigures).
 HeadingWalkResult runHeadingWalks(const Layout& layout, sim::WorldConfig world,
                                   const estimation::LocatorConfig& locator,
                                   const HeadingWalkParams& params);

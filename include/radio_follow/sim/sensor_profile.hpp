@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "radio_follow/common/angles.hpp"
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/sim/virtual_sensors.hpp"
 
@@ -46,32 +47,26 @@ struct RealisticFigures {
   double twr_outlier_max = 3.0;           ///< m
   double twr_dropout = 0.03;              ///< chance per epoch, on top of twr_dropout
   double aoa_yaw_error_max = 0.035;       ///< rad (2 deg), per board, uniform +-
-  double aoa_reflection = 0.03;           ///< chance an event reports a wrong direction
-  // Real XPLR-AOA-1 boards' extra errors (issue 35), zero here: realBoardAoa() sets them.
-  double aoa_bias_sigma = 0.0;          ///< rad, per board azimuth bias, Gaussian
-  double aoa_slow_sigma = 0.0;          ///< rad, Gauss-Markov along the tag's path
-  double aoa_slow_length = 1.5;         ///< m of the tag's path (board frame) per decorrelation
-  double aoa_slow_time = 20.0;          ///< s: the room changes too, slowly
-  double aoa_event_scale = 0.0;         ///< rad, Student-t scale per event
-  double aoa_event_dof = 3.0;           ///< its degrees of freedom (heavy tails)
-  double aoa_elevation_bias_min = 0.0;  ///< rad, per board elevation bias, uniform
-  double aoa_elevation_bias_max = 0.0;  ///< rad
-  double aoa_shadow = 0.0;              ///< chance an elevation reads high (body shadowing)
-  double aoa_shadow_max = 0.6;          ///< rad (35 deg), that excess, uniform from 5 deg
+  // Real XPLR-AOA-1 boards' bearing errors (issue 35; doc/simulator.md, "Bearings from
+  // real boards"): a per-board azimuth bias, an error that follows the tag's path
+  // (multipath changes with the geometry, so a person who stands keeps the error),
+  // heavy-tailed noise per event, reflections, elevations 2-11 deg low with a few shadowed
+  // high. Together: |azimuth error| median 8 deg, p95 30 deg, as measured.
+  double aoa_reflection = 0.05;                 ///< chance an event reports a wrong direction
+  double aoa_bias_sigma = deg2rad(3.5);         ///< rad, per board azimuth bias, Gaussian
+  double aoa_slow_sigma = deg2rad(6.0);         ///< rad, Gauss-Markov along the tag's path
+  double aoa_slow_length = 1.5;                 ///< m of the tag's path (board frame) per decorrelation
+  double aoa_slow_time = 20.0;                  ///< s: the room changes too, slowly
+  double aoa_event_scale = deg2rad(5.0);        ///< rad, Student-t scale per event
+  double aoa_event_dof = 3.0;                   ///< its degrees of freedom (heavy tails)
+  double aoa_elevation_bias_min = deg2rad(-11.0);  ///< rad, per board elevation bias, uniform
+  double aoa_elevation_bias_max = deg2rad(-2.0);   ///< rad
+  double aoa_shadow = 0.03;                     ///< chance an elevation reads high (body shadowing)
+  double aoa_shadow_max = 0.6;                  ///< rad (35 deg), that excess, uniform from 5 deg
   double tdoa_offset_max = 0.1;           ///< m, per anchor, uniform +-
   double tdoa_slow_sigma = 0.05;          ///< m, per anchor, Gauss-Markov on top of tdoa_sigma
   double tdoa_slow_tau = 3.0;             ///< s
 };
-
-/// `figures` with real XPLR-AOA-1 boards' bearing errors (issue 35; doc/simulator.md,
-/// "Bearings from real boards"): a per-board azimuth bias (sigma 3.5 deg), an error that
-/// follows the tag's path (6 deg, decorrelating over 1.5 m: multipath changes with the
-/// geometry, so a person who stands keeps the error), heavy-tailed noise per event
-/// (Student-t, 3 degrees of freedom, scale 5 deg), 5 % reflections, elevations 2-11 deg
-/// low with 3 % shadowed high. Together: |azimuth error| median 8 deg, p95 30 deg, as
-/// measured. Not yet the realistic profile's default: the closed-loop experiments'
-/// thresholds were earned on the tables' errors and are re-earned on these next.
-RealisticFigures realBoardAoa(RealisticFigures figures = {});
 
 /// A first-order Gauss-Markov process sampled at arbitrary times: exact discretisation
 /// x' = a x + sqrt(1 - a^2) sigma w with a = exp(-dt / tau), so its statistics do not

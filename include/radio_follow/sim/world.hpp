@@ -34,8 +34,7 @@ struct WorldConfig {
   /// The simulated robot's hardware (realistic profile): every module's bias and scale,
   /// every board's mounting error, every anchor's offset. Independent of `seed`.
   std::uint64_t hardware_seed = 1;
-  /// The realistic profile's figures (not a parameter: realBoardAoa() for the lab's
-  /// real-board bench).
+  /// The realistic profile's figures (not a parameter).
   RealisticFigures figures;
 
   /// Reads the simulator's world parameters (config/simulator.yaml: sensor_profile,

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -194,11 +195,15 @@ TEST(Layout, MissingFileIsAParamError) {
 }
 
 TEST(Layout, ShippedLayoutsAreValid) {
-  for (const char* name : {"spot", "spot_twr", "tracked", "cube", "small_kit"}) {
-    SCOPED_TRACE(name);
-    const Layout layout = loadLayoutFile(std::string(RF_CONFIG_DIR) + "/layouts/" + name + ".yaml");
+  int layouts = 0;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::string(RF_CONFIG_DIR) + "/layouts")) {
+    SCOPED_TRACE(entry.path().string());
+    const Layout layout = loadLayoutFile(entry.path().string());
     EXPECT_FALSE(layout.twr_modules.empty());
+    ++layouts;
   }
+  EXPECT_GE(layouts, 7);
 }
 
 TEST(Layout, UncalibratedModulesAreTheIdentityOnes) {

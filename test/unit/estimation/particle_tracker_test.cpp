@@ -190,6 +190,34 @@ TEST(ParticleFilter, AColdStartTestsTheFieldOfViewAtEachParticle) {
   }
 }
 
+// A shadowed elevation (the wearer's body between tag and board: real boards read 5-30
+// deg high while the person stands) costs at most the elevation's own floor and leaves
+// the azimuth's say intact. Particle A lies on the reading's azimuth, 35 deg below its
+// elevation; particle B 15 deg off in azimuth, on its elevation. With one joint floor,
+// the elevation's 35 deg outweighed the azimuth's 15 deg and B took the weight.
+TEST(ParticleFilter, AShadowedElevationKeepsTheAzimuthsSay) {
+  const auto at = [](double azimuth_deg, double elevation_deg) {
+    const double a = azimuth_deg * M_PI / 180.0;
+    const double e = elevation_deg * M_PI / 180.0;
+    return Eigen::Vector3d(5.0 * std::cos(a), 5.0 * std::sin(a), 5.0 * std::tan(e));
+  };
+  const auto weightOfA = [&at](double elevation_outlier_share) {
+    ParticleFilter::Config config;
+    config.particles = 2;
+    config.planar = false;
+    ParticleFilter filter(config);
+    filter.assign({at(0.0, -5.0), at(15.0, 30.0)},
+                  {Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()}, 0.0);
+    BearingLikelihood model;
+    model.elevation_outlier_share = elevation_outlier_share;
+    filter.weightBearing(Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity(), 0.0,
+                         30.0 * M_PI / 180.0, model);
+    return filter.weight(0);
+  };
+  EXPECT_GT(weightOfA(BearingLikelihood().elevation_outlier_share), 0.55);
+  EXPECT_LT(weightOfA(0.0), 0.2);
+}
+
 // The first epoch of a simulated cold start that locked onto a wrong direction for 1.1 s
 // (locator_cold_starts trial 7389, realistic profile): the person 7.4 m away at -19 deg;
 // the front board sees them; the right board, the person 72 deg off its boresight (past

@@ -89,15 +89,22 @@ TEST(CalibrationRun, RemovesMostOfTheRangeBiasAndTheMountingError) {
     const Layout layout = spot();
     for (std::size_t i = 0; i < result.boards.size(); ++i) {
       const AoaBoard& designed = layout.aoa_boards[i];
-      // The test may look at the hardware; the calibration run never does.
+      // The test may look at the hardware; the calibration run never does. A board's
+      // azimuth bias (it reports bias + the true azimuth in its mounted frame) is a yaw
+      // offset to the calibration like the mounting's.
       const double mounting =
           wrapAngle(yawOf(sim::mountedAoaBoard(designed, hardware).orientation) -
                     yawOf(designed.orientation));
-      const double left = wrapAngle(mounting - result.boards[i].fit.yaw_offset);
-      std::printf("hardware %d, board %s: mounted %+.2f deg, fitted %+.2f deg\n",
+      const double bias = sim::AoaErrorState(designed, hardware).azimuthBias();
+      const double left = wrapAngle(mounting - bias - result.boards[i].fit.yaw_offset);
+      std::printf("hardware %d, board %s: mounted %+.2f deg, bias %+.2f deg, fitted %+.2f deg\n",
                   static_cast<int>(hardware), designed.id.c_str(), rad2deg(mounting),
-                  rad2deg(result.boards[i].fit.yaw_offset));
-      EXPECT_LT(std::abs(left), deg2rad(1.5)) << designed.id;
+                  rad2deg(bias), rad2deg(result.boards[i].fit.yaw_offset));
+      // What is left: a real board's slowly varying error (6 deg) holds still while the
+      // person stands at a tape point, so each of the ~18 points a board sees within 50 deg
+      // of its boresight is one draw of it (the mean's sigma 1.4 deg), and the tables' edge
+      // biases; 3.5 sigma.
+      EXPECT_LT(std::abs(left), deg2rad(5.0)) << designed.id;
     }
   }
 }

