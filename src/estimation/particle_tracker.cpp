@@ -42,6 +42,8 @@ constexpr double kUnrangedElevationFactor = 3.0;
 /// Without a range, a board's bearings closer in time than this count as one: an
 /// advertising interval's readings, one per channel, share the geometry's multipath, s.
 constexpr double kUnrangedBearingDecorrelation = 0.1;
+/// The most a bearing's sigma grows for its decorrelation (sigmaScale).
+constexpr double kMaxBearingSigmaScale = 2.0;
 /// A hypothesis with more of its weight than this across the boards' plane is folded back.
 constexpr double kAstrayShare = 0.01;
 /// The robot moved between two measurements when its pose changed by more than this (m or
@@ -222,8 +224,11 @@ double ParticleTracker::sigmaScale(const TrackedMeasurement& m) {
   if (!(dt < tau)) {
     return 1.0;
   }
-  // dt / tau of a measurement; a repeated stamp (dt 0) counts as a hundredth.
-  return std::sqrt(tau / std::max(dt, 0.01 * tau));
+  // dt / tau of a measurement; a repeated stamp (dt 0) counts as a hundredth. A bearing's
+  // sigma grows at most kMaxBearingSigmaScale-fold: wider, a reflection tens of degrees
+  // off would fit as well as the board's own error (at 20 Hz and 0.5 s, 16 deg).
+  const double scale = std::sqrt(tau / std::max(dt, 0.01 * tau));
+  return range ? scale : std::min(scale, kMaxBearingSigmaScale);
 }
 
 void ParticleTracker::apply(const TrackedMeasurement& m) {

@@ -204,7 +204,7 @@ void printTable(const est::LayoutCalibration& c, const rf::Layout& layout,
     return;
   }
   std::printf("\n%-10s %7s %8s %11s %10s  %s\n", "board", "used", "rejected", "rms before",
-              "rms after", "yaw offset (added to rpy_deg yaw)");
+              "rms after", "yaw offset: mounting + azimuth bias (added to rpy_deg yaw)");
   for (std::size_t i = 0; i < c.boards.size(); ++i) {
     const auto& b = c.boards[i];
     if (b.fit) {
