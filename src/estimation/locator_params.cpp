@@ -77,10 +77,18 @@ const std::vector<std::string>& solverOnlyKeys() {
 }
 
 const std::vector<std::string>& particleOnlyKeys() {
-  static const std::vector<std::string> keys{
-      "particles",   "range_outlier_share",     "range_outlier_length", "bearing_outlier_share",
-      "elevation_outlier_share", "lost_sigma",  "mirror_memory",           "stand_time",           "walk_time",
-      "stand_noise", "range_decorrelation_time", "bearing_decorrelation_time"};
+  static const std::vector<std::string> keys{"particles",
+                                             "range_outlier_share",
+                                             "range_outlier_length",
+                                             "bearing_outlier_share",
+                                             "elevation_outlier_share",
+                                             "lost_sigma",
+                                             "mirror_memory",
+                                             "stand_time",
+                                             "walk_time",
+                                             "stand_noise",
+                                             "range_decorrelation_time",
+                                             "bearing_decorrelation_time"};
   return keys;
 }
 
@@ -163,7 +171,8 @@ const ParamTable<LocatorConfig>& LocatorConfig::table() {
           .add("bearing_outlier_share", &C::bearing_outlier_share, "",
                "Share of bearings that are reflections (particle).", Range::open(0.0, 0.5))
           .add("elevation_outlier_share", &C::elevation_outlier_share, "",
-               "Share of elevations that are shadowed, read high (particle).", Range::open(0.0, 0.5))
+               "Share of elevations that are shadowed, read high (particle).",
+               Range::open(0.0, 0.5))
           .add("lost_sigma", &C::lost_sigma, "m",
                "Worst-axis sigma beyond which the track is lost (particle).", Range::above(0.0))
           .add("mirror_memory", &C::mirror_memory, "s",

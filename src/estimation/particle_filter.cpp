@@ -310,8 +310,9 @@ MeasurementFit ParticleFilter::weightBearing(const Eigen::Vector3d& board,
               (rho2_ + lz_.square()).rsqrt() -
           1.0f;
     // The elevation's own mixture: its von Mises or, shadowed, uniform over [-90, 90] deg.
-    inlier_ *= blend(el_scale_outside, el_scale_inside) * fastExp(blend(el_outside, el_inside) * lz_) +
-               static_cast<float>(m.elevation_outlier_share / kPi);
+    inlier_ *=
+        blend(el_scale_outside, el_scale_inside) * fastExp(blend(el_outside, el_inside) * lz_) +
+        static_cast<float>(m.elevation_outlier_share / kPi);
   }
   // The field of view's prior on the side: behind (lx < 0) counts behind_weight.
   inlier_ *= 1.0f + static_cast<float>(m.behind_weight - 1.0) * step(-lx_);

@@ -217,10 +217,10 @@ double ParticleTracker::sigmaScale(const TrackedMeasurement& m) {
   // A board's slowly varying error counted as independent readings would outweigh the
   // ranges; with no range the bearings are all the direction there is, and only one
   // advertising interval's readings (one per channel) count as one.
-  const double tau = range               ? config_.range_decorrelation_time
-                     : rangedAt(m.t)     ? config_.bearing_decorrelation_time
-                                         : std::min(config_.bearing_decorrelation_time,
-                                                    kUnrangedBearingDecorrelation);
+  const double tau =
+      range           ? config_.range_decorrelation_time
+      : rangedAt(m.t) ? config_.bearing_decorrelation_time
+                      : std::min(config_.bearing_decorrelation_time, kUnrangedBearingDecorrelation);
   if (!(dt < tau)) {
     return 1.0;
   }

@@ -52,17 +52,17 @@ struct RealisticFigures {
   // (multipath changes with the geometry, so a person who stands keeps the error),
   // heavy-tailed noise per event, reflections, elevations 2-11 deg low with a few shadowed
   // high. Together: |azimuth error| median 8 deg, p95 30 deg, as measured.
-  double aoa_reflection = 0.05;                 ///< chance an event reports a wrong direction
-  double aoa_bias_sigma = deg2rad(3.5);         ///< rad, per board azimuth bias, Gaussian
-  double aoa_slow_sigma = deg2rad(6.0);         ///< rad, Gauss-Markov along the tag's path
-  double aoa_slow_length = 1.5;                 ///< m of the tag's path (board frame) per decorrelation
-  double aoa_slow_time = 20.0;                  ///< s: the room changes too, slowly
-  double aoa_event_scale = deg2rad(5.0);        ///< rad, Student-t scale per event
-  double aoa_event_dof = 3.0;                   ///< its degrees of freedom (heavy tails)
+  double aoa_reflection = 0.05;           ///< chance an event reports a wrong direction
+  double aoa_bias_sigma = deg2rad(3.5);   ///< rad, per board azimuth bias, Gaussian
+  double aoa_slow_sigma = deg2rad(6.0);   ///< rad, Gauss-Markov along the tag's path
+  double aoa_slow_length = 1.5;           ///< m of the tag's path (board frame) per decorrelation
+  double aoa_slow_time = 20.0;            ///< s: the room changes too, slowly
+  double aoa_event_scale = deg2rad(5.0);  ///< rad, Student-t scale per event
+  double aoa_event_dof = 3.0;             ///< its degrees of freedom (heavy tails)
   double aoa_elevation_bias_min = deg2rad(-11.0);  ///< rad, per board elevation bias, uniform
   double aoa_elevation_bias_max = deg2rad(-2.0);   ///< rad
-  double aoa_shadow = 0.03;                     ///< chance an elevation reads high (body shadowing)
-  double aoa_shadow_max = 0.6;                  ///< rad (35 deg), that excess, uniform from 5 deg
+  double aoa_shadow = 0.03;               ///< chance an elevation reads high (body shadowing)
+  double aoa_shadow_max = 0.6;            ///< rad (35 deg), that excess, uniform from 5 deg
   double tdoa_offset_max = 0.1;           ///< m, per anchor, uniform +-
   double tdoa_slow_sigma = 0.05;          ///< m, per anchor, Gauss-Markov on top of tdoa_sigma
   double tdoa_slow_tau = 3.0;             ///< s

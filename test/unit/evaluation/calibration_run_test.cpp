@@ -98,8 +98,8 @@ TEST(CalibrationRun, RemovesMostOfTheRangeBiasAndTheMountingError) {
       const double bias = sim::AoaErrorState(designed, hardware).azimuthBias();
       const double left = wrapAngle(mounting - bias - result.boards[i].fit.yaw_offset);
       std::printf("hardware %d, board %s: mounted %+.2f deg, bias %+.2f deg, fitted %+.2f deg\n",
-                  static_cast<int>(hardware), designed.id.c_str(), rad2deg(mounting),
-                  rad2deg(bias), rad2deg(result.boards[i].fit.yaw_offset));
+                  static_cast<int>(hardware), designed.id.c_str(), rad2deg(mounting), rad2deg(bias),
+                  rad2deg(result.boards[i].fit.yaw_offset));
       // What is left: a real board's slowly varying error (6 deg) holds still while the
       // person stands at a tape point, so each of the ~18 points a board sees within 50 deg
       // of its boresight is one draw of it (the mean's sigma 1.4 deg), and the tables' edge
