@@ -57,6 +57,9 @@ TEST(StandingExperiments, StaticParamsAreValidated) {
 // thesis: errors similar in all directions, standard deviation within 0.2 m, Figures
 // 5.13-5.14); the TWR modules alone, three of them close together, are far worse (its
 // Figures 5.10-5.11: errors of metres where a module is blocked, spread up to 1 m).
+// Real boards' bearings (issue 35) widen both: a standing person keeps a board's slowly
+// varying 6 deg, so the error of the mean is one draw of it (2 sigma at 2.5 m: 0.5 m),
+// and their heavy-tailed events (Student-t, scale 5 deg: 0.22 m at 2.5 m) the spread.
 TEST(StandingExperiments, Experiment1SpotAoaHoldsInEveryDirectionTwrAloneDoesNot) {
   const ClosedLoopConfig c = test::shippedLoop("spot");
   const auto both = runStaticAccuracy(c.layout, c.world, c.locator, shortStatic());
@@ -64,8 +67,8 @@ TEST(StandingExperiments, Experiment1SpotAoaHoldsInEveryDirectionTwrAloneDoesNot
   double worst_both = 0.0;
   for (const StaticPoint& p : both) {
     EXPECT_GE(p.usable, 0.95) << "direction " << rad2deg(p.direction);
-    EXPECT_LT(p.mean_error, 0.3) << "direction " << rad2deg(p.direction);
-    EXPECT_LT(p.spread, 0.2) << "direction " << rad2deg(p.direction);
+    EXPECT_LT(p.mean_error, 0.5) << "direction " << rad2deg(p.direction);
+    EXPECT_LT(p.spread, 0.25) << "direction " << rad2deg(p.direction);
     worst_both = std::max(worst_both, p.mean_error);
   }
   const auto twr = runStaticAccuracy(twrOnly(c.layout), c.world, c.locator, shortStatic());
