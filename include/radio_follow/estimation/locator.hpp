@@ -87,7 +87,7 @@ struct LocatorConfig {
   double bearing_outlier_share = 0.05;
   /// Share of elevations that are shadowed (the wearer's body between tag and board: the
   /// elevation reads high while the azimuth holds).
-  double elevation_outlier_share = 0.1;
+  double elevation_outlier_share = BearingLikelihood().elevation_outlier_share;
   /// Worst-axis sigma beyond which a ranged track is LOST and restarts (or twice
   /// max_relative_sigma times the distance, if larger), m.
   double lost_sigma = 1.0;
