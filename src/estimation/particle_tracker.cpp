@@ -74,6 +74,9 @@ ParticleTracker::ParticleTracker(const Layout& layout, const ParticleTrackerConf
       mirror_(mirrorConfig(config.filter)),
       rss_pairs_(opposedBoardPairs(layout.aoa_boards)) {
   accumulates_ = layout.twr_modules.size() <= 1 && layout.aoa_boards.empty();
+  for (const auto& b : layout.aoa_boards) {
+    bearing_origin_ += b.position.head<2>() / static_cast<double>(layout.aoa_boards.size());
+  }
   std::vector<Eigen::Vector3d> modules;
   for (const auto& m : layout.twr_modules) {
     modules.push_back(m.position);
@@ -499,11 +502,14 @@ TrackerOutput ParticleTracker::update(double now) {
   out.hypotheses = 1;
   out.hypothesis_weight = 1.0;
   if (!ranged) {
-    // Direction only: where along it is the prior's guess.
+    // Direction only, along the ray from where the bearings are taken (a board ahead of
+    // base_link would otherwise turn it by the parallax of a distance nobody measured);
+    // where along it is the prior's guess.
     const Eigen::Vector3d relative = pose_.fromFixed(position);
-    const double heading = std::atan2(relative.y(), relative.x());
-    out.position = pose_.toFixed({config_.default_range * std::cos(heading),
-                                  config_.default_range * std::sin(heading), position.z()});
+    const Eigen::Vector2d ray = relative.head<2>() - bearing_origin_;
+    const Eigen::Vector2d along =
+        bearing_origin_ + config_.default_range * ray.normalized();
+    out.position = pose_.toFixed({along.x(), along.y(), position.z()});
     out.status = TargetStatus::kHeadingOnly;
     return out;
   }

@@ -189,6 +189,9 @@ class ParticleTracker {
   /// the field of view's prior (BearingLikelihood::behind_weight) decides the side until
   /// the data do.
   bool boards_one_way_ = false;
+  /// Where the bearings are taken, robot frame: the boards' mean position (the origin
+  /// without boards). A direction alone is a ray from here.
+  Eigen::Vector2d bearing_origin_ = Eigen::Vector2d::Zero();
   /// One epoch cannot place the target (at most one TWR module and no AoA board: one
   /// ring, plus TDoA hyperbolae that only give a direction): a cloud too wide to report
   /// is kept converging (reported LOST) instead of restarting from the newest epoch,

@@ -582,6 +582,27 @@ TEST(ParticleTracker, OneBoardNeverTurnsItsBackOnAPersonInFront) {
   }
 }
 
+TEST(ParticleTracker, ADirectionAloneIsARayFromTheBoard) {
+  // A board 0.5 m ahead of base_link, exact bearings of a person 1.5 m from it at 50 deg
+  // and no range: the reported point lies on the board's ray (from base_link it would be
+  // 5 deg off at the assumed 3 m), at default_range from the board.
+  Layout layout = oneBoard();
+  layout.aoa_boards[0].position.x() = 0.5;
+  Locator locator(layout, particleConfig());
+  const double a = deg2rad(50.0);
+  const Eigen::Vector3d board = layout.aoa_boards[0].position;
+  LocatorEstimate e;
+  for (int k = 1; k <= 100; ++k) {
+    const double t = 0.1 * k;
+    locator.addBearing("aoa", a, 0.0, -60.0, t);
+    e = locator.update(t + 0.01);
+  }
+  ASSERT_EQ(e.status, TargetStatus::kHeadingOnly);
+  const Eigen::Vector2d ray = e.position.head<2>() - board.head<2>();
+  EXPECT_NEAR(rad2deg(std::atan2(ray.y(), ray.x())), 50.0, 2.0);
+  EXPECT_NEAR(ray.norm(), particleConfig().default_range, 1e-9);
+}
+
 TEST(ParticleTracker, OneBoardFindsAPersonBehindWhenTheRobotTurns) {
   // The evidence for behind: as the robot turns, a tag behind the board moves the other
   // way in the board's frame than its mirror image in front would. It builds up over
