@@ -507,8 +507,7 @@ TrackerOutput ParticleTracker::update(double now) {
     // where along it is the prior's guess.
     const Eigen::Vector3d relative = pose_.fromFixed(position);
     const Eigen::Vector2d ray = relative.head<2>() - bearing_origin_;
-    const Eigen::Vector2d along =
-        bearing_origin_ + config_.default_range * ray.normalized();
+    const Eigen::Vector2d along = bearing_origin_ + config_.default_range * ray.normalized();
     out.position = pose_.toFixed({along.x(), along.y(), position.z()});
     out.status = TargetStatus::kHeadingOnly;
     return out;
