@@ -169,6 +169,9 @@ void Layout::validate() const {
     require(finite(b.position), path + "position", b.position.transpose(), "finite metres");
     require(b.field_of_view > 0.0 && b.field_of_view <= kPi / 2.0, path + "field_of_view_deg",
             rad2deg(b.field_of_view), "a half-angle in (0, 90] degrees");
+    require(std::abs(b.elevation_offset) <= kMaxElevationOffset, path + "elevation_offset_deg",
+            rad2deg(b.elevation_offset),
+            "degrees within +-30 (a board mounted tilted: its pitch in rpy_deg)");
   }
   for (std::size_t i = 0; i < tdoa_anchors.size(); ++i) {
     const TdoaAnchor& a = tdoa_anchors[i];
@@ -262,7 +265,9 @@ Layout parseLayout(const std::string& yaml_text, const std::string& origin) {
   const YAML::Node aoa = root["aoa_boards"];
   for (std::size_t i = 0; aoa.IsSequence() && i < aoa.size(); ++i) {
     const std::string path = itemPath("aoa_boards", i);
-    requireYamlKeys(aoa[i], {"id", "frame_id", "kind", "position", "rpy_deg", "field_of_view_deg"},
+    requireYamlKeys(aoa[i],
+                    {"id", "frame_id", "kind", "position", "rpy_deg", "field_of_view_deg",
+                     "elevation_offset_deg"},
                     path);
     AoaBoard b;
     b.id = yamlScalar<std::string>(aoa[i], "id", path, "a board name");
@@ -282,6 +287,9 @@ Layout parseLayout(const std::string& yaml_text, const std::string& origin) {
     const double default_fov = rad2deg(b.field_of_view);
     b.field_of_view = deg2rad(yamlScalar<double>(aoa[i], "field_of_view_deg", path,
                                                  "a half-angle in degrees", &default_fov));
+    const double no_offset = 0.0;
+    b.elevation_offset = deg2rad(yamlScalar<double>(aoa[i], "elevation_offset_deg", path,
+                                                    "an angle in degrees", &no_offset));
     layout.aoa_boards.push_back(b);
   }
 

@@ -145,6 +145,10 @@ std::string writeLayout(const Layout& layout, const std::vector<std::string>& he
           << vector(rpyDegrees(b.orientation.toRotationMatrix()));
       out << YAML::Key << "field_of_view_deg" << YAML::Value
           << flowNumbers({rad2deg(b.field_of_view)})[0];
+      if (b.elevation_offset != 0.0) {
+        out << YAML::Key << "elevation_offset_deg" << YAML::Value
+            << flowNumbers({rad2deg(b.elevation_offset)})[0];
+      }
       out << YAML::EndMap;
     }
     out << YAML::EndSeq;
@@ -188,6 +192,11 @@ std::string writeCalibratedLayout(const std::string& yaml_text, const std::strin
   YAML::Node aoa = root["aoa_boards"];
   for (std::size_t i = 0; aoa.IsSequence() && i < aoa.size(); ++i) {
     const std::string id = aoa[i]["id"].as<std::string>();
+    if (const auto elevation = update.elevation_offset.find(id);
+        elevation != update.elevation_offset.end()) {
+      aoa[i]["elevation_offset_deg"] = flowNumbers({rad2deg(elevation->second)})[0];
+      boards_done.insert(id);
+    }
     const auto found = update.yaw_offset.find(id);
     if (found == update.yaw_offset.end()) {
       continue;
@@ -212,6 +221,10 @@ std::string writeCalibratedLayout(const std::string& yaml_text, const std::strin
             "a module of the layout " + origin);
   }
   for (const auto& kv : update.yaw_offset) {
+    require(boards_done.count(kv.first) > 0, "aoa_boards", kv.first,
+            "a board of the layout " + origin);
+  }
+  for (const auto& kv : update.elevation_offset) {
     require(boards_done.count(kv.first) > 0, "aoa_boards", kv.first,
             "a board of the layout " + origin);
   }

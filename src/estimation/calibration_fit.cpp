@@ -124,16 +124,20 @@ RangeCalibrationFit fitRangeCalibration(const std::vector<RangeSample>& samples,
   return fit;
 }
 
-YawOffsetFit fitYawOffset(const std::vector<AzimuthSample>& samples, double outlier_sigmas,
-                          double min_outlier_angle) {
+namespace {
+
+/// fitYawOffset's robust circular mean of truth - measured; `what` names the fit in
+/// errors.
+YawOffsetFit fitAngleOffset(const std::vector<AzimuthSample>& samples, const std::string& what,
+                            double outlier_sigmas, double min_outlier_angle) {
   if (samples.size() < 5) {
-    throw std::invalid_argument("yaw offset: " + std::to_string(samples.size()) +
+    throw std::invalid_argument(what + ": " + std::to_string(samples.size()) +
                                 " samples, at least 5 needed");
   }
   std::vector<double> errors;
   for (const auto& s : samples) {
     if (!std::isfinite(s.measured) || !std::isfinite(s.truth)) {
-      throw std::invalid_argument("yaw offset: a sample is not finite");
+      throw std::invalid_argument(what + ": a sample is not finite");
     }
     errors.push_back(wrapAngle(s.truth - s.measured));
   }
@@ -181,6 +185,28 @@ YawOffsetFit fitYawOffset(const std::vector<AzimuthSample>& samples, double outl
   fit.rejected = errors.size() - fit.used;
   fit.residual_sigma = std::sqrt(sum / static_cast<double>(fit.used));
   fit.rms_before = std::sqrt(before / static_cast<double>(fit.used));
+  return fit;
+}
+
+}  // namespace
+
+YawOffsetFit fitYawOffset(const std::vector<AzimuthSample>& samples, double outlier_sigmas,
+                          double min_outlier_angle) {
+  return fitAngleOffset(samples, "yaw offset", outlier_sigmas, min_outlier_angle);
+}
+
+ElevationOffsetFit fitElevationOffset(const std::vector<ElevationSample>& samples) {
+  // The robust mean of truth - measured, on the samples with the two swapped.
+  std::vector<AzimuthSample> swapped;
+  for (const ElevationSample& s : samples) {
+    swapped.push_back({s.truth, s.measured});
+  }
+  const YawOffsetFit mean = fitAngleOffset(swapped, "elevation offset", 4.0, 0.1);
+  ElevationOffsetFit fit;
+  fit.elevation_offset = mean.yaw_offset;
+  fit.used = mean.used;
+  fit.rejected = mean.rejected;
+  fit.residual_sigma = mean.residual_sigma;
   return fit;
 }
 

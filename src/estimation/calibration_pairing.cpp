@@ -155,6 +155,11 @@ double trueAzimuth(const AoaBoard& board, const Eigen::Vector3d& tag) {
   return std::atan2(v.y(), v.x());
 }
 
+double trueElevation(const AoaBoard& board, const Eigen::Vector3d& tag) {
+  const Eigen::Vector3d v = board.orientation.conjugate() * (tag - board.position);
+  return std::atan2(v.z(), v.head<2>().norm());
+}
+
 CalibrationSamples pairWithReference(const std::vector<CalibrationMeasurement>& measurements,
                                      const Layout& layout, const CalibrationReference& reference) {
   CalibrationSamples out;
@@ -195,6 +200,9 @@ CalibrationSamples pairWithReference(const std::vector<CalibrationMeasurement>& 
       continue;
     }
     out.azimuths[board->id].push_back({m.value, trueAzimuth(*board, tag)});
+    if (std::isfinite(m.elevation)) {
+      out.elevations[board->id].push_back({m.elevation, trueElevation(*board, tag)});
+    }
   }
   return out;
 }
@@ -249,6 +257,8 @@ LayoutCalibration fitLayoutCalibration(const CalibrationSamples& samples, const 
     out.boards.push_back(fitSensor<YawOffsetFit>(
         b.id, samples.azimuths, min_samples,
         [](const std::vector<AzimuthSample>& s) { return fitYawOffset(s); }));
+    out.elevations.push_back(
+        fitSensor<ElevationOffsetFit>(b.id, samples.elevations, min_samples, fitElevationOffset));
   }
   return out;
 }

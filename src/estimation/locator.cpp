@@ -3,6 +3,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -198,6 +199,9 @@ bool Locator::addBearing(const std::string& board_id, double azimuth, double ele
     return false;
   }
   const std::size_t index = static_cast<std::size_t>(board - layout_.aoa_boards.data());
+  // The board's calibrated elevation offset (a real board reads low): both estimators,
+  // and the published bearing, see the corrected elevation.
+  elevation = std::clamp(elevation - board->elevation_offset, -0.5 * kPi, 0.5 * kPi);
   BearingSlot& slot = bearings_[index];
   slot.azimuth = azimuth;
   slot.elevation = elevation;

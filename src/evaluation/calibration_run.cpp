@@ -81,6 +81,7 @@ CalibrationResult runCalibration(const Layout& layout, const sim::WorldConfig& w
   sim::World sim_world(layout, scenario, world);
   std::vector<std::vector<estimation::RangeSample>> ranges(layout.twr_modules.size());
   std::vector<std::vector<estimation::AzimuthSample>> azimuths(layout.aoa_boards.size());
+  std::vector<std::vector<estimation::ElevationSample>> elevations(layout.aoa_boards.size());
   while (!sim_world.finished()) {
     const sim::StepEvents events = sim_world.step(0.0, 0.0, 0.01);  // the robot stands
     for (const sim::TwrEvent& e : events.twr) {
@@ -102,6 +103,8 @@ CalibrationResult runCalibration(const Layout& layout, const sim::WorldConfig& w
       // bearing says nothing about how the board is mounted.
       if (local.x() > 0.0 && std::abs(truth) <= params.aoa_max_azimuth) {
         azimuths[e.board].push_back({e.sample.azimuth, truth});
+        elevations[e.board].push_back(
+            {e.sample.elevation, std::atan2(local.z(), local.head<2>().norm())});
       }
     }
   }
@@ -120,7 +123,9 @@ CalibrationResult runCalibration(const Layout& layout, const sim::WorldConfig& w
     const estimation::YawOffsetFit fit = estimation::fitYawOffset(azimuths[i]);
     board.orientation =
         board.orientation * Eigen::AngleAxisd(fit.yaw_offset, Eigen::Vector3d::UnitZ());
-    result.boards.push_back({board.id, fit});
+    const estimation::ElevationOffsetFit elevation = estimation::fitElevationOffset(elevations[i]);
+    board.elevation_offset = elevation.elevation_offset;
+    result.boards.push_back({board.id, fit, elevation});
   }
   return result;
 }
@@ -143,6 +148,7 @@ LayoutCalibrationUpdate CalibrationResult::update() const {
   }
   for (const BoardCalibration& b : boards) {
     u.yaw_offset[b.id] = b.fit.yaw_offset;
+    u.elevation_offset[b.id] = b.elevation.elevation_offset;
   }
   return u;
 }

@@ -203,14 +203,19 @@ void printTable(const est::LayoutCalibration& c, const rf::Layout& layout,
   if (c.boards.empty()) {
     return;
   }
-  std::printf("\n%-10s %7s %8s %11s %10s  %s\n", "board", "used", "rejected", "rms before",
-              "rms after", "yaw offset: mounting + azimuth bias (added to rpy_deg yaw)");
+  std::printf("\n%-10s %7s %8s %11s %10s  %-22s %s\n", "board", "used", "rejected", "rms before",
+              "rms after", "yaw: mounting + bias", "elevation bias (elevation_offset_deg)");
   for (std::size_t i = 0; i < c.boards.size(); ++i) {
     const auto& b = c.boards[i];
+    const auto& e = c.elevations[i];
     if (b.fit) {
-      std::printf("%-10s %7zu %8zu %7.2f deg %6.2f deg  %+.2f deg\n", b.id.c_str(), b.fit->used,
-                  b.fit->rejected, rf::rad2deg(b.fit->rms_before),
-                  rf::rad2deg(b.fit->residual_sigma), rf::rad2deg(b.fit->yaw_offset));
+      char elevation[64];
+      std::snprintf(elevation, sizeof elevation, "%+.2f deg",
+                    rf::rad2deg(e.fit ? e.fit->elevation_offset : 0.0));
+      std::printf("%-10s %7zu %8zu %7.2f deg %6.2f deg  %+9.2f deg (rpy_deg) %s\n", b.id.c_str(),
+                  b.fit->used, b.fit->rejected, rf::rad2deg(b.fit->rms_before),
+                  rf::rad2deg(b.fit->residual_sigma), rf::rad2deg(b.fit->yaw_offset),
+                  e.fit ? elevation : ("not fitted: " + e.error).c_str());
       continue;
     }
     std::printf("%-10s not fitted, keeps its rpy_deg: %s\n", b.id.c_str(),
@@ -272,6 +277,11 @@ int run(const Options& o) {
   for (const auto& b : c.boards) {
     if (b.fit) {
       update.yaw_offset[b.id] = b.fit->yaw_offset;
+    }
+  }
+  for (const auto& e : c.elevations) {
+    if (e.fit) {
+      update.elevation_offset[e.id] = e.fit->elevation_offset;
     }
   }
   const std::string written = rf::writeCalibratedLayout(

@@ -38,7 +38,15 @@ struct AoaBoard {
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
   /// Half-angle of the cone around boresight in which bearings are trusted, radians.
   double field_of_view = 1.22;  // 70 deg: the thesis found the edges unusable.
+  /// What the board's elevation reads off the true one, radians (reported minus true;
+  /// real XPLR-AOA-1 boards read 2-11 deg low): the locator subtracts it. Fitted by
+  /// calibrate_layout, 0 until then.
+  double elevation_offset = 0.0;
 };
+
+/// Largest elevation offset a layout may carry, rad: beyond it a board is mounted tilted
+/// (set its pitch in rpy_deg) or the number is a typo.
+constexpr double kMaxElevationOffset = 0.5236;  // 30 deg
 
 /// A TDoA anchor with a known position in the fixed frame.
 struct TdoaAnchor {

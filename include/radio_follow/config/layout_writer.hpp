@@ -17,6 +17,9 @@ struct LayoutCalibrationUpdate {
   /// Yaw offsets by board ID, rad: the board is mounted rotated by this much about its
   /// own z axis from the layout's `rpy_deg` (estimation::YawOffsetFit::yaw_offset).
   std::map<std::string, double> yaw_offset;
+  /// Elevation offsets by board ID, rad (AoaBoard::elevation_offset), written as
+  /// `elevation_offset_deg`.
+  std::map<std::string, double> elevation_offset;
 };
 
 /// The orientation [roll, pitch, yaw] (deg, the layout's convention R = Rz Ry Rx) of a

@@ -59,5 +59,22 @@ struct YawOffsetFit {
 YawOffsetFit fitYawOffset(const std::vector<AzimuthSample>& samples, double outlier_sigmas = 4.0,
                           double min_outlier_angle = 0.1);
 
+/// One elevation a board reported and the tag's true elevation in the board frame, rad.
+using ElevationSample = AzimuthSample;
+
+/// A board's fitted elevation offset (AoaBoard::elevation_offset): what it reads above
+/// the truth on average.
+struct ElevationOffsetFit {
+  double elevation_offset = 0.0;  ///< rad, measured - truth
+  std::size_t used = 0;
+  std::size_t rejected = 0;
+  double residual_sigma = 0.0;  ///< rad, of the used samples after the correction
+};
+
+/// Robust mean of measured - truth as fitYawOffset's: readings the wearer's body shadowed
+/// (5-35 deg high) are refused as outliers. Throws std::invalid_argument with fewer than
+/// 5 samples or non-finite ones.
+ElevationOffsetFit fitElevationOffset(const std::vector<ElevationSample>& samples);
+
 }  // namespace estimation
 }  // namespace radio_follow

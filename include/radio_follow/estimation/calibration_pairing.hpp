@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -75,12 +76,15 @@ struct CalibrationMeasurement {
   double stamp = 0.0;        ///< header stamp, s
   double since_start = 0.0;  ///< recording time from the bag's start, s
   double value = 0.0;        ///< raw range, m, or azimuth in the board frame, rad
+  /// Bearings: the elevation in the board frame, rad; NaN: not recorded.
+  double elevation = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Every sensor's samples paired with the reference, and what was not paired.
 struct CalibrationSamples {
   std::map<std::string, std::vector<RangeSample>> ranges;      ///< by module ID
   std::map<std::string, std::vector<AzimuthSample>> azimuths;  ///< by board ID
+  std::map<std::string, std::vector<ElevationSample>> elevations;  ///< by board ID
   std::size_t gap_dropped = 0;      ///< no reference sample within max_gap
   std::size_t outside_windows = 0;  ///< tape points: not in any window
   std::size_t outside_view = 0;     ///< bearings with the tag outside the board's field of view
@@ -89,10 +93,10 @@ struct CalibrationSamples {
 };
 
 /// True distance |tag - module| (3D, module position from the layout) and true azimuth
-/// atan2(y, x) of the tag in the board frame (board pose from the layout) of every
-/// measurement the reference covers. Bearings whose true direction lies outside the
-/// board's field_of_view are left out: the locator does not trust them either, and a
-/// board facing away reports reflections there, not an offset.
+/// atan2(y, x) of the tag in the board frame (board pose from the layout), and its true
+/// elevation when the bearing carries one, of every measurement the reference covers. Bearings
+/// whose true direction lies outside the board's field_of_view are left out: the locator does not
+/// trust them either, and a board facing away reports reflections there, not an offset.
 CalibrationSamples pairWithReference(const std::vector<CalibrationMeasurement>& measurements,
                                      const Layout& layout, const CalibrationReference& reference);
 
@@ -108,17 +112,21 @@ struct SensorCalibration {
 struct LayoutCalibration {
   std::vector<SensorCalibration<RangeCalibrationFit>> modules;  ///< layout order
   std::vector<SensorCalibration<YawOffsetFit>> boards;          ///< layout order; empty: skipped
+  std::vector<SensorCalibration<ElevationOffsetFit>> elevations;  ///< as `boards`
   std::size_t fitted() const;
 };
 
 /// Fits every module of the layout (fitRangeCalibration of `degree`) and, with
-/// `fit_boards`, every board's yaw offset (fitYawOffset). A sensor with fewer than
+/// `fit_boards`, every board's yaw and elevation offsets (fitYawOffset,
+/// fitElevationOffset). A sensor with fewer than
 /// `min_samples` paired samples, or whose fit throws, gets an error instead of a fit.
 LayoutCalibration fitLayoutCalibration(const CalibrationSamples& samples, const Layout& layout,
                                        int degree, std::size_t min_samples, bool fit_boards);
 
 /// The tag's true azimuth in a board's frame, rad (counter-clockwise, 0 = boresight).
 double trueAzimuth(const AoaBoard& board, const Eigen::Vector3d& tag);
+/// The tag's true elevation in a board's frame, rad (towards the board's +z).
+double trueElevation(const AoaBoard& board, const Eigen::Vector3d& tag);
 
 }  // namespace estimation
 }  // namespace radio_follow

@@ -37,10 +37,12 @@ struct ModuleCalibration {
 struct BoardCalibration {
   std::string id;
   estimation::YawOffsetFit fit;
+  estimation::ElevationOffsetFit elevation;
 };
 
 struct CalibrationResult {
-  /// The input layout with every module's calibration and every board's yaw from the fits.
+  /// The input layout with every module's calibration and every board's yaw and
+  /// elevation offset from the fits.
   Layout layout;
   std::vector<ModuleCalibration> modules;
   std::vector<BoardCalibration> boards;
@@ -53,9 +55,9 @@ struct CalibrationResult {
 /// hardware and noise seeds) report while the person stands at the points of `params`,
 /// and each module's (raw range, tape-measured distance) pairs go through
 /// estimation::fitRangeCalibration, each board's (azimuth, tape-measured azimuth) pairs
-/// through estimation::fitYawOffset. It sees only the sensors' output and the points,
-/// never the simulator's error model. Throws ParamError on bad parameters and
-/// std::invalid_argument when a sensor gave too few samples to fit.
+/// through estimation::fitYawOffset and its elevations through fitElevationOffset. It sees only the
+/// sensors' output and the points, never the simulator's error model. Throws ParamError on bad
+/// parameters and std::invalid_argument when a sensor gave too few samples to fit.
 CalibrationResult runCalibration(const Layout& layout, const sim::WorldConfig& world,
                                  const CalibrationRunParams& params = {});
 

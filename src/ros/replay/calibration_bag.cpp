@@ -165,7 +165,7 @@ CalibrationBag loadCalibrationBag(const std::string& path, const Layout& layout,
         continue;
       }
       data.measurements.push_back({Measurement::Kind::kBearing, b->header.frame_id,
-                                   b->header.stamp.toSec(), since_start, b->azimuth});
+                                   b->header.stamp.toSec(), since_start, b->azimuth, b->elevation});
     }
   }
   return data;

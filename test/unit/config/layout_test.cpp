@@ -22,7 +22,7 @@ twr_modules:
   - {id: "5A84", frame_id: rear, position: [-0.07, -0.04, 0.093]}
 aoa_boards:
   - {id: left, kind: ant_b10, position: [0, 0.065, 0.25], rpy_deg: [0, 0, 90],
-     field_of_view_deg: 60}
+     field_of_view_deg: 60, elevation_offset_deg: -6.5}
 tdoa_anchors:
   - {id: A, position: [1, 0, 0]}
   - {id: B, position: [0, 1, 0]}
@@ -51,6 +51,7 @@ TEST(Layout, ParsesEveryField) {
   EXPECT_EQ(board.frame_id, "aoa_left");
   EXPECT_EQ(board.kind, AoaBoardKind::kAntB10);
   EXPECT_NEAR(board.field_of_view, deg2rad(60.0), 1e-12);
+  EXPECT_NEAR(board.elevation_offset, deg2rad(-6.5), 1e-12);
   // Yaw 90 deg: the board's boresight (x) points along the robot's +y.
   const Eigen::Vector3d boresight = board.orientation * Eigen::Vector3d::UnitX();
   EXPECT_NEAR(boresight.y(), 1.0, 1e-12);
@@ -89,6 +90,8 @@ TEST(Layout, RejectsBadFieldsNamingThem) {
   expectRejected("aoa_boards: [{id: b, kind: xplr, position: [0, 0, 0]}]", "aoa_boards[0].kind");
   expectRejected("aoa_boards: [{id: b, position: [0, 0, 0], field_of_view_deg: 120}]",
                  "aoa_boards[0].field_of_view_deg");
+  expectRejected("aoa_boards: [{id: b, position: [0, 0, 0], elevation_offset_deg: 45}]",
+                 "aoa_boards[0].elevation_offset_deg");
   expectRejected("tdoa_anchors: [{id: A, position: [0, 0, 0]}]", "tdoa_anchors");
   expectRejected("twr_modules: {id: 1}", "twr_modules");
   expectRejected("[1, 2", "layout");

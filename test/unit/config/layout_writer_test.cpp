@@ -62,13 +62,24 @@ TEST(WriteCalibratedLayout, AddsAMissingRpyAndRefusesUnknownSensors) {
       "aoa_boards:\n  - id: b\n    position: [0, 0, 0]\n";
   LayoutCalibrationUpdate update;
   update.yaw_offset["b"] = deg2rad(-4.0);
+  update.elevation_offset["b"] = deg2rad(-7.25);
   update.range_calibration["1"] = {0.2, 1.0};
   const std::string text = writeCalibratedLayout(input, "in", update, {});
   const YAML::Node root = YAML::Load(text);
   EXPECT_NEAR(root["aoa_boards"][0]["rpy_deg"][2].as<double>(), -4.0, 1e-9);
+  EXPECT_NEAR(root["aoa_boards"][0]["elevation_offset_deg"].as<double>(), -7.25, 1e-9);
+  EXPECT_NEAR(parseLayout(text, "written").aoa_boards[0].elevation_offset, deg2rad(-7.25), 1e-9);
+  // writeLayout keeps it too.
+  EXPECT_NEAR(parseLayout(writeLayout(parseLayout(text, "written"), {}), "again")
+                  .aoa_boards[0]
+                  .elevation_offset,
+              deg2rad(-7.25), 1e-9);
   EXPECT_EQ(root["twr_modules"][0]["calibration"].as<std::vector<double>>(),
             (std::vector<double>{0.2, 1.0}));
   update.range_calibration["2"] = {0.0, 1.0};
+  EXPECT_THROW(writeCalibratedLayout(input, "in", update, {}), ParamError);
+  update.range_calibration.erase("2");
+  update.elevation_offset["c"] = 0.0;
   EXPECT_THROW(writeCalibratedLayout(input, "in", update, {}), ParamError);
   EXPECT_THROW(writeCalibratedLayout("twr_modules: 3\n", "in", {}, {}), ParamError);
 }

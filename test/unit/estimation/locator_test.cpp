@@ -185,6 +185,31 @@ twr_modules:
   EXPECT_LT((e.position - truth).norm(), 1e-4);
 }
 
+TEST(Locator, SubtractsTheBoardsElevationOffset) {
+  // A board reading 8 deg low, calibrated (elevation_offset_deg: -8): the locator sees the
+  // true elevation, which (no range) alone places the person along the bearing.
+  const Layout layout = parseLayout(R"(
+aoa_boards:
+  - {id: front, position: [0.0, 0.0, 0.4], elevation_offset_deg: -8}
+)",
+                                    "test");
+  LocatorConfig config = test::solverBackend();
+  Locator locator(layout, config);
+  const Eigen::Vector3d truth(2.0, 0.5, config.height);
+  const AoaBoard& board = layout.aoa_boards[0];
+  const Eigen::Vector2d ae =
+      predictBearing(truth, board.position, board.orientation.toRotationMatrix());
+  LocatorEstimate e;
+  for (std::size_t k = 0; k < kMinRssiToChoose; ++k) {
+    ASSERT_TRUE(locator.addBearing("front", ae(0), ae(1) - deg2rad(8.0), -60.0, 0.1 * k));
+    e = locator.update(0.1 * k + 0.01);
+  }
+  ASSERT_EQ(e.status, TargetStatus::kHeadingOnly);
+  ASSERT_EQ(e.bearing_angles.size(), 1u);
+  EXPECT_NEAR(e.bearing_angles[0](1), ae(1), 1e-12);
+  EXPECT_LT((e.position - truth).norm(), 0.1);
+}
+
 TEST(Locator, TwoRangesNeedAWarmStart) {
   LocatorConfig config = test::solverBackend();
   Locator locator(layoutFile("tracked.yaml"), config);
