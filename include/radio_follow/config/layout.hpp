@@ -7,6 +7,11 @@
 
 namespace radio_follow {
 
+/// Height of the person's tag in a layout's fixed frame unless configured, m: on the
+/// chest. The one default of every target_height (locator, solver, particle filter,
+/// simulator, placement advisor, homing controller).
+constexpr double kDefaultTargetHeight = 1.0;
+
 /// A UWB DWM1001 module in tag mode mounted on the robot (two-way ranging).
 struct TwrModule {
   /// Module ID as the driver reports it in UwbRanges.tag_id, e.g. "5722".

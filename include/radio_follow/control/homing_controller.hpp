@@ -9,6 +9,7 @@
 #include "radio_follow/common/param_source.hpp"
 #include "radio_follow/common/pose2.hpp"
 #include "radio_follow/common/time_policy.hpp"
+#include "radio_follow/config/layout.hpp"
 #include "radio_follow/control/follow_law.hpp"
 #include "radio_follow/control/follower_state.hpp"
 #include "radio_follow/control/homing.hpp"
@@ -35,7 +36,7 @@ struct HomingControllerParams {
   double search_speed = 0.15;
   /// Height of the target's UWB antenna in base_link, m: turns a UWB range whose
   /// antenna position is known (onRange's `antenna`) into a horizontal distance.
-  double target_height = 1.0;
+  double target_height = kDefaultTargetHeight;
   RssiModel rssi;
   /// Smoother of the RSSI before `rssi` turns it into a distance (`rssi_filter/...`).
   RssiFilterParams rssi_filter;

@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "radio_follow/config/layout.hpp"
 #include "radio_follow/estimation/measurement_models.hpp"
 
 namespace radio_follow {
@@ -14,11 +15,11 @@ namespace estimation {
 struct InitializerConfig {
   /// 2D mode: the target lies on the plane z = height.
   bool planar = true;
-  double height = 1.0;
+  double height = kDefaultTargetHeight;
   /// Points on the circle of one range in the multi-start (the thesis used a ring too).
   int circle_points = 8;
   /// Distance assumed along a bearing, or around the robot, when no range exists, m.
-  double default_range = 3.0;
+  double default_range = kDefaultRange;
 };
 
 /// Closed-form linear least-squares trilateration (after seed 002 eqs 2-5): subtracting the

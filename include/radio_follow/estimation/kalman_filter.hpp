@@ -8,6 +8,10 @@
 namespace radio_follow {
 namespace estimation {
 
+/// The locator's `process_noise` unless configured: the Kalman filter's and the particle
+/// filter's white-acceleration PSD per axis, m^2/s^3.
+constexpr double kDefaultProcessNoise = 0.5;
+
 enum class MotionModel {
   /// The thesis's model: x_k = x_{k-1} + w, Q = process_noise * I per epoch (m^2).
   kConstantPosition,
@@ -25,7 +29,7 @@ struct KalmanConfig {
   MotionModel model = MotionModel::kConstantPosition;
   /// 2 (2D mode: x, y) or 3 (x, y, z) position dimensions.
   int dims = 2;
-  double process_noise = 1.0;
+  double process_noise = kDefaultProcessNoise;
   /// Initial velocity variance of the constant-velocity model, (m/s)^2.
   double initial_velocity_variance = 1.0;
   /// Probability mass of the chi-square gate (dimension = dims); <= 0 disables gating.

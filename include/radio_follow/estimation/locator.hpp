@@ -43,7 +43,7 @@ struct LocatorConfig {
   Estimator estimator = Estimator::kParticle;
   bool planar = true;                      ///< 2D mode: target on the plane z = height
   double height = ParticleFilter::Config().height;  ///< m
-  double range_sigma = 0.07;               ///< m (real DWM1001 ranges, doc/nodes/locator.md)
+  double range_sigma = RangeLikelihood().sigma;  ///< m (real DWM1001 ranges, doc/nodes/locator.md)
   double tdoa_sigma = 0.1;                 ///< m, when a difference has no variance
   double azimuth_sigma = deg2rad(5.0);     ///< rad
   double elevation_sigma = deg2rad(10.0);  ///< rad
@@ -51,12 +51,11 @@ struct LocatorConfig {
   LossConfig range_loss{LossType::kCauchy, 2.0};
   LossConfig tdoa_loss{LossType::kCauchy, 2.0};
   LossConfig bearing_loss{LossType::kHuber, 2.0};
-  double max_age = 0.5;  ///< s; older measurements are dropped
+  double max_age = ParticleTrackerConfig().max_age;  ///< s; older measurements are dropped
   AoaSelectorConfig aoa;
   MotionModel motion_model = MotionModel::kConstantVelocity;
-  /// See KalmanConfig; the particle filter's acceleration PSD. Not the filters' own
-  /// default (1.0, which their stand-alone tests use): the locator sets both from this.
-  double process_noise = 0.5;
+  /// See KalmanConfig; the particle filter's acceleration PSD (both filters' default).
+  double process_noise = kDefaultProcessNoise;
   /// true: R = the solver's covariance; false: R = measurement_noise * I (thesis: 50).
   bool filter_uses_solver_covariance = true;
   double measurement_noise = 50.0;  ///< m^2
@@ -64,33 +63,33 @@ struct LocatorConfig {
   int max_consecutive_rejections = KalmanConfig().max_consecutive_rejections;
   bool ceres_covariance = false;
   /// Largest position standard deviation (worst axis) still reported as OK, m.
-  double max_position_sigma = 0.5;
+  double max_position_sigma = ParticleTrackerConfig().max_position_sigma;
   /// ... or this fraction of the target's distance, whichever is larger: a bearing's
   /// sideways error grows with distance, and a far target that is DEGRADED (so followed
   /// slowly) only gets farther away. 0 disables.
-  double max_relative_sigma = 0.1;
+  double max_relative_sigma = ParticleTrackerConfig().max_relative_sigma;
   /// Distance assumed along a bearing when no range exists, m.
-  double default_range = 3.0;
+  double default_range = kDefaultRange;
   /// Mirror test: each ranged solve is repeated from the solution's mirror image across
   /// the ranging modules' main axis. When that second solution lies elsewhere and its cost
   /// is within this margin of the first (0.5 chi-square units; 2 = the data prefer one
   /// side by less than about 2 sigma), the data cannot tell the two apart: the estimate is
   /// AMBIGUOUS until a few epochs in a row have preferred one side by more. 0 disables.
-  double ambiguity_margin = 2.0;
+  double ambiguity_margin = ParticleTrackerConfig().ambiguity_margin;
   /// Particle estimator: particles of the main hypothesis (the mirror gets a quarter).
   int particles = static_cast<int>(ParticleFilter::Config().particles);
   /// Share of ranges (and TDoA differences) that are outliers, mostly long (reflections).
-  double range_outlier_share = 0.02;
+  double range_outlier_share = RangeLikelihood().outlier_share;
   /// Mean excess of a long range outlier, m.
-  double range_outlier_length = 1.0;
+  double range_outlier_length = RangeLikelihood().outlier_length;
   /// Share of bearings that are reflections (any direction).
-  double bearing_outlier_share = 0.05;
+  double bearing_outlier_share = BearingLikelihood().outlier_share;
   /// Share of elevations that are shadowed (the wearer's body between tag and board: the
   /// elevation reads high while the azimuth holds).
   double elevation_outlier_share = BearingLikelihood().elevation_outlier_share;
   /// Worst-axis sigma beyond which a ranged track is LOST and restarts (or twice
   /// max_relative_sigma times the distance, if larger), m.
-  double lost_sigma = 1.0;
+  double lost_sigma = ParticleTrackerConfig().lost_sigma;
   /// Particle estimator: time constant over which the mirror test's evidence fades, s.
   double mirror_memory = ParticleTrackerConfig().mirror_memory;
   /// Particle estimator: a person who walks and stands by turns (particle_filter.hpp):
@@ -108,18 +107,18 @@ struct LocatorConfig {
   double bearing_decorrelation_time = ParticleTrackerConfig().bearing_decorrelation_time;
   /// Particle estimator: the slowly varying part of each sensor's error, which filtering
   /// cannot average away (correlated_error.hpp); the floor of the reported covariance.
-  double range_bias_sigma = 0.05;            ///< m, TWR ranges
-  double tdoa_bias_sigma = 0.05;             ///< m, TDoA differences
-  double azimuth_bias_sigma = deg2rad(2.0);  ///< rad, AoA azimuths
+  double range_bias_sigma = ParticleTrackerConfig().range_bias_sigma;      ///< m, TWR ranges
+  double tdoa_bias_sigma = ParticleTrackerConfig().tdoa_bias_sigma;        ///< m, TDoA differences
+  double azimuth_bias_sigma = ParticleTrackerConfig().azimuth_bias_sigma;  ///< rad, AoA azimuths
   /// Particle estimator: seed 001's RSS direction. The RSSI difference of two opposed
   /// boards (rss_direction.hpp) weighs which side of the pair the target is on; an
   /// optional input, off by default.
   bool rss_direction = false;
   /// g: the difference with the target straight ahead of one board of a pair, dB (the
   /// front-to-back drop of one board: doc/nodes/locator.md, "RSS direction").
-  double rss_direction_gain = 6.0;
+  double rss_direction_gain = RssDirectionLikelihood().gain;
   /// Standard deviation of a pair's difference, dB.
-  double rss_direction_sigma = 8.0;
+  double rss_direction_sigma = RssDirectionLikelihood().sigma;
   /// The TDoA anchors' offsets, learnt from the robot's own modules' blinks.
   TdoaCalibrationConfig tdoa_calibration;
 

@@ -38,6 +38,10 @@ struct BearingObservation {
   bool use_elevation = true;  ///< false: the elevation residual is always zero
 };
 
+/// Distance assumed along a bearing when no range exists, m: the one default of the
+/// locator's `default_range` (initializer, particle tracker).
+constexpr double kDefaultRange = 3.0;
+
 /// Everything one solve uses.
 struct ObservationSet {
   std::vector<RangeObservation> ranges;

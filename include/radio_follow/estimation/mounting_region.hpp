@@ -36,7 +36,7 @@ struct TargetArea {
   double from = -kPi;                 ///< rad, sector start (CCW from ahead, +x)
   double to = kPi;                    ///< rad, sector end
   double angle_step = deg2rad(10.0);  ///< rad between points on a ring
-  double height = 1.0;                ///< m, tag height in base_link
+  double height = kDefaultTargetHeight;  ///< m, tag height in base_link
 
   /// The target grid: rings from min_range to max_range, points from `from` to `to`
   /// (a full circle without repeating its end), half a step off the sector's start so

@@ -7,6 +7,7 @@
 #include <functional>
 #include <vector>
 
+#include "radio_follow/estimation/kalman_filter.hpp"
 #include "radio_follow/estimation/rss_direction.hpp"
 
 namespace radio_follow {
@@ -86,8 +87,8 @@ class ParticleFilter {
   struct Config {
     std::size_t particles = 500;
     bool planar = true;
-    double height = 1.0;          ///< z of every particle in planar mode, m
-    double process_noise = 1.0;   ///< white-acceleration PSD per axis, m^2/s^3
+    double height = kDefaultTargetHeight;         ///< z of every particle in planar mode, m
+    double process_noise = kDefaultProcessNoise;  ///< white-acceleration PSD per axis, m^2/s^3
     double vertical_noise = 0.1;  ///< 3D mode: z random-walk PSD, m^2/s
     /// Mean length of a standing spell, s; 0: no standing mode (every particle walks).
     double stand_time = 0.0;

@@ -12,6 +12,7 @@
 #include "radio_follow/common/pose2.hpp"
 #include "radio_follow/common/target_status.hpp"
 #include "radio_follow/config/layout.hpp"
+#include "radio_follow/estimation/measurement_models.hpp"
 #include "radio_follow/estimation/mirror_axis.hpp"
 #include "radio_follow/estimation/particle_filter.hpp"
 #include "radio_follow/estimation/rss_direction.hpp"
@@ -52,7 +53,7 @@ struct ParticleTrackerConfig {
   double max_position_sigma = 0.5;  ///< m, worst axis for OK
   double max_relative_sigma = 0.1;  ///< ... or this fraction of the distance
   double lost_sigma = 1.0;          ///< m, worst axis beyond which the track is LOST
-  double default_range = 3.0;       ///< m, distance reported along a bearing alone
+  double default_range = kDefaultRange;  ///< m, distance reported along a bearing alone
   /// A module's ranges closer in time than this are not independent (real errors stay
   /// correlated over tenths of a second and longer): one arriving dt < this after the
   /// module's previous one counts as dt / this of a measurement (its sigma grows by

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "radio_follow/config/layout.hpp"
 #include "radio_follow/estimation/measurement_models.hpp"
 
 namespace radio_follow {
@@ -27,7 +28,7 @@ std::string toString(LossType type);
 struct SolverConfig {
   /// 2D mode: z is held at `height` (a Ceres subset manifold), 3D mode: z is free.
   bool planar = true;
-  double height = 1.0;
+  double height = kDefaultTargetHeight;
   LossConfig range_loss{LossType::kCauchy, 2.0};
   LossConfig tdoa_loss{LossType::kCauchy, 2.0};
   LossConfig bearing_loss{LossType::kHuber, 2.0};
@@ -38,7 +39,7 @@ struct SolverConfig {
   /// Without any range the distance to the target is unobservable; a weak prior on the
   /// distance from the frame origin keeps the normal equations regular so the direction
   /// (the observable part) can be solved. Metres.
-  double prior_range = 3.0;
+  double prior_range = kDefaultRange;
   double prior_range_sigma = 10.0;
 };
 

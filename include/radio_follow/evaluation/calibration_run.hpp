@@ -21,7 +21,7 @@ struct CalibrationRunParams {
   double dwell = 3.0;             ///< s recorded at each point
   double settle = 0.5;            ///< s standing before recording starts
   double walk_speed = 1.2;        ///< m/s between points (nothing recorded while walking)
-  double tag_height = 1.0;        ///< m, tape-measured like the points
+  double tag_height = kDefaultTargetHeight;  ///< m, tape-measured like the points
   double aoa_max_azimuth = 0.87;  ///< rad (50 deg): points a board sees farther off are unused
   int range_degree = 1;           ///< of each module's calibration polynomial
 

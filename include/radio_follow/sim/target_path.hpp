@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "radio_follow/config/layout.hpp"
 #include "radio_follow/sim/obstacles.hpp"
 #include "radio_follow/sim/robot.hpp"
 
@@ -65,7 +66,7 @@ struct Scenario {
   /// The person's acceleration and deceleration, m/s^2 (0: instant speed changes).
   double target_accel = 1.0;
   /// Height of the target's tags above the ground, metres.
-  double target_height = 1.0;
+  double target_height = kDefaultTargetHeight;
   /// Seconds to simulate; defaults to the target path's end plus `settle_time`.
   double duration = 0.0;
   double settle_time = 10.0;
