@@ -343,6 +343,9 @@ if wanted standing; then
   echo
   shown "\"\$RF_WS\"/devel/lib/radio_follow/standing_experiments --experiment heading --walks 1000"
   "$bin/standing_experiments" --experiment heading --walks 1000
+  echo
+  shown "\"\$RF_WS\"/devel/lib/radio_follow/standing_experiments --experiment heading --walks 1000 --layout xplr_kit"
+  "$bin/standing_experiments" --experiment heading --walks 1000 --layout xplr_kit
   echo "(standing: $(elapsed "$t0") s; deterministic)"
 fi
 
