@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "radio_follow/common/angles.hpp"
+
 namespace radio_follow {
 
 /// Height of the person's tag in a layout's fixed frame unless configured, m: on the
@@ -51,7 +53,7 @@ struct AoaBoard {
 
 /// Largest elevation offset a layout may carry, rad: beyond it a board is mounted tilted
 /// (set its pitch in rpy_deg) or the number is a typo.
-constexpr double kMaxElevationOffset = 0.5236;  // 30 deg
+constexpr double kMaxElevationOffset = deg2rad(30.0);
 
 /// A TDoA anchor with a known position in the fixed frame.
 struct TdoaAnchor {

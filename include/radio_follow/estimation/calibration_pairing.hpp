@@ -94,9 +94,10 @@ struct CalibrationSamples {
 
 /// True distance |tag - module| (3D, module position from the layout) and true azimuth
 /// atan2(y, x) of the tag in the board frame (board pose from the layout), and its true
-/// elevation when the bearing carries one, of every measurement the reference covers. Bearings
-/// whose true direction lies outside the board's field_of_view are left out: the locator does not
-/// trust them either, and a board facing away reports reflections there, not an offset.
+/// elevation when the bearing carries one, of every measurement the reference covers.
+/// Bearings whose true direction lies outside the board's field_of_view are left out: the
+/// locator does not trust them either, and a board facing away reports reflections there,
+/// not an offset.
 CalibrationSamples pairWithReference(const std::vector<CalibrationMeasurement>& measurements,
                                      const Layout& layout, const CalibrationReference& reference);
 

@@ -15,8 +15,8 @@ namespace estimation {
 struct AdvisorConfig {
   double extent = 10.0;        ///< the map covers [-extent, extent]^2 around the robot, m
   double resolution = 0.25;    ///< map cell size, m
-  double target_height =
-      kDefaultTargetHeight;    ///< height of the tag above the fixed frame's origin, m
+  /// Height of the tag above the fixed frame's origin, m.
+  double target_height = kDefaultTargetHeight;
   bool planar = true;          ///< true: 2D bound (height known, the locator's 2D mode)
   bool use_elevation = true;   ///< bearings carry an elevation (the locator's default)
   double tdoa_sigma = 0.1;     ///< m, TDoA differences (no table in the simulator)

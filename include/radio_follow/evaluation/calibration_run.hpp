@@ -55,9 +55,10 @@ struct CalibrationResult {
 /// hardware and noise seeds) report while the person stands at the points of `params`,
 /// and each module's (raw range, tape-measured distance) pairs go through
 /// estimation::fitRangeCalibration, each board's (azimuth, tape-measured azimuth) pairs
-/// through estimation::fitYawOffset and its elevations through fitElevationOffset. It sees only the
-/// sensors' output and the points, never the simulator's error model. Throws ParamError on bad
-/// parameters and std::invalid_argument when a sensor gave too few samples to fit.
+/// through estimation::fitYawOffset and its elevations through fitElevationOffset. It sees
+/// only the sensors' output and the points, never the simulator's error model. Throws
+/// ParamError on bad parameters and std::invalid_argument when a sensor gave too few
+/// samples to fit.
 CalibrationResult runCalibration(const Layout& layout, const sim::WorldConfig& world,
                                  const CalibrationRunParams& params = {});
 
