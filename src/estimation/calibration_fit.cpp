@@ -201,7 +201,8 @@ ElevationOffsetFit fitElevationOffset(const std::vector<ElevationSample>& sample
   for (const ElevationSample& s : samples) {
     swapped.push_back({s.truth, s.measured});
   }
-  const YawOffsetFit mean = fitAngleOffset(swapped, "elevation offset", 4.0, 0.1);
+  const YawOffsetFit mean =
+      fitAngleOffset(swapped, "elevation offset", kCalibrationOutlierSigmas, kMinOutlierAngle);
   ElevationOffsetFit fit;
   fit.elevation_offset = mean.yaw_offset;
   fit.used = mean.used;

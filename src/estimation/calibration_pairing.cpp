@@ -10,6 +10,7 @@
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/common/yaml_keys.hpp"
 #include "radio_follow/estimation/aoa_selector.hpp"
+#include "radio_follow/estimation/measurement_models.hpp"
 
 namespace radio_follow {
 namespace estimation {
@@ -156,8 +157,7 @@ double trueAzimuth(const AoaBoard& board, const Eigen::Vector3d& tag) {
 }
 
 double trueElevation(const AoaBoard& board, const Eigen::Vector3d& tag) {
-  const Eigen::Vector3d v = board.orientation.conjugate() * (tag - board.position);
-  return std::atan2(v.z(), v.head<2>().norm());
+  return predictBearing(tag, board.position, board.orientation.toRotationMatrix())(1);
 }
 
 CalibrationSamples pairWithReference(const std::vector<CalibrationMeasurement>& measurements,

@@ -36,72 +36,6 @@ std::optional<Eigen::Vector3d> mirrorImage(const ObservationSet& obs, const Eige
   return axis ? std::optional<Eigen::Vector3d>(axis->reflect(p)) : std::nullopt;
 }
 
-void validateLoss(const LossConfig& loss, const std::string& name) {
-  require(loss.type == LossType::kNone || (std::isfinite(loss.scale) && loss.scale > 0.0),
-          "~" + name + "_scale", loss.scale, "a positive loss scale (in sigmas)");
-}
-
-SolverConfig solverConfig(const LocatorConfig& c) {
-  SolverConfig s;
-  s.planar = c.planar;
-  s.height = c.height;
-  s.range_loss = c.range_loss;
-  s.tdoa_loss = c.tdoa_loss;
-  s.bearing_loss = c.bearing_loss;
-  s.ceres_covariance = c.ceres_covariance;
-  s.prior_range = c.default_range;
-  return s;
-}
-
-KalmanConfig kalmanConfig(const LocatorConfig& c) {
-  KalmanConfig k;
-  k.model = c.motion_model;
-  k.dims = c.planar ? 2 : 3;
-  k.process_noise = c.process_noise;
-  k.gate_probability = c.gate_probability;
-  k.max_consecutive_rejections = c.max_consecutive_rejections;
-  return k;
-}
-
-ParticleTrackerConfig trackerConfig(const LocatorConfig& c) {
-  ParticleTrackerConfig t;
-  t.filter.particles = static_cast<std::size_t>(c.particles);
-  t.filter.planar = c.planar;
-  t.filter.height = c.height;
-  t.filter.process_noise = c.process_noise;
-  t.filter.stand_time = c.stand_time;
-  t.filter.walk_time = c.walk_time;
-  t.filter.stand_noise = c.stand_noise;
-  t.range_decorrelation_time = c.range_decorrelation_time;
-  t.bearing_decorrelation_time = c.bearing_decorrelation_time;
-  t.range.sigma = c.range_sigma;
-  t.range.outlier_share = c.range_outlier_share;
-  t.range.outlier_length = c.range_outlier_length;
-  t.tdoa = t.range;
-  t.tdoa.one_sided = false;  // either anchor's path may be the long one
-  t.bearing.azimuth_sigma = c.azimuth_sigma;
-  t.bearing.elevation_sigma = c.elevation_sigma;
-  t.bearing.use_elevation = c.use_elevation;
-  t.bearing.outlier_share = c.bearing_outlier_share;
-  t.bearing.elevation_outlier_share = c.elevation_outlier_share;
-  t.max_age = c.max_age;
-  t.ambiguity_margin = c.ambiguity_margin;
-  t.max_position_sigma = c.max_position_sigma;
-  t.max_relative_sigma = c.max_relative_sigma;
-  t.lost_sigma = c.lost_sigma;
-  t.default_range = c.default_range;
-  t.mirror_memory = c.mirror_memory;
-  t.range_bias_sigma = c.range_bias_sigma;
-  t.tdoa_bias_sigma = c.tdoa_bias_sigma;
-  t.azimuth_bias_sigma = c.azimuth_bias_sigma;
-  t.rss_direction = c.rss_direction;
-  t.rss.gain = c.rss_direction_gain;
-  t.rss.sigma = c.rss_direction_sigma;
-  // A reflected reading's RSSI is as far off as its angle: the bearings' outlier share.
-  t.rss.outlier_share = c.bearing_outlier_share;
-  return t;
-}
-
 const LocatorConfig& validated(const LocatorConfig& config) {
   config.validate();
   return config;
@@ -109,33 +43,18 @@ const LocatorConfig& validated(const LocatorConfig& config) {
 
 }  // namespace
 
-void LocatorConfig::validate() const {
-  table().check(*this);
-  // Beyond the table's bounds: a loss needs a scale, gating a probability above 1/2.
-  validateLoss(range_loss, "range_loss");
-  validateLoss(tdoa_loss, "tdoa_loss");
-  validateLoss(bearing_loss, "bearing_loss");
-  require(gate_probability == 0.0 || (gate_probability > 0.5 && gate_probability < 1.0),
-          "~gate_probability", gate_probability, "0 (no gating) or a probability in (0.5, 1)");
-  require(max_relative_sigma < 1.0, "~max_relative_sigma", max_relative_sigma,
-          "a fraction of the distance in [0, 1)");
-}
-
 Locator::Locator(const Layout& layout, const LocatorConfig& config)
     : layout_(layout),
       config_(validated(config)),
-      solver_(std::make_unique<PositionSolver>(solverConfig(config_))),
+      init_config_(config_.initializer()),
+      solver_(std::make_unique<PositionSolver>(config_.solver())),
       selector_(layout.aoa_boards.size(), config_.aoa),
-      filter_(kalmanConfig(config_)),
-      tracker_(layout, trackerConfig(config_)),
+      filter_(config_.kalman()),
+      tracker_(layout, config_.tracker()),
       rss_(layout.aoa_boards),
       tdoa_calibration_(layout, config_.tdoa_calibration),
       ranges_(layout.twr_modules.size()),
-      bearings_(layout.aoa_boards.size()) {
-  init_config_.planar = config.planar;
-  init_config_.height = config.height;
-  init_config_.default_range = config.default_range;
-}
+      bearings_(layout.aoa_boards.size()) {}
 
 bool Locator::setConfig(const LocatorConfig& config) {
   config.validate();
@@ -146,16 +65,15 @@ bool Locator::setConfig(const LocatorConfig& config) {
                                  config.aoa.rssi_window != config_.aoa.rssi_window ||
                                  config.aoa.vote_window != config_.aoa.vote_window;
   const bool estimator_changed = config.estimator != config_.estimator;
-  auto solver = std::make_unique<PositionSolver>(solverConfig(config));
+  auto solver = std::make_unique<PositionSolver>(config.solver());
   // Nothing below throws: the new tuning is applied entirely or not at all.
   config_ = config;
   solver_ = std::move(solver);
   if (selection_changed) {
     selector_ = AoaSelector(layout_.aoa_boards.size(), config_.aoa);
   }
-  init_config_.height = config_.height;
-  init_config_.default_range = config_.default_range;
-  tracker_.setConfig(trackerConfig(config_));
+  init_config_ = config_.initializer();
+  tracker_.setConfig(config_.tracker());
   tdoa_calibration_.setConfig(config_.tdoa_calibration);
   if (estimator_changed) {
     tracker_.reset();
@@ -163,7 +81,7 @@ bool Locator::setConfig(const LocatorConfig& config) {
     warm_.reset();
     return false;
   }
-  return filter_.reconfigure(kalmanConfig(config_));
+  return filter_.reconfigure(config_.kalman());
 }
 
 bool Locator::addRange(const std::string& module_id, double raw_range, double t,

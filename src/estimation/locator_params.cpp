@@ -2,6 +2,7 @@
 // The locator's tuning as one parameter table (names are the node's parameters,
 // doc/nodes/locator.md): loading from ROS or YAML, bounds, live tuning and the docs'
 // coverage test all read it.
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
@@ -90,6 +91,11 @@ const std::vector<std::string>& particleOnlyKeys() {
                                              "range_decorrelation_time",
                                              "bearing_decorrelation_time"};
   return keys;
+}
+
+void validateLoss(const LossConfig& loss, const std::string& name) {
+  require(loss.type == LossType::kNone || (std::isfinite(loss.scale) && loss.scale > 0.0),
+          "~" + name + "_scale", loss.scale, "a positive loss scale (in sigmas)");
 }
 
 }  // namespace
@@ -214,6 +220,90 @@ const ParamTable<LocatorConfig>& LocatorConfig::table() {
 
 void LocatorConfig::load(const ParamSource& source) {
   table().load(source, *this);
+}
+
+void LocatorConfig::validate() const {
+  table().check(*this);
+  // Beyond the table's bounds: a loss needs a scale, gating a probability above 1/2.
+  validateLoss(range_loss, "range_loss");
+  validateLoss(tdoa_loss, "tdoa_loss");
+  validateLoss(bearing_loss, "bearing_loss");
+  require(gate_probability == 0.0 || (gate_probability > 0.5 && gate_probability < 1.0),
+          "~gate_probability", gate_probability, "0 (no gating) or a probability in (0.5, 1)");
+  require(max_relative_sigma < 1.0, "~max_relative_sigma", max_relative_sigma,
+          "a fraction of the distance in [0, 1)");
+}
+
+SolverConfig LocatorConfig::solver() const {
+  const LocatorConfig& c = *this;
+  SolverConfig s;
+  s.planar = c.planar;
+  s.height = c.height;
+  s.range_loss = c.range_loss;
+  s.tdoa_loss = c.tdoa_loss;
+  s.bearing_loss = c.bearing_loss;
+  s.ceres_covariance = c.ceres_covariance;
+  s.prior_range = c.default_range;
+  return s;
+}
+
+KalmanConfig LocatorConfig::kalman() const {
+  const LocatorConfig& c = *this;
+  KalmanConfig k;
+  k.model = c.motion_model;
+  k.dims = c.planar ? 2 : 3;
+  k.process_noise = c.process_noise;
+  k.gate_probability = c.gate_probability;
+  k.max_consecutive_rejections = c.max_consecutive_rejections;
+  return k;
+}
+
+ParticleTrackerConfig LocatorConfig::tracker() const {
+  const LocatorConfig& c = *this;
+  ParticleTrackerConfig t;
+  t.filter.particles = static_cast<std::size_t>(c.particles);
+  t.filter.planar = c.planar;
+  t.filter.height = c.height;
+  t.filter.process_noise = c.process_noise;
+  t.filter.stand_time = c.stand_time;
+  t.filter.walk_time = c.walk_time;
+  t.filter.stand_noise = c.stand_noise;
+  t.range_decorrelation_time = c.range_decorrelation_time;
+  t.bearing_decorrelation_time = c.bearing_decorrelation_time;
+  t.range.sigma = c.range_sigma;
+  t.range.outlier_share = c.range_outlier_share;
+  t.range.outlier_length = c.range_outlier_length;
+  t.tdoa = t.range;
+  t.tdoa.one_sided = false;  // either anchor's path may be the long one
+  t.bearing.azimuth_sigma = c.azimuth_sigma;
+  t.bearing.elevation_sigma = c.elevation_sigma;
+  t.bearing.use_elevation = c.use_elevation;
+  t.bearing.outlier_share = c.bearing_outlier_share;
+  t.bearing.elevation_outlier_share = c.elevation_outlier_share;
+  t.max_age = c.max_age;
+  t.ambiguity_margin = c.ambiguity_margin;
+  t.max_position_sigma = c.max_position_sigma;
+  t.max_relative_sigma = c.max_relative_sigma;
+  t.lost_sigma = c.lost_sigma;
+  t.default_range = c.default_range;
+  t.mirror_memory = c.mirror_memory;
+  t.range_bias_sigma = c.range_bias_sigma;
+  t.tdoa_bias_sigma = c.tdoa_bias_sigma;
+  t.azimuth_bias_sigma = c.azimuth_bias_sigma;
+  t.rss_direction = c.rss_direction;
+  t.rss.gain = c.rss_direction_gain;
+  t.rss.sigma = c.rss_direction_sigma;
+  // A reflected reading's RSSI is as far off as its angle: the bearings' outlier share.
+  t.rss.outlier_share = c.bearing_outlier_share;
+  return t;
+}
+
+InitializerConfig LocatorConfig::initializer() const {
+  InitializerConfig i;
+  i.planar = planar;
+  i.height = height;
+  i.default_range = default_range;
+  return i;
 }
 
 }  // namespace estimation

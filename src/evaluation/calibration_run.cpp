@@ -6,6 +6,7 @@
 
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
+#include "radio_follow/estimation/calibration_pairing.hpp"
 
 namespace radio_follow {
 namespace evaluation {
@@ -104,7 +105,7 @@ CalibrationResult runCalibration(const Layout& layout, const sim::WorldConfig& w
       if (local.x() > 0.0 && std::abs(truth) <= params.aoa_max_azimuth) {
         azimuths[e.board].push_back({e.sample.azimuth, truth});
         elevations[e.board].push_back(
-            {e.sample.elevation, std::atan2(local.z(), local.head<2>().norm())});
+            {e.sample.elevation, estimation::trueElevation(board, s->point)});
       }
     }
   }

@@ -209,13 +209,14 @@ void printTable(const est::LayoutCalibration& c, const rf::Layout& layout,
     const auto& b = c.boards[i];
     const auto& e = c.elevations[i];
     if (b.fit) {
-      char elevation[64];
-      std::snprintf(elevation, sizeof elevation, "%+.2f deg",
-                    rf::rad2deg(e.fit ? e.fit->elevation_offset : 0.0));
-      std::printf("%-10s %7zu %8zu %7.2f deg %6.2f deg  %+9.2f deg (rpy_deg) %s\n", b.id.c_str(),
+      std::printf("%-10s %7zu %8zu %7.2f deg %6.2f deg  %+9.2f deg (rpy_deg) ", b.id.c_str(),
                   b.fit->used, b.fit->rejected, rf::rad2deg(b.fit->rms_before),
-                  rf::rad2deg(b.fit->residual_sigma), rf::rad2deg(b.fit->yaw_offset),
-                  e.fit ? elevation : ("not fitted: " + e.error).c_str());
+                  rf::rad2deg(b.fit->residual_sigma), rf::rad2deg(b.fit->yaw_offset));
+      if (e.fit) {
+        std::printf("%+.2f deg\n", rf::rad2deg(e.fit->elevation_offset));
+      } else {
+        std::printf("not fitted: %s\n", e.error.c_str());
+      }
       continue;
     }
     std::printf("%-10s not fitted, keeps its rpy_deg: %s\n", b.id.c_str(),

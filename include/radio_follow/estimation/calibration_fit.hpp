@@ -24,6 +24,12 @@ struct RangeCalibrationFit {
   double rms_after = 0.0;    ///< RMS of corrected - truth over the used samples, m
 };
 
+/// The calibration fits' outlier rule: a sample farther than this many robust standard
+/// deviations (MAD) from the fit is refused, ...
+constexpr double kCalibrationOutlierSigmas = 4.0;
+/// ... and never a bearing within this of it, rad.
+constexpr double kMinOutlierAngle = 0.1;
+
 /// Least-squares fit of a range polynomial of `degree` (0: offset only, 1: offset and
 /// scale) from raw ranges to true distances. Long outliers are removed iteratively:
 /// samples beyond `outlier_sigmas` robust standard deviations (MAD) of the residuals
@@ -32,7 +38,7 @@ struct RangeCalibrationFit {
 /// than 5 * (degree + 1) of them, non-finite values, or (degree >= 1) true distances
 /// spanning less than 1 m.
 RangeCalibrationFit fitRangeCalibration(const std::vector<RangeSample>& samples, int degree = 1,
-                                        double outlier_sigmas = 4.0,
+                                        double outlier_sigmas = kCalibrationOutlierSigmas,
                                         double min_outlier_distance = 0.2);
 
 /// One azimuth an AoA board reported (board frame, package convention: counter-clockwise)
@@ -56,8 +62,9 @@ struct YawOffsetFit {
 /// Robust circular mean of truth - measured. Samples farther than `outlier_sigmas`
 /// robust standard deviations (at least `min_outlier_angle` rad) from it are refused.
 /// Throws std::invalid_argument with fewer than 5 samples or non-finite ones.
-YawOffsetFit fitYawOffset(const std::vector<AzimuthSample>& samples, double outlier_sigmas = 4.0,
-                          double min_outlier_angle = 0.1);
+YawOffsetFit fitYawOffset(const std::vector<AzimuthSample>& samples,
+                          double outlier_sigmas = kCalibrationOutlierSigmas,
+                          double min_outlier_angle = kMinOutlierAngle);
 
 /// One elevation a board reported and the tag's true elevation in the board frame, rad.
 using ElevationSample = AzimuthSample;

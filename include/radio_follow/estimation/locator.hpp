@@ -129,6 +129,11 @@ struct LocatorConfig {
   static const ParamTable<LocatorConfig>& table();
   /// Throws ParamError naming the first invalid field (names match the ROS parameters).
   void validate() const;
+  /// The estimators' and the initial guess's own configurations from these fields.
+  SolverConfig solver() const;
+  KalmanConfig kalman() const;
+  ParticleTrackerConfig tracker() const;
+  InitializerConfig initializer() const;
   /// One line per parameter that is set away from its default but that `estimator` never
   /// reads (the solver's robust losses and Kalman filter under the particle estimator,
   /// the particle filter's settings under the solver), naming it, its value and the
