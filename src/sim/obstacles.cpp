@@ -51,29 +51,38 @@ double hitWall(double ox, double oy, double dx, double dy, const WallObstacle& w
 
 }  // namespace
 
-void ScanConfig::load(const ParamSource& p) {
-  p.param("scan/rate", rate, rate);
-  double angle_min_deg = rad2deg(angle_min);
-  double angle_max_deg = rad2deg(angle_max);
-  p.param("scan/angle_min_deg", angle_min_deg, angle_min_deg);
-  p.param("scan/angle_max_deg", angle_max_deg, angle_max_deg);
-  angle_min = deg2rad(angle_min_deg);
-  angle_max = deg2rad(angle_max_deg);
-  p.param("scan/beams", beams, beams);
-  p.param("scan/range_min", range_min, range_min);
-  p.param("scan/range_max", range_max, range_max);
-  p.param("scan/sigma", sigma, sigma);
+const ParamTable<ScanConfig>& ScanConfig::table() {
+  using C = ScanConfig;
+  constexpr double kDeg = deg2rad(1.0);
+  static const ParamTable<C> t =
+      ParamTable<C>()
+          .add("scan/rate", &C::rate, "Hz",
+               "Scans per second (published only when the scenario has obstacles).",
+               Range::aboveUpTo(0.0, 100.0))
+          .addScaled("scan/angle_min_deg", &C::angle_min, kDeg, "deg", "First beam's angle.",
+                     Range::closed(-180.0, 180.0))
+          .addScaled("scan/angle_max_deg", &C::angle_max, kDeg, "deg",
+                     "Last beam's angle, > scan/angle_min_deg.", Range::closed(-180.0, 180.0))
+          .add("scan/beams", &C::beams, "", "Beams per scan.", Range::closed(2, 100000))
+          .add("scan/range_min", &C::range_min, "m", "Shortest range reported.",
+               Range::atLeast(0.0))
+          .add("scan/range_max", &C::range_max, "m",
+               "Longest range reported, > scan/range_min; farther is no return.",
+               Range::above(0.0))
+          .add("scan/sigma", &C::sigma, "m", "Range noise.", Range::atLeast(0.0));
+  return t;
+}
+
+void ScanConfig::load(const ParamSource& source) {
+  table().load(source, *this);
 }
 
 void ScanConfig::validate() const {
-  require(std::isfinite(rate) && rate > 0.0 && rate <= 100.0, "~scan/rate", rate,
-          "a rate in (0, 100] Hz");
-  require(std::isfinite(angle_min) && std::isfinite(angle_max) && angle_min < angle_max,
-          "scan.angle_min", angle_min, "angle_min < angle_max, radians");
-  require(beams >= 2 && beams <= 100000, "scan.beams", beams, "a beam count in [2, 100000]");
-  require(range_min >= 0.0 && range_max > range_min, "scan.range_max", range_max,
-          "range_max > range_min >= 0, metres");
-  require(sigma >= 0.0, "scan.sigma", sigma, "a standard deviation >= 0 in m");
+  table().check(*this);
+  require(angle_min < angle_max, "~scan/angle_max_deg", rad2deg(angle_max),
+          "an angle > ~scan/angle_min_deg (" + std::to_string(rad2deg(angle_min)) + ")");
+  require(range_max > range_min, "~scan/range_max", range_max,
+          "a range > ~scan/range_min (" + std::to_string(range_min) + " m)");
 }
 
 double castRay(const Obstacles& obstacles, double x, double y, double angle) {

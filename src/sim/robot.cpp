@@ -15,21 +15,26 @@ double approach(double current, double target, double max_step) {
   return current + std::clamp(target - current, -max_step, max_step);
 }
 
-bool positiveFinite(double v) {
-  return std::isfinite(v) && v > 0.0;
-}
-
 }  // namespace
 
+const ParamTable<RobotLimits>& RobotLimits::table() {
+  using R = RobotLimits;
+  static const ParamTable<R> t =
+      ParamTable<R>()
+          .add("max_linear", &R::max_linear, "m/s", "Top speed, both directions.",
+               Range::above(0.0))
+          .add("max_angular", &R::max_angular, "rad/s", "Top turn rate.", Range::above(0.0))
+          .add("max_linear_accel", &R::max_linear_accel, "m/s^2", "Speeding up.",
+               Range::above(0.0))
+          .add("max_linear_decel", &R::max_linear_decel, "m/s^2", "Slowing down.",
+               Range::above(0.0))
+          .add("max_angular_accel", &R::max_angular_accel, "rad/s^2", "Turn acceleration.",
+               Range::above(0.0));
+  return t;
+}
+
 void RobotLimits::validate() const {
-  require(positiveFinite(max_linear), "robot.max_linear", max_linear, "a speed > 0 in m/s");
-  require(positiveFinite(max_angular), "robot.max_angular", max_angular, "a rate > 0 in rad/s");
-  require(positiveFinite(max_linear_accel), "robot.max_linear_accel", max_linear_accel,
-          "an acceleration > 0 in m/s^2");
-  require(positiveFinite(max_linear_decel), "robot.max_linear_decel", max_linear_decel,
-          "a deceleration > 0 in m/s^2");
-  require(positiveFinite(max_angular_accel), "robot.max_angular_accel", max_angular_accel,
-          "an acceleration > 0 in rad/s^2");
+  table().check(*this);
 }
 
 UnicycleRobot::UnicycleRobot(const RobotLimits& limits, const Pose2& start)

@@ -9,61 +9,62 @@ namespace radio_follow {
 namespace sim {
 namespace {
 
-bool rateOk(double hz) {
-  return std::isfinite(hz) && hz > 0.0 && hz <= 1000.0;
-}
-
 double uniform(Rng& rng, double hi) {
   return std::uniform_real_distribution<double>(0.0, hi)(rng);
 }
 
 }  // namespace
 
-void WorldConfig::load(const ParamSource& p) {
-  std::string profile_name = toString(profile);
-  p.param("sensor_profile", profile_name, profile_name);
-  profile = parseSensorProfile(profile_name, "~sensor_profile");
-  int hardware = static_cast<int>(hardware_seed);
-  p.param("hardware_seed", hardware, hardware);
-  require(hardware >= 0, "~hardware_seed", hardware, "an integer >= 0");
-  hardware_seed = static_cast<std::uint64_t>(hardware);
-  p.param("robot/max_linear", robot.max_linear, robot.max_linear);
-  p.param("robot/max_angular", robot.max_angular, robot.max_angular);
-  p.param("robot/max_linear_accel", robot.max_linear_accel, robot.max_linear_accel);
-  p.param("robot/max_linear_decel", robot.max_linear_decel, robot.max_linear_decel);
-  p.param("robot/max_angular_accel", robot.max_angular_accel, robot.max_angular_accel);
-  p.param("twr_rate", rates.twr_hz, rates.twr_hz);
-  p.param("aoa_rate", rates.aoa_hz, rates.aoa_hz);
-  p.param("tdoa_rate", rates.tdoa_hz, rates.tdoa_hz);
-  p.param("twr_table_bias", twr.use_table_bias, twr.use_table_bias);
-  p.param("twr_sigma_scale", twr.sigma_scale, twr.sigma_scale);
-  p.param("twr_dropout", twr.dropout_probability, twr.dropout_probability);
-  p.param("aoa_table_bias", aoa.use_table_bias, aoa.use_table_bias);
-  p.param("aoa_sigma_scale", aoa.sigma_scale, aoa.sigma_scale);
-  p.param("aoa_dropout", aoa.dropout_probability, aoa.dropout_probability);
-  p.param("aoa_max_range", aoa.max_range, aoa.max_range);
-  p.param("tdoa_sigma", tdoa_sigma, tdoa_sigma);
-  int reference = static_cast<int>(tdoa_reference);
-  p.param("tdoa_reference", reference, reference);
-  require(reference >= 0, "~tdoa_reference", reference, "an anchor index >= 0");
-  tdoa_reference = static_cast<std::size_t>(reference);
+const ParamTable<WorldConfig>& WorldConfig::table() {
+  using W = WorldConfig;
+  const Range rate = Range::aboveUpTo(0.0, 1000.0);
+  const Range probability = Range::closed(0.0, 1.0);
+  static const ParamTable<W> t =
+      ParamTable<W>()
+          .addChoice("sensor_profile", &W::profile,
+                     std::vector<std::pair<std::string, SensorProfile>>{
+                         {"ideal", SensorProfile::kIdeal},
+                         {"realistic", SensorProfile::kRealistic}},
+                     "The sensors' errors: the thesis's tables with white noise, or real "
+                     "hardware's (doc/simulator.md).")
+          .add("hardware_seed", &W::hardware_seed, "",
+               "Which simulated robot (realistic profile): every module's and board's own "
+               "errors.",
+               Range::atLeast(0))
+          .include(RobotLimits::table(), &W::robot, "robot/")
+          .add("twr_rate", &W::rates, &SensorRates::twr_hz, "Hz", "Ranges per module.", rate)
+          .add("aoa_rate", &W::rates, &SensorRates::aoa_hz, "Hz", "Bearings per board.", rate)
+          .add("tdoa_rate", &W::rates, &SensorRates::tdoa_hz, "Hz", "Tag blinks.", rate)
+          .add("twr_table_bias", &W::twr, &TwrNoise::use_table_bias, "",
+               "Add Table 3.1's distance-dependent range bias.")
+          .add("twr_sigma_scale", &W::twr, &TwrNoise::sigma_scale, "",
+               "Multiplies Table 3.1's range sigma.", Range::atLeast(0.0))
+          .add("twr_dropout", &W::twr, &TwrNoise::dropout_probability, "",
+               "Chance a range epoch reports nothing.", probability)
+          .add("aoa_table_bias", &W::aoa, &AoaNoise::use_table_bias, "",
+               "Add the AoA tables' mean azimuth error.")
+          .add("aoa_sigma_scale", &W::aoa, &AoaNoise::sigma_scale, "",
+               "Multiplies the AoA tables' azimuth sigma.", Range::atLeast(0.0))
+          .add("aoa_dropout", &W::aoa, &AoaNoise::dropout_probability, "",
+               "Chance a bearing is lost.", probability)
+          .add("aoa_max_range", &W::aoa, &AoaNoise::max_range, "m", "No bearings beyond.",
+               Range::above(0.0))
+          .add("tdoa_sigma", &W::tdoa_sigma, "m", "Noise of each TDoA distance difference.",
+               Range::atLeast(0.0))
+          .add("tdoa_reference", &W::tdoa_reference, "",
+               "Index of the anchor differences are taken against.", Range::atLeast(0));
+  return t;
+}
+
+void WorldConfig::load(const ParamSource& source) {
+  table().load(source, *this);
 }
 
 void WorldConfig::validate() const {
-  robot.validate();
-  require(rateOk(rates.twr_hz), "twr_rate", rates.twr_hz, "a rate in (0, 1000] Hz");
-  require(rateOk(rates.aoa_hz), "aoa_rate", rates.aoa_hz, "a rate in (0, 1000] Hz");
-  require(rateOk(rates.tdoa_hz), "tdoa_rate", rates.tdoa_hz, "a rate in (0, 1000] Hz");
-  require(twr.sigma_scale >= 0.0, "twr_sigma_scale", twr.sigma_scale, "a factor >= 0");
-  require(twr.dropout_probability >= 0.0 && twr.dropout_probability <= 1.0, "twr_dropout",
-          twr.dropout_probability, "a probability in [0, 1]");
-  require(aoa.sigma_scale >= 0.0, "aoa_sigma_scale", aoa.sigma_scale, "a factor >= 0");
-  require(aoa.dropout_probability >= 0.0 && aoa.dropout_probability <= 1.0, "aoa_dropout",
-          aoa.dropout_probability, "a probability in [0, 1]");
-  require(tdoa_sigma >= 0.0, "tdoa_sigma", tdoa_sigma, "a standard deviation >= 0 in m");
+  table().check(*this);
   for (std::size_t i = 0; i < twr.occlusions.size(); ++i) {
     const auto& o = twr.occlusions[i];
-    const std::string name = "twr_occlusions[" + std::to_string(i) + "]";
+    const std::string name = "~twr_occlusions[" + std::to_string(i) + "]";
     require(o.reflection_probability >= 0.0 && o.reflection_probability <= 1.0,
             name + ".probability", o.reflection_probability, "a probability in [0, 1]");
     require(o.reflection_extra >= 0.0, name + ".extra_range", o.reflection_extra, "metres >= 0");

@@ -73,14 +73,31 @@ class ParamTable {
     Entry e{name, unit, doc, range, {}, nullptr, nullptr};
     if constexpr (std::is_same_v<T, std::size_t>) {
       e.get = [member](const S& s) { return ParamValue(static_cast<int>(s.*member)); };
-      e.set = [member](S& s, const ParamValue& v) {
-        s.*member = static_cast<std::size_t>(std::max(0, std::get<int>(v)));
+      e.set = [member, name](S& s, const ParamValue& v) {
+        const int count = std::get<int>(v);
+        if (count < 0) {
+          throw ParamError("~" + name, paramValueString(count), "an integer >= 0");
+        }
+        s.*member = static_cast<std::size_t>(count);
       };
     } else {
       e.get = [member](const S& s) { return ParamValue(s.*member); };
       e.set = [member](S& s, const ParamValue& v) { s.*member = std::get<T>(v); };
     }
     entries_.push_back(std::move(e));
+    return *this;
+  }
+
+  /// A bool, int, double or std::string member of the member `outer` (a struct that has
+  /// no table of its own, such as the simulator's noise settings).
+  template <typename Sub, typename T>
+  ParamTable& add(const std::string& name, Sub S::*outer, T Sub::*inner, const std::string& unit,
+                  const std::string& doc, Range range = Range::any()) {
+    static_assert(!std::is_same_v<T, std::size_t>, "a nested count needs a table of its own");
+    entries_.push_back(Entry{
+        name, unit, doc, range, {},
+        [outer, inner](const S& s) { return ParamValue((s.*outer).*inner); },
+        [outer, inner](S& s, const ParamValue& v) { (s.*outer).*inner = std::get<T>(v); }});
     return *this;
   }
 

@@ -5,7 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "radio_follow/common/param_source.hpp"
+#include "radio_follow/common/angles.hpp"
+#include "radio_follow/common/param_table.hpp"
 #include "radio_follow/sim/robot.hpp"
 
 namespace radio_follow {
@@ -32,16 +33,17 @@ struct Obstacles {
 
 /// Parameters of a simulated planar laser scanner mounted at the robot's origin.
 struct ScanConfig {
-  double angle_min = -2.35619449;  ///< rad (-135 deg)
-  double angle_max = 2.35619449;   ///< rad (+135 deg)
+  double angle_min = deg2rad(-135.0);  ///< rad
+  double angle_max = deg2rad(135.0);   ///< rad
   int beams = 271;
   double range_min = 0.05;  ///< m
   double range_max = 10.0;  ///< m
   double sigma = 0.01;      ///< m, range noise
   double rate = 10.0;       ///< Hz; a scan is published only when the scenario has obstacles
 
-  /// Reads `scan/rate`, `scan/angle_min_deg`, `scan/angle_max_deg`, `scan/beams`,
+  /// `scan/rate`, `scan/angle_min_deg`, `scan/angle_max_deg`, `scan/beams`,
   /// `scan/range_min`, `scan/range_max`, `scan/sigma` (config/simulator.yaml).
+  static const ParamTable<ScanConfig>& table();
   void load(const ParamSource& source);
   void validate() const;
   /// Angle between neighbouring beams, rad.

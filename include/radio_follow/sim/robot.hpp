@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include "radio_follow/common/param_table.hpp"
 #include "radio_follow/common/pose2.hpp"
 
 namespace radio_follow {
@@ -18,6 +19,8 @@ struct RobotLimits {
   double max_linear_decel = 2.0;
   double max_angular_accel = 3.0;  ///< rad/s^2
 
+  /// max_linear, max_angular, max_linear_accel, max_linear_decel, max_angular_accel.
+  static const ParamTable<RobotLimits>& table();
   /// Throws ParamError naming the first non-positive or non-finite limit.
   void validate() const;
 };

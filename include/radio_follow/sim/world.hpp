@@ -37,9 +37,10 @@ struct WorldConfig {
   /// The realistic profile's figures (not a parameter).
   RealisticFigures figures;
 
-  /// Reads the simulator's world parameters (config/simulator.yaml: sensor_profile,
+  /// The simulator's world parameters (config/simulator.yaml: sensor_profile,
   /// hardware_seed, robot/*, *_rate, twr_*, aoa_*, tdoa_*; not the seed nor
   /// twr_occlusions, which the caller sets).
+  static const ParamTable<WorldConfig>& table();
   void load(const ParamSource& source);
   void validate() const;
 };

@@ -69,12 +69,20 @@ void addLabel(visualization_msgs::MarkerArray& array, const Layout& layout, int 
 
 }  // namespace
 
+const ParamTable<LayoutPublisherNode::Params>& LayoutPublisherNode::Params::table() {
+  using P = LayoutPublisherNode::Params;
+  static const ParamTable<P> t =
+      ParamTable<P>()
+          .add("layout_file", &P::layout_file, "", "Path of the layout YAML (required).")
+          .add("marker_size", &P::marker_size, "m", "Marker size.", Range::open(0.0, 10.0))
+          .add("footprint_margin", &P::footprint_margin, "m",
+               "Footprint margin around the sensors' convex hull.", Range::closed(0.0, 5.0));
+  return t;
+}
+
 void LayoutPublisherNode::Params::validate() const {
   require(!layout_file.empty(), "~layout_file", layout_file, "the path of a layout YAML file");
-  require(marker_size > 0.0 && marker_size < 10.0, "~marker_size", marker_size,
-          "a size in metres in (0, 10)");
-  require(footprint_margin >= 0.0 && footprint_margin <= 5.0, "~footprint_margin", footprint_margin,
-          "a margin in metres in [0, 5]");
+  table().check(*this);
 }
 
 geometry_msgs::PolygonStamped footprintPolygon(const Layout& layout, double margin,
@@ -148,9 +156,7 @@ visualization_msgs::MarkerArray layoutMarkers(const Layout& layout, double size,
 
 LayoutPublisherNode::LayoutPublisherNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh) {
   const ParamReader reader(private_nh);
-  reader.param("layout_file", params_.layout_file, params_.layout_file);
-  reader.param("marker_size", params_.marker_size, params_.marker_size);
-  reader.param("footprint_margin", params_.footprint_margin, params_.footprint_margin);
+  Params::table().load(reader, params_);
   reader.requireAllKnown();
   params_.validate();
   layout_ = loadLayoutFile(params_.layout_file);

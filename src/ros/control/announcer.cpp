@@ -33,26 +33,38 @@ std::string findExecutable(const std::string& command) {
   return std::string();
 }
 
+const ParamTable<AnnouncerNode::Params>& AnnouncerNode::Params::table() {
+  using P = AnnouncerNode::Params;
+  using F = control::FaultSpeechParams;
+  static const ParamTable<P> t =
+      ParamTable<P>()
+          .add("command", &P::command, "", "Speech program (name on PATH or a path).")
+          .add("voice", &P::voice, "", "espeak-ng voice.")
+          .add("words_per_minute", &P::words_per_minute, "words/min", "Speech rate.",
+               Range::closed(80, 450))
+          .add("repeat_interval", &P::repeat_interval, "s",
+               "Minimum interval between identical texts.", Range::atLeast(0.0))
+          .add("max_queued", &P::max_queued, "messages", "Texts waiting beyond this are dropped.",
+               Range::atLeast(1))
+          .add("diagnostics_topic", &P::diagnostics_topic, "",
+               "Where faults are read; empty = faults not spoken.")
+          .add("fault_hold_time", &P::faults, &F::hold_time, "s",
+               "A fault or its end is spoken once it has held this long.", Range::atLeast(0.0))
+          .add("fault_silence_timeout", &P::faults, &F::silence_timeout, "s",
+               "A source silent this long stopped reporting.", Range::above(0.0));
+  return t;
+}
+
 void AnnouncerNode::Params::load(const ParamReader& pnh) {
   pnh.param("status_topics", status_topics, status_topics);
-  pnh.param("command", command, command);
-  pnh.param("voice", voice, voice);
-  pnh.param("words_per_minute", words_per_minute, words_per_minute);
-  pnh.param("repeat_interval", repeat_interval, repeat_interval);
-  pnh.param("max_queued", max_queued, max_queued);
-  pnh.param("diagnostics_topic", diagnostics_topic, diagnostics_topic);
-  pnh.param("fault_hold_time", faults.hold_time, faults.hold_time);
-  pnh.param("fault_silence_timeout", faults.silence_timeout, faults.silence_timeout);
+  table().load(pnh, *this);
 }
 
 void AnnouncerNode::Params::validate() const {
   require(!status_topics.empty(), "~status_topics", status_topics.size(),
           "at least one FollowerStatus topic");
   require(!command.empty(), "~command", command, "an executable name");
-  require(words_per_minute >= 80 && words_per_minute <= 450, "~words_per_minute", words_per_minute,
-          "80 .. 450");
-  require(repeat_interval >= 0.0, "~repeat_interval", repeat_interval, "seconds >= 0");
-  require(max_queued >= 1, "~max_queued", max_queued, "a count >= 1");
+  table().check(*this);
   if (!diagnostics_topic.empty()) {
     requireGraphName("~diagnostics_topic", diagnostics_topic);
   }

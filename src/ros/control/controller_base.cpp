@@ -36,11 +36,20 @@ constexpr char kRunningMarker[] = "running";
 
 }  // namespace
 
+const ParamTable<ControllerCommonParams>& ControllerCommonParams::wiringTable() {
+  using P = ControllerCommonParams;
+  static const ParamTable<P> t =
+      ParamTable<P>()
+          .add("cmd_vel_topic", &P::cmd_vel_topic, "", "Output topic (relative).")
+          .add("rate", &P::rate, "Hz", "Control and publish rate.", Range::closed(1.0, 200.0))
+          .add("start_enabled", &P::start_enabled, "", "Follow without an enable request.")
+          .add("layout_file", &P::layout_file, "",
+               "Optional sensor layout: range_topics and target_anchor_id then follow it.");
+  return t;
+}
+
 void ControllerCommonParams::load(const ParamReader& pnh) {
-  pnh.param("cmd_vel_topic", cmd_vel_topic, cmd_vel_topic);
-  pnh.param("rate", rate, rate);
-  pnh.param("start_enabled", start_enabled, start_enabled);
-  pnh.param("layout_file", layout_file, layout_file);
+  wiringTable().load(pnh, *this);
   layout.reset();
   if (!layout_file.empty()) {
     layout = loadLayoutFile(layout_file);
@@ -52,7 +61,7 @@ void ControllerCommonParams::load(const ParamReader& pnh) {
 
 void ControllerCommonParams::validate() const {
   requireGraphName("~cmd_vel_topic", cmd_vel_topic);
-  require(rate >= 1.0 && rate <= 200.0, "~rate", rate, "a rate in [1, 200] Hz");
+  wiringTable().check(*this);
   for (const auto& topic : range_topics) {
     requireGraphName("~range_topics", topic);
   }

@@ -13,14 +13,24 @@
 
 namespace radio_follow {
 
+const ParamTable<EstimateFollowerNode::Params>& EstimateFollowerNode::Params::table() {
+  using P = EstimateFollowerNode::Params;
+  static const ParamTable<P> t =
+      ParamTable<P>()
+          .add("odom_frame", &P::odom_frame, "",
+               "Where estimates are placed to track the target; empty = no track.")
+          .add("tf_timeout", &P::tf_timeout, "s",
+               "The newest transform serves an estimate's stamp within this.",
+               Range{0.0, 1.0, false, true});
+  return t;
+}
+
 void EstimateFollowerNode::Params::load(const ParamReader& pnh) {
-  pnh.param("odom_frame", odom_frame, odom_frame);
-  pnh.param("tf_timeout", tf_timeout, tf_timeout);
+  table().load(pnh, *this);
 }
 
 void EstimateFollowerNode::Params::validate() const {
-  require(tf_timeout >= 0.0 && tf_timeout < 1.0, "~tf_timeout", tf_timeout,
-          "a timeout in [0, 1) seconds");
+  table().check(*this);
 }
 
 EstimateFollowerNode::EstimateFollowerNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)

@@ -12,10 +12,19 @@
 
 namespace radio_follow {
 
+const ParamTable<HomingControllerNode::Params>& HomingControllerNode::Params::table() {
+  using P = HomingControllerNode::Params;
+  static const ParamTable<P> t =
+      ParamTable<P>()
+          .add("tag_id", &P::tag_id, "", "Only bearings of this tag count; empty = every tag.")
+          .add("distance_range_topic", &P::distance_range_topic, "",
+               "UwbRanges topic of the target's ranges (distance_source uwb).");
+  return t;
+}
+
 void HomingControllerNode::Params::load(const ParamReader& pnh) {
-  pnh.param("tag_id", tag_id, tag_id);
+  table().load(pnh, *this);
   tag_id = normalizeId(tag_id);
-  pnh.param("distance_range_topic", distance_range_topic, distance_range_topic);
 }
 
 void HomingControllerNode::Params::validate() const {

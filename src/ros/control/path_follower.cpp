@@ -10,8 +10,14 @@
 
 namespace radio_follow {
 
+const ParamTable<PathFollowerNode::Params>& PathFollowerNode::Params::table() {
+  static const ParamTable<Params> t = ParamTable<Params>().add(
+      "base_frame", &Params::base_frame, "", "The robot's frame (the path's pose lookup).");
+  return t;
+}
+
 void PathFollowerNode::Params::load(const ParamReader& pnh) {
-  pnh.param("base_frame", base_frame, base_frame);
+  table().load(pnh, *this);
   path.load(pnh);
 }
 

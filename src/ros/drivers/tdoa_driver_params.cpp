@@ -74,19 +74,36 @@ std::size_t indexOf(const std::vector<drivers::TdoaAnchorConfig>& anchors, const
 
 }  // namespace
 
+const ParamTable<TdoaDriverNode::Params>& TdoaDriverNode::Params::table() {
+  using P = TdoaDriverNode::Params;
+  static const ParamTable<P> t =
+      ParamTable<P>()
+          .add("address", &P::address, "", "Local address to bind.")
+          .add("port", &P::port, "", "UDP port; 0 = any free port.", Range::closed(0, 65535))
+          .add("frame_id", &P::frame_id, "", "Frame of the anchor positions.")
+          .add("master", &P::master, "", "Id of the clock master (required).")
+          .add("reference", &P::reference, "",
+               "Id of the anchor differences are taken against; empty = master.")
+          .add("group_window", &P::group_window, "s", "How long a blink's reports are collected.",
+               Range::aboveUpTo(0.0, 1.0))
+          .add("distance_variance", &P::distance_variance, "m^2", "Variance of every difference.",
+               Range::above(0.0))
+          .add("plausibility_margin", &P::plausibility_margin, "m",
+               "Differences beyond the baseline plus this margin are discarded.",
+               Range::atLeast(0.0))
+          .add("min_anchors", &P::min_anchors, "",
+               "Fewest anchors (reference included) per published blink.", Range::atLeast(2))
+          .add("data_timeout", &P::data_timeout, "s", "Warn after this long without a datagram.",
+               Range::above(0.0))
+          .add("initial_backoff", &P::initial_backoff, "s",
+               "First delay before re-binding after a socket failure.", Range::above(0.0))
+          .add("max_backoff", &P::max_backoff, "s", "Cap of the doubling backoff.",
+               Range::above(0.0));
+  return t;
+}
+
 void TdoaDriverNode::Params::load(const ParamReader& nh) {
-  nh.param("address", address, address);
-  nh.param("port", port, port);
-  nh.param("frame_id", frame_id, frame_id);
-  nh.param("master", master, master);
-  nh.param("reference", reference, reference);
-  nh.param("group_window", group_window, group_window);
-  nh.param("distance_variance", distance_variance, distance_variance);
-  nh.param("plausibility_margin", plausibility_margin, plausibility_margin);
-  nh.param("min_anchors", min_anchors, min_anchors);
-  nh.param("data_timeout", data_timeout, data_timeout);
-  nh.param("initial_backoff", initial_backoff, initial_backoff);
-  nh.param("max_backoff", max_backoff, max_backoff);
+  table().load(nh, *this);
   anchors.clear();
   XmlRpc::XmlRpcValue list;
   if (nh.getRaw("anchors", list)) {
@@ -101,21 +118,14 @@ void TdoaDriverNode::Params::load(const ParamReader& nh) {
 
 void TdoaDriverNode::Params::validate() const {
   require(!address.empty(), "~address", address, "a local IP address");
-  require(port >= 0 && port < 65536, "~port", port, "a UDP port in [0, 65535] (0 = any)");
+  table().check(*this);
   require(!frame_id.empty(), "~frame_id", frame_id, "a TF frame name");
   require(anchors.size() >= 2, "~anchors", anchors.size(), "a list of at least two anchors");
   require(indexOf(anchors, master) < anchors.size(), "~master", master,
           "the id of one of ~anchors");
   require(reference.empty() || indexOf(anchors, reference) < anchors.size(), "~reference",
           reference, "empty (= master) or the id of one of ~anchors");
-  require(std::isfinite(group_window) && group_window > 0.0 && group_window <= 1.0, "~group_window",
-          group_window, "a time in seconds in (0, 1]");
-  require(min_anchors >= 2, "~min_anchors", min_anchors, "at least 2");
-  require(std::isfinite(data_timeout) && data_timeout > 0.0, "~data_timeout", data_timeout,
-          "a positive time in seconds");
-  require(std::isfinite(initial_backoff) && initial_backoff > 0.0, "~initial_backoff",
-          initial_backoff, "a positive time in seconds");
-  require(std::isfinite(max_backoff) && max_backoff >= initial_backoff, "~max_backoff", max_backoff,
+  require(max_backoff >= initial_backoff, "~max_backoff", max_backoff,
           "a time in seconds >= ~initial_backoff");
   differenceConfig().validate();  // anchors, variance, margin, min_anchors vs anchor count
 }

@@ -64,34 +64,52 @@ void endParentLaunch() {
 
 }  // namespace
 
+const ParamTable<FollowEvaluatorNode::Params>& FollowEvaluatorNode::Params::table() {
+  using P = FollowEvaluatorNode::Params;
+  using S = control::FollowSettings;
+  static const ParamTable<P> t =
+      ParamTable<P>()
+          .add("report_dir", &P::report_dir, "", "Where to write; empty = log only.")
+          .add("rate", &P::rate, "Hz", "Sampling rate.", Range::aboveUpTo(0.0, 1000.0))
+          .add("write_period", &P::write_period, "s", "Report rewrite period.", Range::above(0.0))
+          .add("end_launch", &P::end_launch, "", "End the roslaunch when the scenario ends.")
+          .add("controller", &P::controller, "", "The controller node the run is judged by.")
+          .add("follow_distance", &P::settings, &S::follow_distance, "m",
+               "Gap the controller holds (only without controller).", Range::above(0.0))
+          .add("safe_distance", &P::settings, &S::safe_distance, "m",
+               "Nearest allowed gap while moving (only without controller).", Range::above(0.0))
+          .add("gap_tolerance", &P::settings, &S::gap_tolerance, "m",
+               "A gap within follow_distance +- this counts as held.", Range::above(0.0))
+          .add("robot_max_speed", &P::settings, &S::robot_max_speed, "m/s",
+               "Gap statistics only while the person walks slower than this.", Range::above(0.0))
+          .add("settle_time", &P::settings, &S::settle_time, "s",
+               "Gap and path statistics start after this.", Range::atLeast(0.0))
+          .add("judge_following", &P::settings, &S::judge_following, "",
+               "The verdict also judges how well the robot followed.")
+          .add("min_gap_held", &P::settings, &S::min_gap_held, "",
+               "The least share of the walk the gap must be held.", Range::closed(0.0, 1.0));
+  return t;
+}
+
 void FollowEvaluatorNode::Params::validate() const {
-  require(std::isfinite(rate) && rate > 0.0 && rate <= 1000.0, "~rate", rate,
-          "a rate in (0, 1000] Hz");
-  require(std::isfinite(write_period) && write_period > 0.0, "~write_period", write_period,
-          "seconds > 0");
-  require(settings.follow_distance > 0.0, "~follow_distance", settings.follow_distance,
-          "metres > 0");
-  require(settings.safe_distance > 0.0, "~safe_distance", settings.safe_distance, "metres > 0");
-  require(settings.gap_tolerance > 0.0, "~gap_tolerance", settings.gap_tolerance, "metres > 0");
-  require(settings.robot_max_speed > 0.0, "~robot_max_speed", settings.robot_max_speed, "m/s > 0");
-  require(settings.settle_time >= 0.0, "~settle_time", settings.settle_time, "seconds >= 0");
-  require(settings.min_gap_held >= 0.0 && settings.min_gap_held <= 1.0, "~min_gap_held",
-          settings.min_gap_held, "a share in [0, 1]");
+  table().check(*this);
 }
 
 FollowEvaluatorNode::FollowEvaluatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
     : metrics_(control::FollowSettings{}) {
   const ParamReader reader(private_nh);
-  reader.param("report_dir", params_.report_dir, params_.report_dir);
-  reader.param("rate", params_.rate, params_.rate);
-  reader.param("write_period", params_.write_period, params_.write_period);
-  reader.param("end_launch", params_.end_launch, params_.end_launch);
-  reader.param("controller", params_.controller, params_.controller);
-  control::FollowSettings& s = params_.settings;
-  s.judge_following = true;
+  const ParamTable<Params>& table = Params::table();
+  const auto judged_by_controller = [](const std::string& name) {
+    return name == "follow_distance" || name == "safe_distance";
+  };
+  for (const auto& entry : table.entries()) {
+    if (!judged_by_controller(entry.name)) {
+      table.load(reader, params_, entry.name);
+    }
+  }
   if (params_.controller.empty()) {
-    reader.param("follow_distance", s.follow_distance, s.follow_distance);
-    reader.param("safe_distance", s.safe_distance, s.safe_distance);
+    table.load(reader, params_, "follow_distance");
+    table.load(reader, params_, "safe_distance");
   } else {
     // The distances the controller really runs with, not a second copy of them.
     requireGraphName("~controller", params_.controller);
@@ -100,14 +118,9 @@ FollowEvaluatorNode::FollowEvaluatorNode(ros::NodeHandle& nh, ros::NodeHandle& p
             "~controller", params_.controller,
             "a controller node whose follow_distance and safe_distance are set");
     const ParamReader controller{ros::NodeHandle(ns), ns + "/"};
-    controller.param("follow_distance", s.follow_distance, s.follow_distance);
-    controller.param("safe_distance", s.safe_distance, s.safe_distance);
+    table.load(controller, params_, "follow_distance");
+    table.load(controller, params_, "safe_distance");
   }
-  reader.param("gap_tolerance", s.gap_tolerance, s.gap_tolerance);
-  reader.param("robot_max_speed", s.robot_max_speed, s.robot_max_speed);
-  reader.param("settle_time", s.settle_time, s.settle_time);
-  reader.param("judge_following", s.judge_following, s.judge_following);
-  reader.param("min_gap_held", s.min_gap_held, s.min_gap_held);
   reader.requireAllKnown();
   params_.validate();
   if (!params_.report_dir.empty()) {

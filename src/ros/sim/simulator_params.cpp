@@ -90,18 +90,40 @@ std::vector<sim::UnplugFault> loadUnplugFaults(const ParamReader& pnh) {
 
 }  // namespace
 
+const ParamTable<SimulatorNode::Params>& SimulatorNode::Params::table() {
+  using P = SimulatorNode::Params;
+  static const ParamTable<P> t =
+      ParamTable<P>()
+          .add("layout_file", &P::layout_file, "", "The robot's sensor layout (required).")
+          .add("scenario_file", &P::scenario_file, "",
+               "The person's walk and the obstacles (required).")
+          .add("seed", &P::seed, "", "The noise's random seed.", Range::atLeast(0))
+          .add("step_rate", &P::step_rate, "Hz", "Physics steps per simulated second.",
+               Range::closed(10.0, 10000.0))
+          .add("time_factor", &P::time_factor, "",
+               "Simulated seconds per wall second (sim time only).",
+               Range::aboveUpTo(0.0, 1000.0))
+          .add("cmd_timeout", &P::cmd_timeout, "s",
+               "Without cmd_vel this long the base stops by itself.", Range::above(0.0))
+          .add("shutdown_on_finish", &P::shutdown_on_finish, "",
+               "End the node (and a launch that requires it) when the scenario ends.")
+          .add("odom_frame", &P::odom_frame, "", "World frame of odometry.")
+          .include(sim::WorldConfig::table(), &P::world)
+          .include(sim::ScanConfig::table(), &P::scan)
+          .addChoice("output", &P::output,
+                     std::vector<std::pair<std::string, std::string>>{{"messages", "messages"},
+                                                                      {"serial", "serial"}},
+                     "Publish the drivers' messages, or speak the devices' protocols on "
+                     "pseudo-terminals under serial_dir so the real drivers run in the loop.")
+          .add("serial_dir", &P::serial_dir, "", "Where the device links go (serial output).");
+  return t;
+}
+
 void SimulatorNode::Params::validate() const {
   require(!layout_file.empty(), "~layout_file", layout_file, "the path of a layout YAML");
   require(!scenario_file.empty(), "~scenario_file", scenario_file, "the path of a scenario YAML");
-  require(seed >= 0, "~seed", seed, "an integer >= 0");
-  require(std::isfinite(step_rate) && step_rate >= 10.0 && step_rate <= 10000.0, "~step_rate",
-          step_rate, "a rate in [10, 10000] Hz");
-  require(std::isfinite(time_factor) && time_factor > 0.0 && time_factor <= 1000.0, "~time_factor",
-          time_factor, "a factor in (0, 1000]");
-  require(std::isfinite(cmd_timeout) && cmd_timeout > 0.0, "~cmd_timeout", cmd_timeout,
-          "seconds > 0");
+  table().check(*this);
   require(!odom_frame.empty(), "~odom_frame", odom_frame, "a non-empty frame name");
-  require(output == "messages" || output == "serial", "~output", output, "'messages' or 'serial'");
   require(output != "serial" || !serial_dir.empty(), "~serial_dir", serial_dir,
           "a directory for the device links");
   require(unplug.empty() || output == "serial", "~unplug", std::string("(list)"),
@@ -112,22 +134,10 @@ void SimulatorNode::Params::validate() const {
 
 SimulatorNode::Params loadSimulatorParams(const ParamReader& pnh) {
   SimulatorNode::Params p;
-  pnh.param("layout_file", p.layout_file, p.layout_file);
-  pnh.param("scenario_file", p.scenario_file, p.scenario_file);
-  pnh.param("seed", p.seed, p.seed);
-  pnh.param("step_rate", p.step_rate, p.step_rate);
-  pnh.param("time_factor", p.time_factor, p.time_factor);
-  pnh.param("cmd_timeout", p.cmd_timeout, p.cmd_timeout);
-  pnh.param("shutdown_on_finish", p.shutdown_on_finish, p.shutdown_on_finish);
-  pnh.param("odom_frame", p.odom_frame, p.odom_frame);
-  sim::WorldConfig& w = p.world;
-  w.load(pnh);
-  w.seed = static_cast<std::uint64_t>(std::max(0, p.seed));
-  w.twr.occlusions = loadOcclusions(pnh);
-  pnh.param("output", p.output, p.output);
-  pnh.param("serial_dir", p.serial_dir, p.serial_dir);
+  SimulatorNode::Params::table().load(pnh, p);
+  p.world.seed = static_cast<std::uint64_t>(std::max(0, p.seed));
+  p.world.twr.occlusions = loadOcclusions(pnh);
   p.unplug = loadUnplugFaults(pnh);
-  p.scan.load(pnh);
   p.validate();
   return p;
 }

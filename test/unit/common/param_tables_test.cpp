@@ -24,6 +24,7 @@
 #include "radio_follow/drivers/dwm1001_params.hpp"
 #include "radio_follow/drivers/ublox_aoa_params.hpp"
 #include "radio_follow/estimation/locator.hpp"
+#include "../../support/param_coverage.hpp"
 
 namespace radio_follow {
 namespace {
@@ -106,136 +107,31 @@ TEST(ParamTable, ReportsValuesInTheParametersUnits) {
 }
 
 // --- The node structs' tables against config/*.yaml and doc/nodes/*.md -------------------
-
-std::string readFile(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-/// The YAML value at "a/b", or an undefined node (reset(), not operator=: assigning a
-/// yaml-cpp node writes into the node it refers to).
-YAML::Node lookup(const YAML::Node& root, const std::string& name) {
-  YAML::Node node;
-  node.reset(root);
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t slash = name.find('/', start);
-    if (!node.IsMap()) {
-      return YAML::Node(YAML::NodeType::Undefined);
-    }
-    const YAML::Node child =
-        static_cast<const YAML::Node&>(node)[name.substr(start, slash - start)];
-    node.reset(child);
-    if (slash == std::string::npos || !node.IsDefined()) {
-      return node;
-    }
-    start = slash + 1;
-  }
-}
-
-bool sameValue(const ParamValue& expected, const std::string& written) {
-  if (const double* d = std::get_if<double>(&expected)) {
-    try {
-      return std::abs(std::stod(written) - *d) <= 1e-9 * std::max(1.0, std::abs(*d));
-    } catch (const std::exception&) {
-      return false;
-    }
-  }
-  std::string text = paramValueText(expected);
-  if (std::holds_alternative<std::string>(expected)) {
-    text = std::get<std::string>(expected);
-  }
-  if (text.empty() && written == "(required)") {
-    return true;  // no default: the node refuses to start without it
-  }
-  std::string w = written;
-  for (const char quote : {'"', '\'', '`'}) {
-    w.erase(std::remove(w.begin(), w.end(), quote), w.end());
-  }
-  return w == text;
-}
-
-/// The default column of the doc row "| `name` | type | default | ...".
-std::string docDefault(const std::string& doc, const std::string& name, bool& found) {
-  const std::string key = "| `" + name + "` |";
-  const std::size_t at = doc.find(key);
-  found = at != std::string::npos;
-  if (!found) {
-    return "";
-  }
-  const std::size_t type_end = doc.find('|', at + key.size());
-  const std::size_t default_end = doc.find('|', type_end + 1);
-  std::string cell = doc.substr(type_end + 1, default_end - type_end - 1);
-  cell.erase(0, cell.find_first_not_of(' '));
-  cell.erase(cell.find_last_not_of(' ') + 1);
-  return cell;
-}
-
-template <typename S>
-void expectCovered(const ParamTable<S>& table, const std::vector<std::string>& yaml_files,
-                   const std::string& doc_file, const std::vector<std::string>& not_in_yaml = {}) {
-  std::vector<YAML::Node> files;
-  for (const std::string& f : yaml_files) {
-    files.push_back(YAML::LoadFile(std::string(RF_CONFIG_DIR) + "/" + f));
-  }
-  const std::string doc = readFile(std::string(RF_CONFIG_DIR) + "/../doc/nodes/" + doc_file);
-  ASSERT_FALSE(doc.empty()) << doc_file;
-  S defaults;  // (S{} trips a false maybe-uninitialized warning in GCC 12 for derived aggregates)
-  for (const auto& e : table.entries()) {
-    const ParamValue value = e.get(defaults);
-    if (std::find(not_in_yaml.begin(), not_in_yaml.end(), e.name) == not_in_yaml.end()) {
-      YAML::Node written;
-      for (const YAML::Node& f : files) {
-        const YAML::Node n = lookup(f, e.name);
-        if (n.IsDefined()) {
-          written.reset(n);
-        }
-      }
-      EXPECT_TRUE(written.IsDefined() && written.IsScalar())
-          << e.name << ": not in " << yaml_files.back() << " (default " << paramValueText(value)
-          << ")";
-      if (written.IsDefined() && written.IsScalar()) {
-        EXPECT_TRUE(sameValue(value, written.Scalar()))
-            << e.name << ": " << yaml_files.back() << " says " << written.Scalar()
-            << ", the table's default is " << paramValueText(value);
-      }
-    }
-    bool found = false;
-    const std::string documented = docDefault(doc, e.name, found);
-    EXPECT_TRUE(found) << e.name << ": no row \"| `" << e.name << "` |\" in doc/nodes/" << doc_file;
-    if (found) {
-      EXPECT_TRUE(sameValue(value, documented))
-          << e.name << ": doc/nodes/" << doc_file << " says " << documented
-          << ", the table's default is " << paramValueText(value);
-    }
-  }
-}
+// (test/support/param_coverage.hpp; the ROS nodes' own tables: test/unit/ros/)
 
 TEST(ParamTables, ControllerCommonIsInItsYamlAndDoc) {
   // target_anchor_id and calibrate_ranges follow the layout unless set: the YAML leaves
   // them out on purpose (its comments say so).
   expectCovered(control::CommandPipelineParams::table(), {"controller_common.yaml"},
-                "velocity_controller.md", {"target_anchor_id"});
+                "nodes/velocity_controller.md", {"target_anchor_id"});
 }
 
 TEST(ParamTables, VelocityLawIsInItsYamlAndDoc) {
   expectCovered(control::VelocityLawParams::table(), {"velocity_controller.yaml"},
-                "velocity_controller.md");
+                "nodes/velocity_controller.md");
 }
 
 TEST(ParamTables, PathFollowerIsInItsYamlAndDoc) {
-  expectCovered(control::PathFollowParams::table(), {"path_follower.yaml"}, "path_follower.md");
+  expectCovered(control::PathFollowParams::table(), {"path_follower.yaml"}, "nodes/path_follower.md");
 }
 
 TEST(ParamTables, HomingControllerIsInItsYamlAndDoc) {
   expectCovered(control::HomingControllerParams::table(), {"homing_controller.yaml"},
-                "homing_controller.md");
+                "nodes/homing_controller.md");
 }
 
 TEST(ParamTables, LocatorIsInItsYamlAndDoc) {
-  expectCovered(estimation::LocatorConfig::table(), {"locator.yaml"}, "locator.md");
+  expectCovered(estimation::LocatorConfig::table(), {"locator.yaml"}, "nodes/locator.md");
 }
 
 // --- The live-tuning .cfg files against the tables ----------------------------------------
@@ -295,9 +191,9 @@ void expectCfgDefaultsAreTheTables(const ParamTable<S>& table, const std::string
 
 TEST(ParamTables, SerialDriversAreInTheirYamlAndDoc) {
   // The device path differs per device (the launch file gives it); a board's frame too.
-  expectCovered(drivers::Dwm1001Params::table(), {"dwm1001_driver.yaml"}, "dwm1001_driver.md",
+  expectCovered(drivers::Dwm1001Params::table(), {"dwm1001_driver.yaml"}, "nodes/dwm1001_driver.md",
                 {"port"});
-  expectCovered(drivers::UbloxAoaParams::table(), {"ublox_aoa_driver.yaml"}, "ublox_aoa_driver.md",
+  expectCovered(drivers::UbloxAoaParams::table(), {"ublox_aoa_driver.yaml"}, "nodes/ublox_aoa_driver.md",
                 {"port", "frame_id"});
 }
 

@@ -129,7 +129,7 @@ TEST(World, RejectsBadConfigNamingTheParameter) {
     World world(spot(), standing(1, 1), config);
     FAIL();
   } catch (const ParamError& e) {
-    EXPECT_EQ(e.name(), "aoa_rate");
+    EXPECT_EQ(e.name(), "~aoa_rate");
   }
 }
 

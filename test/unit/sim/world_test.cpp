@@ -82,7 +82,7 @@ TEST(UnicycleRobot, RejectsBadLimits) {
     UnicycleRobot robot(limits);
     FAIL();
   } catch (const ParamError& e) {
-    EXPECT_EQ(e.name(), "robot.max_angular");
+    EXPECT_EQ(e.name(), "~max_angular");
   }
 }
 

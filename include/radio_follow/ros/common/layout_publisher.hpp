@@ -6,6 +6,7 @@
 #include <tf2_ros/static_transform_broadcaster.h>
 #include <visualization_msgs/MarkerArray.h>
 
+#include "radio_follow/common/param_table.hpp"
 #include "radio_follow/config/layout.hpp"
 
 namespace radio_follow {
@@ -25,6 +26,7 @@ class LayoutPublisherNode {
     /// Footprint margin around the sensors' convex hull, metres.
     double footprint_margin = 0.1;
 
+    static const ParamTable<Params>& table();
     void validate() const;
   };
 

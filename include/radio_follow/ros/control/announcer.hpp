@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "radio_follow/FollowerStatus.h"
+#include "radio_follow/common/param_table.hpp"
 #include "radio_follow/control/announcement_queue.hpp"
 #include "radio_follow/control/fault_speech.hpp"
 #include "radio_follow/ros/common/callback_barrier.hpp"
@@ -35,6 +36,8 @@ class AnnouncerNode {
     std::string diagnostics_topic = "/diagnostics";
     control::FaultSpeechParams faults;  ///< fault_hold_time, fault_silence_timeout
 
+    /// Every parameter but the list ~status_topics (config/announcer.yaml).
+    static const ParamTable<Params>& table();
     void load(const ParamReader& private_nh);
     void validate() const;
   };

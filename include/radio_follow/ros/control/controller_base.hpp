@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "radio_follow/UwbRanges.h"
+#include "radio_follow/common/param_table.hpp"
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/control/command_pipeline.hpp"
 #include "radio_follow/control/follower.hpp"
@@ -50,6 +51,9 @@ struct ControllerCommonParams : control::CommandPipelineParams {
   /// UwbRanges topics whose raw ranges feed the safety stop.
   std::vector<std::string> range_topics{"uwb_ranges"};
 
+  /// cmd_vel_topic, rate, start_enabled, layout_file (the pipeline's parameters:
+  /// control::CommandPipelineParams::table()).
+  static const ParamTable<ControllerCommonParams>& wiringTable();
   void load(const ParamReader& private_nh);
   void validate() const;
 };

@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "radio_follow/TargetEstimate.h"
+#include "radio_follow/common/param_table.hpp"
 #include "radio_follow/control/follow_law.hpp"
 #include "radio_follow/ros/common/params.hpp"
 #include "radio_follow/ros/control/controller_base.hpp"
@@ -29,6 +30,7 @@ class EstimateFollowerNode : public ControllerBase {
     std::string odom_frame = "odom";  ///< empty: no track (no feed-forward), no TF needed
     double tf_timeout = 0.05;         ///< s
 
+    static const ParamTable<Params>& table();
     void load(const ParamReader& private_nh);
     void validate() const;
   };

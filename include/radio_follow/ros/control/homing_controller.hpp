@@ -8,6 +8,7 @@
 
 #include "radio_follow/AoaBearing.h"
 #include "radio_follow/UwbRanges.h"
+#include "radio_follow/common/param_table.hpp"
 #include "radio_follow/control/homing_controller.hpp"
 #include "radio_follow/ros/control/controller_base.hpp"
 #include "radio_follow/ros/common/params.hpp"
@@ -27,6 +28,7 @@ class HomingControllerNode : public ControllerBase {
     /// UwbRanges topic of the target's ranges (distance_source "uwb").
     std::string distance_range_topic = "uwb_ranges";
 
+    static const ParamTable<Params>& table();
     void load(const ParamReader& private_nh);
     void validate() const;
   };

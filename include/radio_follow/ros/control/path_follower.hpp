@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "radio_follow/common/param_table.hpp"
 #include "radio_follow/control/path_follower.hpp"
 #include "radio_follow/control/velocity_law.hpp"
 #include "radio_follow/ros/common/params.hpp"
@@ -29,6 +30,8 @@ class PathFollowerNode : public EstimateFollowerNode {
     std::string base_frame = "base_link";
     control::PathFollowParams path;
 
+    /// base_frame (the law's own parameters: control::PathFollowParams::table()).
+    static const ParamTable<Params>& table();
     void load(const ParamReader& private_nh);
     void validate() const;
   };

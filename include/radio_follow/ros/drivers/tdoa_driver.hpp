@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "radio_follow/common/param_table.hpp"
 #include "radio_follow/TdoaMeasurements.h"
 #include "radio_follow/drivers/delivery_queue.hpp"
 #include "radio_follow/drivers/tdoa_receiver.hpp"
@@ -44,6 +45,8 @@ class TdoaDriverNode {
     double initial_backoff = 0.5;  ///< s
     double max_backoff = 10.0;     ///< s
 
+    /// Every parameter but the list ~anchors (config/tdoa_driver.yaml).
+    static const ParamTable<Params>& table();
     /// Reads every parameter from `private_nh`; throws ParamError on a malformed value.
     void load(const ParamReader& private_nh);
     /// Throws ParamError naming the first invalid value.

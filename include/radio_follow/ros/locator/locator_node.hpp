@@ -18,6 +18,7 @@
 #include "radio_follow/TargetEstimate.h"
 #include "radio_follow/TdoaMeasurements.h"
 #include "radio_follow/UwbRanges.h"
+#include "radio_follow/common/param_table.hpp"
 #include "radio_follow/common/geometry.hpp"
 #include "radio_follow/common/input_watch.hpp"
 #include "radio_follow/estimation/locator.hpp"
@@ -56,6 +57,9 @@ class LocatorNode {
     double tf_tolerance = 0.25;
     estimation::LocatorConfig locator;  ///< the core's tuning
 
+    /// The node's own parameters but the topic lists; the core's tuning has its own
+    /// table (estimation::LocatorConfig::table()).
+    static const ParamTable<Params>& table();
     /// Reads the private parameters from `source`: the node's namespace (ParamReader) or
     /// a YamlParams (a parameter file, for tools without a master), the same keys either
     /// way (doc/nodes/locator.md).

@@ -11,6 +11,7 @@
 #include <deque>
 #include <string>
 
+#include "radio_follow/common/param_table.hpp"
 #include "radio_follow/common/time_policy.hpp"
 #include "radio_follow/control/follow_metrics.hpp"
 #include "radio_follow/ros/common/callback_barrier.hpp"
@@ -32,8 +33,15 @@ class FollowEvaluatorNode {
     /// The controller node whose follow_distance and safe_distance the run is judged by
     /// (read from its private namespace); empty: `~follow_distance`, `~safe_distance`.
     std::string controller;
-    control::FollowSettings settings;
+    /// The evaluator judges how well the robot followed unless told not to.
+    control::FollowSettings settings = [] {
+      control::FollowSettings judged;
+      judged.judge_following = true;
+      return judged;
+    }();
 
+    /// follow_distance and safe_distance are read only without `controller`.
+    static const ParamTable<Params>& table();
     void validate() const;
   };
 

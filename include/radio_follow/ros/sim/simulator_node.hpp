@@ -43,6 +43,8 @@ class SimulatorNode {
     std::string serial_dir = "/tmp/radio_follow_sim";
     std::vector<sim::UnplugFault> unplug;
 
+    /// Every parameter but the lists ~twr_occlusions and ~unplug (config/simulator.yaml).
+    static const ParamTable<Params>& table();
     void validate() const;
   };
 
