@@ -13,6 +13,38 @@
 
 namespace radio_follow {
 namespace control {
+
+const ParamTable<FollowEvaluatorParams>& FollowEvaluatorParams::table() {
+  using P = FollowEvaluatorParams;
+  using S = FollowSettings;
+  static const ParamTable<P> t =
+      ParamTable<P>()
+          .add("report_dir", &P::report_dir, "", "Where to write; empty = log only.")
+          .add("rate", &P::rate, "Hz", "Sampling rate.", Range::aboveUpTo(0.0, 1000.0))
+          .add("write_period", &P::write_period, "s", "Report rewrite period.", Range::above(0.0))
+          .add("end_launch", &P::end_launch, "", "End the roslaunch when the scenario ends.")
+          .add("controller", &P::controller, "", "The controller node the run is judged by.")
+          .add("follow_distance", &P::settings, &S::follow_distance, "m",
+               "Gap the controller holds (only without controller).", Range::above(0.0))
+          .add("safe_distance", &P::settings, &S::safe_distance, "m",
+               "Nearest allowed gap while moving (only without controller).", Range::above(0.0))
+          .add("gap_tolerance", &P::settings, &S::gap_tolerance, "m",
+               "A gap within follow_distance +- this counts as held.", Range::above(0.0))
+          .add("robot_max_speed", &P::settings, &S::robot_max_speed, "m/s",
+               "Gap statistics only while the person walks slower than this.", Range::above(0.0))
+          .add("settle_time", &P::settings, &S::settle_time, "s",
+               "Gap and path statistics start after this.", Range::atLeast(0.0))
+          .add("judge_following", &P::settings, &S::judge_following, "",
+               "The verdict also judges how well the robot followed.")
+          .add("min_gap_held", &P::settings, &S::min_gap_held, "",
+               "The least share of the walk the gap must be held.", Range::closed(0.0, 1.0));
+  return t;
+}
+
+void FollowEvaluatorParams::validate() const {
+  table().check(*this);
+}
+
 namespace {
 
 /// Path points closer than this are merged: the person's path at 5 cm resolution.

@@ -87,21 +87,19 @@ ClosedLoopConfig loadClosedLoopConfig(const std::string& dir, const std::string&
 
   // simulator.launch: config/simulator.yaml, seed from the launch.
   const YamlParams simulator = YamlParams::fromFile(dir + "/simulator.yaml");
-  c.world.load(simulator);
+  sim::SimulatorParams simulator_node;
+  sim::SimulatorParams::table().load(simulator, simulator_node);
+  c.world = simulator_node.world;
   c.world.seed = static_cast<std::uint64_t>(seed);
   // One robot per seed: nothing gets tuned to one simulated robot's hardware.
   c.world.hardware_seed = static_cast<std::uint64_t>(seed);
   if (profile) {
     c.world.profile = *profile;
   }
-  simulator.param("step_rate", c.step_rate, c.step_rate);
-  simulator.param("cmd_timeout", c.cmd_timeout, c.cmd_timeout);
-  c.scan.load(simulator);  // the laser scan of scenarios with obstacles
-  // What only the ROS node uses (clock, frames, serial devices).
-  for (const char* key : {"seed", "time_factor", "shutdown_on_finish", "odom_frame", "output",
-                          "serial_dir", "unplug"}) {
-    simulator.allow(key);
-  }
+  c.step_rate = simulator_node.step_rate;
+  c.cmd_timeout = simulator_node.cmd_timeout;
+  c.scan = simulator_node.scan;  // the laser scan of scenarios with obstacles
+  simulator.allow("unplug");     // the ROS node's serial devices
   const YAML::Node occlusions = simulator.root()["twr_occlusions"];
   simulator.allow("twr_occlusions");
   require(!occlusions.IsDefined() || occlusions.IsNull() || occlusions.size() == 0,
@@ -116,15 +114,11 @@ ClosedLoopConfig loadClosedLoopConfig(const std::string& dir, const std::string&
     locator_files.push_back(locator_overrides);
   }
   const YamlParams locator = YamlParams::fromFiles(locator_files);
-  c.locator.load(locator);
-  locator.param("rate", c.locator_rate, c.locator_rate);
-  std::string locator_odom_frame = "odom";
-  locator.param("odom_frame", locator_odom_frame, locator_odom_frame);
-  c.locator_odometry = !locator_odom_frame.empty();
-  for (const char* key : {"uwb_topics", "aoa_topics", "tdoa_topics", "target_frame", "publish_tf",
-                          "input_timeout", "path_length", "layout_file", "tf_tolerance"}) {
-    locator.allow(key);
-  }
+  estimation::LocatorNodeParams locator_node;
+  locator_node.load(locator);
+  c.locator = locator_node.locator;
+  c.locator_rate = locator_node.rate;
+  c.locator_odometry = !locator_node.odom_frame.empty();
   locator.requireAllKnown();
 
   // follower.launch: the controller's files in the same order.
@@ -138,17 +132,19 @@ ClosedLoopConfig loadClosedLoopConfig(const std::string& dir, const std::string&
   }
   const YamlParams p = YamlParams::fromFiles(files).mergedWith(controller_overrides);
   c.pipeline.load(p, &c.layout);
-  p.param("rate", c.controller_rate, c.controller_rate);
+  control::ControllerWiring wiring;
+  control::ControllerWiring::table().load(p, wiring);
+  c.controller_rate = wiring.rate;
   c.law = control::loadVelocityLawParams(p, c.pipeline);
-  std::string odom_frame = "odom";
-  p.param("odom_frame", odom_frame, odom_frame);
-  c.track_in_odometry = !odom_frame.empty();
-  p.param("tf_timeout", c.tf_timeout, c.tf_timeout);
+  control::TrackParams track;
+  track.load(p);
+  c.track_in_odometry = !track.odom_frame.empty();
+  c.tf_timeout = track.tf_timeout;
   if (controller == FollowController::kPathFollower) {
     c.path.load(p);
     p.allow("base_frame");
   }
-  for (const char* key : {"cmd_vel_topic", "start_enabled", "layout_file", "range_topics", "law"}) {
+  for (const char* key : {"range_topics", "law"}) {  // the node's topics and live tuning
     p.allow(key);
   }
   p.requireAllKnown();

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "radio_follow/common/param_table.hpp"
 #include "radio_follow/control/safety_monitor.hpp"
 #include "radio_follow/control/velocity_law.hpp"
 
@@ -72,6 +73,30 @@ struct FollowSettings {
   /// than `safe_distance` while commanded to move.
   bool judge_following = false;
   double min_gap_held = 0.5;  ///< share of the walk
+};
+
+/// The follow evaluator node's parameters (doc/simulator.md): where and how often it
+/// writes, and the settings it judges a run by.
+struct FollowEvaluatorParams {
+  std::string report_dir;     ///< empty: only log the metrics
+  double rate = 20.0;         ///< Hz
+  double write_period = 5.0;  ///< s between report rewrites (also written at shutdown)
+  /// When the scenario ends, end the roslaunch that started this node (demo.launch;
+  /// false under rostest, whose test node ends the run).
+  bool end_launch = false;
+  /// The controller node whose follow_distance and safe_distance the run is judged by
+  /// (read from its private namespace); empty: `~follow_distance`, `~safe_distance`.
+  std::string controller;
+  /// The evaluator judges how well the robot followed unless told not to.
+  FollowSettings settings = [] {
+    FollowSettings judged;
+    judged.judge_following = true;
+    return judged;
+  }();
+
+  /// follow_distance and safe_distance are read only without `controller`.
+  static const ParamTable<FollowEvaluatorParams>& table();
+  void validate() const;
 };
 
 struct FollowReport {

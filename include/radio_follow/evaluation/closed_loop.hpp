@@ -11,13 +11,16 @@
 
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/control/command_pipeline.hpp"
+#include "radio_follow/control/controller_params.hpp"
 #include "radio_follow/control/follow_metrics.hpp"
 #include "radio_follow/control/follower.hpp"
 #include "radio_follow/control/path_follower.hpp"
 #include "radio_follow/control/target_motion.hpp"
 #include "radio_follow/control/velocity_law.hpp"
 #include "radio_follow/estimation/locator.hpp"
+#include "radio_follow/estimation/locator_node_params.hpp"
 #include "radio_follow/sim/obstacles.hpp"
+#include "radio_follow/sim/simulator_params.hpp"
 #include "radio_follow/sim/target_path.hpp"
 #include "radio_follow/sim/world.hpp"
 
@@ -47,8 +50,8 @@ struct ClosedLoopConfig {
   std::optional<Layout> locator_layout;
   sim::Scenario scenario;
   sim::WorldConfig world;
-  double step_rate = 100.0;  ///< simulator physics steps per second
-  double cmd_timeout = 0.5;  ///< s without a command before the base stops
+  double step_rate = sim::SimulatorParams().step_rate;      ///< simulator physics steps per s
+  double cmd_timeout = sim::SimulatorParams().cmd_timeout;  ///< s without a command: base stops
   /// The laser scanner of a scenario with obstacles (simulator.yaml's `scan/*`): scanned
   /// at `scan.rate` as the ROS simulator publishes it and handed to the command pipeline,
   /// which uses it with the controller's `use_scan` (the node subscribes only then).
@@ -59,13 +62,13 @@ struct ClosedLoopConfig {
   /// (seed 000's Table A1) fit a robot that size (config/controller_common.yaml).
   double robot_radius = 0.2;
   estimation::LocatorConfig locator;
-  double locator_rate = 20.0;  ///< Hz
+  double locator_rate = estimation::LocatorNodeParams().rate;  ///< Hz
   /// The locator node's odom_frame is set: measurements carry the robot's odometry pose
   /// (the loop's TF), the particle estimator tracks in the odometry frame.
   bool locator_odometry = true;
   FollowController controller = FollowController::kVelocity;
   control::CommandPipelineParams pipeline;
-  double controller_rate = 20.0;  ///< Hz
+  double controller_rate = control::ControllerWiring().rate;  ///< Hz
   control::VelocityLawParams law;
   control::PathFollowParams path;
   /// The controller's `odom_frame` is set: it places the estimates in the odometry frame
@@ -73,9 +76,9 @@ struct ClosedLoopConfig {
   bool track_in_odometry = true;
   /// The controller's tf_timeout: an estimate newer than the newest odometry pose is
   /// placed with that pose when it is at most this much newer, s.
-  double tf_timeout = 0.05;
+  double tf_timeout = control::TrackParams().tf_timeout;
   control::FollowSettings metrics;
-  double evaluator_rate = 20.0;  ///< Hz, as the follow evaluator samples
+  double evaluator_rate = control::FollowEvaluatorParams().rate;  ///< Hz, as the evaluator samples
   std::vector<SensorOutage> outages;
 
   /// Throws ParamError naming the first unusable field.

@@ -36,23 +36,11 @@ constexpr char kRunningMarker[] = "running";
 
 }  // namespace
 
-const ParamTable<ControllerCommonParams>& ControllerCommonParams::wiringTable() {
-  using P = ControllerCommonParams;
-  static const ParamTable<P> t =
-      ParamTable<P>()
-          .add("cmd_vel_topic", &P::cmd_vel_topic, "", "Output topic (relative).")
-          .add("rate", &P::rate, "Hz", "Control and publish rate.", Range::closed(1.0, 200.0))
-          .add("start_enabled", &P::start_enabled, "", "Follow without an enable request.")
-          .add("layout_file", &P::layout_file, "",
-               "Optional sensor layout: range_topics and target_anchor_id then follow it.");
-  return t;
-}
-
 void ControllerCommonParams::load(const ParamReader& pnh) {
-  wiringTable().load(pnh, *this);
+  control::ControllerWiring::table().load(pnh, wiring);
   layout.reset();
-  if (!layout_file.empty()) {
-    layout = loadLayoutFile(layout_file);
+  if (!wiring.layout_file.empty()) {
+    layout = loadLayoutFile(wiring.layout_file);
     range_topics = conventionalTopics(*layout).uwb;  // ~range_topics below still wins
   }
   pnh.param("range_topics", range_topics, range_topics);
@@ -60,8 +48,8 @@ void ControllerCommonParams::load(const ParamReader& pnh) {
 }
 
 void ControllerCommonParams::validate() const {
-  requireGraphName("~cmd_vel_topic", cmd_vel_topic);
-  wiringTable().check(*this);
+  requireGraphName("~cmd_vel_topic", wiring.cmd_vel_topic);
+  control::ControllerWiring::table().check(wiring);
   for (const auto& topic : range_topics) {
     requireGraphName("~range_topics", topic);
   }
@@ -106,7 +94,7 @@ void ControllerBase::warnUncalibrated() const {
         "%s: module(s) %s of %s are uncalibrated (calibration [0, 1]): real modules are off "
         "by 0.1-0.3 m, and one that reads long stops the robot that much inside "
         "safe_distance. Fit them with calibrate_layout (doc/calibration.md).",
-        ros::this_node::getName().c_str(), ids.c_str(), common_.layout_file.c_str());
+        ros::this_node::getName().c_str(), ids.c_str(), common_.wiring.layout_file.c_str());
   }
 }
 
@@ -145,7 +133,7 @@ void ControllerBase::start(control::FollowLaw& law) {
     throw std::logic_error("ControllerBase::start() before requireKnownParams()");
   }
   follower_.setLaw(law);
-  cmd_pub_ = nh_.advertise<geometry_msgs::Twist>(common_.cmd_vel_topic, 1);
+  cmd_pub_ = nh_.advertise<geometry_msgs::Twist>(common_.wiring.cmd_vel_topic, 1);
   // A callback that throws (a stamp no ros::Time arithmetic can hold, a bug) stops the
   // robot at once and for hold_time; the node keeps running and keeps publishing.
   barrier_.setFaultAction([this](const std::string& /*where*/, const std::string& /*what*/) {
@@ -186,8 +174,8 @@ void ControllerBase::start(control::FollowLaw& law) {
   diagnostics_.add("controller", this, &ControllerBase::diagnose);
   // cmd_vel goes out every tick; a stop from the range callback comes on top of that.
   OutputDiagnostic::Bounds bounds;
-  bounds.min_hz = common_.rate;
-  bounds.max_hz = 2.0 * common_.rate;
+  bounds.min_hz = common_.wiring.rate;
+  bounds.max_hz = 2.0 * common_.wiring.rate;
   cmd_diagnostic_.emplace(diagnostics_, "controller output", cmd_pub_, bounds, false);
 
   std::signal(SIGINT, requestStop);
@@ -202,7 +190,7 @@ void ControllerBase::start(control::FollowLaw& law) {
         common_ = params;
       });
 
-  if (markRunning() && common_.start_enabled) {
+  if (markRunning() && common_.wiring.start_enabled) {
     ROS_WARN(
         "%s: starting disabled although start_enabled is true: a previous %s did not stop "
         "cleanly (crashed or was killed, and was respawned). Enable it when the robot is "
@@ -211,9 +199,9 @@ void ControllerBase::start(control::FollowLaw& law) {
         enable_srv_.getService().c_str());
     setEnabled(false);
   } else {
-    setEnabled(common_.start_enabled);
+    setEnabled(common_.wiring.start_enabled);
   }
-  timer_ = barrier_.timer(nh_, ros::Duration(1.0 / common_.rate), "control tick",
+  timer_ = barrier_.timer(nh_, ros::Duration(1.0 / common_.wiring.rate), "control tick",
                           &ControllerBase::onTick, this);
   // The stop request is watched on wall time: on simulated time the clock may already
   // have stopped (its publisher shut down first) and a sim-time timer would never fire.
@@ -369,7 +357,7 @@ void ControllerBase::onTick(const ros::TimerEvent& event) {
   const ros::Time now = ros::Time::now();
   double dt = (event.current_real - event.last_real).toSec();
   if (event.last_real.isZero() || !(dt > 0.0) || dt > 1.0) {
-    dt = 1.0 / common_.rate;
+    dt = 1.0 / common_.wiring.rate;
   }
 
   // TF before the lock: a range must not wait for a lookup to stop the robot.

@@ -13,26 +13,6 @@
 
 namespace radio_follow {
 
-const ParamTable<EstimateFollowerNode::Params>& EstimateFollowerNode::Params::table() {
-  using P = EstimateFollowerNode::Params;
-  static const ParamTable<P> t =
-      ParamTable<P>()
-          .add("odom_frame", &P::odom_frame, "",
-               "Where estimates are placed to track the target; empty = no track.")
-          .add("tf_timeout", &P::tf_timeout, "s",
-               "The newest transform serves an estimate's stamp within this.",
-               Range{0.0, 1.0, false, true});
-  return t;
-}
-
-void EstimateFollowerNode::Params::load(const ParamReader& pnh) {
-  table().load(pnh, *this);
-}
-
-void EstimateFollowerNode::Params::validate() const {
-  table().check(*this);
-}
-
 EstimateFollowerNode::EstimateFollowerNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
     : ControllerBase(nh, private_nh, true),
       follow_params_(loadValidated<Params>(params())),

@@ -50,7 +50,7 @@ TEST(NodeParamTables, LocatorWiringIsInItsYamlAndDoc) {
 }
 
 TEST(NodeParamTables, ControllersWiringIsInTheirYamlAndDoc) {
-  expectCovered(ControllerCommonParams::wiringTable(), {"controller_common.yaml"},
+  expectCovered(control::ControllerWiring::table(), {"controller_common.yaml"},
                 "nodes/velocity_controller.md", {"layout_file"});
 }
 

@@ -17,9 +17,9 @@
 #include <vector>
 
 #include "radio_follow/UwbRanges.h"
-#include "radio_follow/common/param_table.hpp"
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/control/command_pipeline.hpp"
+#include "radio_follow/control/controller_params.hpp"
 #include "radio_follow/control/follower.hpp"
 #include "radio_follow/control/follower_state.hpp"
 #include "radio_follow/ros/common/callback_barrier.hpp"
@@ -40,20 +40,12 @@ constexpr std::uint32_t kRangeQueueSize = 100;
 /// Parameters every controller shares (doc/nodes/velocity_controller.md lists them): the
 /// command pipeline's (safety stop, scan gate, limits) and the node's wiring.
 struct ControllerCommonParams : control::CommandPipelineParams {
-  std::string cmd_vel_topic = "cmd_vel";
-  double rate = 20.0;  ///< Hz
-  bool start_enabled = false;
-  /// Optional sensor layout: when set, `range_topics` and `target_anchor_id` default to
-  /// the layout's conventional topics (`uwb/<module id>/ranges`) and target anchor.
-  std::string layout_file;
-  /// The layout loaded from layout_file; nullopt without one.
+  control::ControllerWiring wiring;
+  /// The layout loaded from wiring.layout_file; nullopt without one.
   std::optional<Layout> layout;
   /// UwbRanges topics whose raw ranges feed the safety stop.
   std::vector<std::string> range_topics{"uwb_ranges"};
 
-  /// cmd_vel_topic, rate, start_enabled, layout_file (the pipeline's parameters:
-  /// control::CommandPipelineParams::table()).
-  static const ParamTable<ControllerCommonParams>& wiringTable();
   void load(const ParamReader& private_nh);
   void validate() const;
 };

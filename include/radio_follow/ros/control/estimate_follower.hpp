@@ -11,7 +11,7 @@
 #include <utility>
 
 #include "radio_follow/TargetEstimate.h"
-#include "radio_follow/common/param_table.hpp"
+#include "radio_follow/control/controller_params.hpp"
 #include "radio_follow/control/follow_law.hpp"
 #include "radio_follow/ros/common/params.hpp"
 #include "radio_follow/ros/control/controller_base.hpp"
@@ -26,14 +26,7 @@ namespace radio_follow {
 class EstimateFollowerNode : public ControllerBase {
  public:
   /// Where the estimates are placed to track the target's motion.
-  struct Params {
-    std::string odom_frame = "odom";  ///< empty: no track (no feed-forward), no TF needed
-    double tf_timeout = 0.05;         ///< s
-
-    static const ParamTable<Params>& table();
-    void load(const ParamReader& private_nh);
-    void validate() const;
-  };
+  using Params = control::TrackParams;
 
  protected:
   EstimateFollowerNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh);

@@ -18,10 +18,10 @@
 #include "radio_follow/TargetEstimate.h"
 #include "radio_follow/TdoaMeasurements.h"
 #include "radio_follow/UwbRanges.h"
-#include "radio_follow/common/param_table.hpp"
 #include "radio_follow/common/geometry.hpp"
 #include "radio_follow/common/input_watch.hpp"
 #include "radio_follow/estimation/locator.hpp"
+#include "radio_follow/estimation/locator_node_params.hpp"
 #include "radio_follow/ros/common/callback_barrier.hpp"
 #include "radio_follow/ros/common/output_diagnostic.hpp"
 #include "radio_follow/ros/common/params.hpp"
@@ -36,37 +36,7 @@ namespace radio_follow {
 /// Sensor positions come from the layout file (not from TF). See doc/nodes/locator.md.
 class LocatorNode {
  public:
-  struct Params {
-    std::string layout_file;  ///< required
-    /// Inputs; all three empty (the default) = the layout's conventional topics.
-    std::vector<std::string> uwb_topics;
-    std::vector<std::string> aoa_topics;
-    std::vector<std::string> tdoa_topics;
-    double rate = 20.0;                   ///< solves per second, Hz
-    std::string target_frame = "target";  ///< child frame of the published TF
-    bool publish_tf = true;
-    /// An input topic without a message for this long (or never since the start) is
-    /// silent: warned about once per 10 s and listed in the diagnostics, s.
-    double input_timeout = 3.0;
-    /// Estimates kept in `target_path` (nav_msgs/Path); 0 = no path topic.
-    int path_length = 200;
-    /// Odometry frame the particle estimator tracks in (TF odom_frame -> fixed frame at
-    /// each measurement's stamp); "" = the robot's own frame.
-    std::string odom_frame = "odom";
-    /// A stamp up to this much newer than the newest odometry TF uses that TF, s.
-    double tf_tolerance = 0.25;
-    estimation::LocatorConfig locator;  ///< the core's tuning
-
-    /// The node's own parameters but the topic lists; the core's tuning has its own
-    /// table (estimation::LocatorConfig::table()).
-    static const ParamTable<Params>& table();
-    /// Reads the private parameters from `source`: the node's namespace (ParamReader) or
-    /// a YamlParams (a parameter file, for tools without a master), the same keys either
-    /// way (doc/nodes/locator.md).
-    void load(const ParamSource& source);
-    /// Throws ParamError naming the first invalid parameter.
-    void validate() const;
-  };
+  using Params = estimation::LocatorNodeParams;
 
   LocatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh);
 

@@ -11,7 +11,6 @@
 #include <deque>
 #include <string>
 
-#include "radio_follow/common/param_table.hpp"
 #include "radio_follow/common/time_policy.hpp"
 #include "radio_follow/control/follow_metrics.hpp"
 #include "radio_follow/ros/common/callback_barrier.hpp"
@@ -23,27 +22,7 @@ namespace radio_follow {
 /// `trajectory.csv` into `~report_dir` (scripts/plot_report.py draws them).
 class FollowEvaluatorNode {
  public:
-  struct Params {
-    std::string report_dir;     ///< empty: only log the metrics
-    double rate = 20.0;         ///< Hz
-    double write_period = 5.0;  ///< s between report rewrites (also written at shutdown)
-    /// When the scenario ends, end the roslaunch that started this node (demo.launch;
-    /// false under rostest, whose test node ends the run).
-    bool end_launch = false;
-    /// The controller node whose follow_distance and safe_distance the run is judged by
-    /// (read from its private namespace); empty: `~follow_distance`, `~safe_distance`.
-    std::string controller;
-    /// The evaluator judges how well the robot followed unless told not to.
-    control::FollowSettings settings = [] {
-      control::FollowSettings judged;
-      judged.judge_following = true;
-      return judged;
-    }();
-
-    /// follow_distance and safe_distance are read only without `controller`.
-    static const ParamTable<Params>& table();
-    void validate() const;
-  };
+  using Params = control::FollowEvaluatorParams;
 
   FollowEvaluatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh);
   ~FollowEvaluatorNode();

@@ -15,6 +15,7 @@
 #include "radio_follow/ros/common/params.hpp"
 #include "radio_follow/sim/obstacles.hpp"
 #include "radio_follow/sim/serial_devices.hpp"
+#include "radio_follow/sim/simulator_params.hpp"
 #include "radio_follow/sim/world.hpp"
 
 namespace radio_follow {
@@ -25,28 +26,7 @@ namespace radio_follow {
 /// time, /clock. Integrates `cmd_vel`.
 class SimulatorNode {
  public:
-  struct Params {
-    std::string layout_file;
-    std::string scenario_file;
-    int seed = 1;
-    double step_rate = 100.0;        ///< physics steps per simulated second
-    double time_factor = 1.0;        ///< simulated seconds per wall second (sim time only)
-    double cmd_timeout = 0.5;        ///< s without cmd_vel before the base stops by itself
-    bool shutdown_on_finish = true;  ///< end the node (and a launch that requires it) at the end
-    /// World frame of odometry; the robot frame is the layout's fixed_frame.
-    std::string odom_frame = "odom";
-    sim::WorldConfig world;
-    sim::ScanConfig scan;
-    /// "messages": publish driver messages; "serial": speak the devices' protocols on
-    /// pseudo-terminals under serial_dir so the real drivers run in the loop.
-    std::string output = "messages";
-    std::string serial_dir = "/tmp/radio_follow_sim";
-    std::vector<sim::UnplugFault> unplug;
-
-    /// Every parameter but the lists ~twr_occlusions and ~unplug (config/simulator.yaml).
-    static const ParamTable<Params>& table();
-    void validate() const;
-  };
+  using Params = sim::SimulatorParams;
 
   SimulatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh);
 

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include <cmath>
+#include "radio_follow/estimation/locator_node_params.hpp"
 
 #include "radio_follow/common/param_error.hpp"
-#include "radio_follow/ros/locator/locator_node.hpp"  // declares LocatorNode::Params
 
 namespace radio_follow {
+namespace estimation {
 
-const ParamTable<LocatorNode::Params>& LocatorNode::Params::table() {
-  using P = LocatorNode::Params;
+const ParamTable<LocatorNodeParams>& LocatorNodeParams::table() {
+  using P = LocatorNodeParams;
   static const ParamTable<P> t =
       ParamTable<P>()
           .add("layout_file", &P::layout_file, "", "The robot's sensor layout (required).")
@@ -27,7 +27,7 @@ const ParamTable<LocatorNode::Params>& LocatorNode::Params::table() {
   return t;
 }
 
-void LocatorNode::Params::load(const ParamSource& nh) {
+void LocatorNodeParams::load(const ParamSource& nh) {
   table().load(nh, *this);
   nh.param("uwb_topics", uwb_topics, uwb_topics);
   nh.param("aoa_topics", aoa_topics, aoa_topics);
@@ -35,7 +35,7 @@ void LocatorNode::Params::load(const ParamSource& nh) {
   locator.load(nh);
 }
 
-void LocatorNode::Params::validate() const {
+void LocatorNodeParams::validate() const {
   require(!layout_file.empty(), "~layout_file", layout_file, "the path of a layout YAML file");
   // All topic lists empty is fine: the node then uses the layout's conventional topics.
   table().check(*this);
@@ -43,4 +43,5 @@ void LocatorNode::Params::validate() const {
   locator.validate();  // the core names its fields exactly like these private parameters
 }
 
+}  // namespace estimation
 }  // namespace radio_follow
