@@ -110,7 +110,7 @@ ExperimentsOptions readExperimentsOptions(const radio_follow::lab::po::variables
   o.config_dir = values["config-dir"].as<std::string>();
   o.profile = CommandLine::text(values, "sensor-profile");
   if (!o.profile.empty()) {
-    radio_follow::sim::parseSensorProfile(o.profile, "--sensor-profile");
+    radio_follow::sim::parseSensorProfile(o.profile, "--sensor-profile");  // refused before a run
   }
   o.names = CommandLine::texts(values, "name");
   return o;
