@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Accuracy of the thesis's solve formulation (thesis_solver.hpp) and of the locator's
 // PositionSolver on the same noisy measurements, against the Cramer-Rao bound: the grid,
-// noise and well-posed test of locator_montecarlo (doc/locator_accuracy.md). Both solvers
+// noise and well-posed test of lab locator_montecarlo (doc/locator_accuracy.md). Both solvers
 // start at the true position, the start most favourable to each, so the difference is the
 // formulation (weights, squared ranges, azimuth only, loss), not an initial guess.
 // Deterministic: same seed, same table. Prints Markdown.

@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """Writes the simulated calibration run's range calibrations into the shipped layouts:
 every TWR module's `calibration` in config/layouts/<name>.yaml becomes what
-`layout_calibration --layout <name> --hardware-seed N` prints (the realistic sensor
+`lab layout_calibration --layout <name> --hardware-seed N` prints (the realistic sensor
 profile's simulated robot N, doc/simulator.md, "Calibration run"). Nothing else in the
 files changes. Run it when the ROS demo switches to `sensor_profile: realistic`
 (config/simulator.yaml), with that file's `hardware_seed`.
@@ -28,7 +28,7 @@ ENTRY = re.compile(r'^(\s*-\s*\{id:\s*"?)([^",}]+)("?.*?)\b(calibration): \[[^\]
 
 def calibrated_entries(tool, layout, hardware_seed):
     """{(field, id): "[...]"} from the tool's output."""
-    out = subprocess.run([tool, "--layout", layout, "--hardware-seed", str(hardware_seed)],
+    out = subprocess.run([tool, "layout_calibration", "--layout", layout, "--hardware-seed", str(hardware_seed)],
                          check=True, capture_output=True, text=True).stdout
     entries = {}
     for line in out.splitlines():
@@ -45,7 +45,7 @@ def main():
     parser.add_argument("--dry-run", action="store_true", help="print, do not write")
     parser.add_argument("layouts", nargs="*")
     args = parser.parse_args()
-    tool = os.path.join(os.environ["RF_WS"], "devel/lib/radio_follow/layout_calibration")
+    tool = os.path.join(os.environ["RF_WS"], "devel/lib/radio_follow/lab")
     names = args.layouts or sorted(p.stem for p in (REPO / "config/layouts").glob("*.yaml"))
     for name in names:
         path = REPO / "config/layouts" / (name + ".yaml")

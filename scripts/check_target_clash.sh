@@ -24,10 +24,11 @@ if ! catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_ENABLE_TESTING=ON
   echo "check_target_clash: FAILED: configure next to rf_clash_dummy failed (log: $log)" >&2
   exit 1
 fi
-# The dummy's executables and gtests, and one small radio_follow tool.
+# The dummy's executables and gtests, and radio_follow's placement_advisor (the dummy has
+# one of that name too).
 dummy_targets=(simulator locator velocity_controller placement_advisor bench_locator_solve
   bench_stop_latency experiment_check locator_rostest pid_test layout_test)
-make -C build -j"${RF_JOBS:-2}" "${dummy_targets[@]}" radio_follow_rssi_calibration_fit \
+make -C build -j"${RF_JOBS:-2}" "${dummy_targets[@]}" radio_follow_placement_advisor \
   >"$ws/build.log" 2>&1 || {
   tail -n 30 "$ws/build.log" >&2
   echo "check_target_clash: FAILED: build (log: $ws/build.log)" >&2
@@ -38,8 +39,8 @@ for name in simulator locator experiment_check bench_locator_solve; do
   out="$("$ws/devel/lib/rf_clash_dummy/$name")" || out=""
   [ "$out" = "$name" ] || { echo "dummy's $name did not run as itself: '$out'" >&2; fail=1; }
 done
-[ -x "$ws/devel/lib/radio_follow/rssi_calibration_fit" ] ||
-  { echo "radio_follow's rssi_calibration_fit is not at devel/lib/radio_follow/" >&2; fail=1; }
+[ -x "$ws/devel/lib/radio_follow/placement_advisor" ] ||
+  { echo "radio_follow's placement_advisor is not at devel/lib/radio_follow/" >&2; fail=1; }
 [ "$fail" = 0 ] || { echo "check_target_clash: FAILED" >&2; exit 1; }
 echo "check_target_clash: OK in $((SECONDS - start)) s (workspace $ws)"
 [ $# -ge 1 ] || rm -rf "$ws"

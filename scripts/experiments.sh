@@ -3,7 +3,7 @@
 # The closed-loop experiments of doc/experiments.md (test/experiments.yaml: the thesis's
 # Experiment 3 analogues and the fault runs).
 #   bash scripts/experiments.sh [--seeds N] [--sensor-profile ideal|realistic] [name ...]
-#       the lockstep runs (tool `experiments`): deterministic, seeds 1..N (default 8), a
+#       the lockstep runs (`lab experiments`): deterministic, seeds 1..N (default 8), a
 #       few seconds; prints the table and every broken threshold. The sensor profile is
 #       test/experiments.yaml's unless given (realistic: each seed calibrates its own
 #       simulated robot first, doc/experiments.md).
@@ -19,7 +19,7 @@ bash "$repo/scripts/build.sh" tests
 # shellcheck disable=SC1091
 source "$repo/scripts/env.sh"
 if [ "${1:-}" != "--ros" ]; then
-  exec "$RF_WS/devel/lib/radio_follow/experiments" "$@"
+  exec "$RF_WS/devel/lib/radio_follow/lab" experiments "$@"
 fi
 shift
 export ROS_HOME="${ROS_HOME:-$RF_WS/ros_home}"

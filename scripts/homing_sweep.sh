@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # The homing law's parameters one at a time on seed 000's Table 2 benchmark at the 0.3 m
 # arrival radius: each row is the shipped config/homing_controller.yaml with one value
-# changed (homing_experiment --params). Prints a Markdown table: the goal and final errors
+# changed (lab homing_experiment --params). Prints a Markdown table: the goal and final errors
 # of configurations 1-4 (lowest-highest) and configuration 5's goal error, final error,
 # success and time. Deterministic (fixed seed). Needs a built workspace.
 #   bash scripts/homing_sweep.sh
@@ -12,7 +12,7 @@ set +u
 # shellcheck disable=SC1091
 source "$repo/scripts/env.sh"
 set -u
-experiment="$RF_WS/devel/lib/radio_follow/homing_experiment"
+experiment=("$RF_WS/devel/lib/radio_follow/lab" homing_experiment)
 overlay="$(mktemp)"
 trap 'rm -f "$overlay"' EXIT
 
@@ -28,7 +28,7 @@ for change in "(none)" "agreement_distance: 0.1" "agreement_distance: 0.05" "tau
   "goal_estimator: seed000, range_step: 0.0" "goal_estimator: seed000, error_threshold: 1.0" \
   "goal_estimator: seed000, kohonen_k: 0.5" "goal_estimator: seed000, kohonen_k: 0.15"; do
   if [[ "$change" == "(none)" ]]; then : >"$overlay"; else sed 's/, /\n/g' <<<"$change" >"$overlay"; fi
-  "$experiment" --params "$overlay" | awk -F' *[|] *' -v change="$change" '
+  "${experiment[@]}" --params "$overlay" | awk -F' *[|] *' -v change="$change" '
     /^[|] [1-4]:/ {
       g = $6 + 0; f = $7 + 0
       if (n++ == 0) { lo = g; hi = g; flo = f; fhi = f }

@@ -127,16 +127,13 @@ for f in lib/radio_follow/simulator lib/radio_follow/locator lib/radio_follow/pl
   share/radio_follow/package.xml; do
   [ -e "$prefix/$f" ] || fail "the .deb lacks $f"
 done
-# The runtime only: every operator tool (src/tools/), no lab tool (src/lab/) and no
+# The runtime only: every operator tool (src/tools/), not the lab program (src/lab/) and no
 # library of the lab's evaluation layer.
 for source in "$repo"/src/tools/*.cpp; do
   tool="$(basename "$source" .cpp)"
   [ -e "$prefix/lib/radio_follow/$tool" ] || fail "the .deb lacks the operator tool $tool"
 done
-for source in "$repo"/src/lab/*.cpp; do
-  tool="$(basename "$source" .cpp)"
-  [ ! -e "$prefix/lib/radio_follow/$tool" ] || fail "the .deb installs the lab tool $tool"
-done
+[ ! -e "$prefix/lib/radio_follow/lab" ] || fail "the .deb installs the lab program"
 if find "$prefix" -name 'libradio_follow_evaluation*' | grep -q .; then
   fail "the .deb installs the lab's evaluation library"
 fi

@@ -48,8 +48,8 @@ echo "$(nproc) CPUs, load average $(cut -d' ' -f1-3 /proc/loadavg) at the start.
 if wanted accuracy; then
   heading "Locator accuracy against the Cramer-Rao bound (doc/locator_accuracy.md)"
   t0=$(now)
-  shown '"$RF_WS"/devel/lib/radio_follow/locator_montecarlo --trials 200'
-  "$bin/locator_montecarlo" --trials 200
+  shown '"$RF_WS"/devel/lib/radio_follow/lab locator_montecarlo --trials 200'
+  "$bin/lab" locator_montecarlo --trials 200
   echo
   echo "The thesis's solve formulation (bench/thesis_solver.hpp) on the same measurements:"
   echo
@@ -81,8 +81,8 @@ fi
 if wanted pcrb; then
   heading "Walking person against the posterior CRB (doc/locator_accuracy.md#walking-person-against-the-posterior-crb)"
   t0=$(now)
-  shown '"$RF_WS"/devel/lib/radio_follow/locator_pcrb --runs 200'
-  "$bin/locator_pcrb" --runs 200
+  shown '"$RF_WS"/devel/lib/radio_follow/lab locator_pcrb --runs 200'
+  "$bin/lab" locator_pcrb --runs 200
   echo
   echo "(pcrb: $(elapsed "$t0") s; deterministic: fixed seed)"
 fi
@@ -90,15 +90,15 @@ fi
 if wanted coldstarts; then
   heading "Locator cold starts and the reported covariance's consistency (doc/locator_accuracy.md#cold-starts)"
   t0=$(now)
-  shown '(cd test && "$RF_WS"/devel/lib/radio_follow/locator_cold_starts --trials 10000)'
-  (cd "$repo/test" && "$bin/locator_cold_starts" --trials 10000)
+  shown '(cd test && "$RF_WS"/devel/lib/radio_follow/lab locator_cold_starts --trials 10000)'
+  (cd "$repo/test" && "$bin/lab" locator_cold_starts --trials 10000)
   echo
-  shown '(cd test && "$RF_WS"/devel/lib/radio_follow/locator_cold_starts --trials 10000 --locator-overrides RSS.yaml)   # RSS.yaml: rss_direction: true'
+  shown '(cd test && "$RF_WS"/devel/lib/radio_follow/lab locator_cold_starts --trials 10000 --locator-overrides RSS.yaml)   # RSS.yaml: rss_direction: true'
   printf 'rss_direction: true\n' > "$tmp/rss.yaml"
-  (cd "$repo/test" && "$bin/locator_cold_starts" --trials 10000 --locator-overrides "$tmp/rss.yaml")
+  (cd "$repo/test" && "$bin/lab" locator_cold_starts --trials 10000 --locator-overrides "$tmp/rss.yaml")
   echo
-  shown '(cd test && "$RF_WS"/devel/lib/radio_follow/locator_cold_starts --sensor-profile ideal --trials 2000)'
-  (cd "$repo/test" && "$bin/locator_cold_starts" --sensor-profile ideal --trials 2000)
+  shown '(cd test && "$RF_WS"/devel/lib/radio_follow/lab locator_cold_starts --sensor-profile ideal --trials 2000)'
+  (cd "$repo/test" && "$bin/lab" locator_cold_starts --sensor-profile ideal --trials 2000)
   echo
   echo "(coldstarts: $(elapsed "$t0") s; deterministic: fixed seeds)"
 fi
@@ -122,20 +122,20 @@ fi
 
 if wanted homing; then
   heading "Homing, seed 000 Tables 2-3 (doc/homing_experiment.md)"
-  shown '"$RF_WS"/devel/lib/radio_follow/homing_experiment'
-  "$bin/homing_experiment"
+  shown '"$RF_WS"/devel/lib/radio_follow/lab homing_experiment'
+  "$bin/lab" homing_experiment
   echo
-  shown '"$RF_WS"/devel/lib/radio_follow/homing_experiment --arrival 0.15'
-  "$bin/homing_experiment" --arrival 0.15
+  shown '"$RF_WS"/devel/lib/radio_follow/lab homing_experiment --arrival 0.15'
+  "$bin/lab" homing_experiment --arrival 0.15
   echo
   echo "Five target sets at the 0.3 m radius, the node's goal (all_readings) and the hybrid rule's (seed000):"
   echo
   printf 'goal_estimator: seed000\n' >"$tmp/seed000.yaml"
-  shown "printf 'goal_estimator: seed000\\n' > /tmp/seed000.yaml; for s in 1 2 3 4 5; do \"\$RF_WS\"/devel/lib/radio_follow/homing_experiment --seed \$s [--params /tmp/seed000.yaml]; done"
+  shown "printf 'goal_estimator: seed000\\n' > /tmp/seed000.yaml; for s in 1 2 3 4 5; do \"\$RF_WS\"/devel/lib/radio_follow/lab homing_experiment --seed \$s [--params /tmp/seed000.yaml]; done"
   for estimator in all_readings seed000; do
     params=()
     [[ "$estimator" == seed000 ]] && params=(--params "$tmp/seed000.yaml")
-    for s in 1 2 3 4 5; do "$bin/homing_experiment" --seed "$s" "${params[@]}" >"$tmp/homing5_$s.md"; done
+    for s in 1 2 3 4 5; do "$bin/lab" homing_experiment --seed "$s" "${params[@]}" >"$tmp/homing5_$s.md"; done
     echo "$estimator:"
     echo
     "${tables[@]}" homing-range "$tmp"/homing5_{1,2,3,4,5}.md
@@ -143,35 +143,35 @@ if wanted homing; then
   done
   echo "Ten target sets, range of the ten values:"
   echo
-  shown 'for s in $(seq 1 10); do "$RF_WS"/devel/lib/radio_follow/homing_experiment --arrival 0.15 --seed $s; done'
-  for s in $(seq 1 10); do "$bin/homing_experiment" --arrival 0.15 --seed "$s" >"$tmp/homing_$s.md"; done
+  shown 'for s in $(seq 1 10); do "$RF_WS"/devel/lib/radio_follow/lab homing_experiment --arrival 0.15 --seed $s; done'
+  for s in $(seq 1 10); do "$bin/lab" homing_experiment --arrival 0.15 --seed "$s" >"$tmp/homing_$s.md"; done
   "${tables[@]}" homing-range "$tmp"/homing_{1,2,3,4,5,6,7,8,9,10}.md
   echo
   echo "Obstacle avoidance, seed 000 Table 4's analogue (configuration 5, 12 obstacles per run), five target sets:"
   echo
-  shown 'for s in 1 2 3 4 5; do "$RF_WS"/devel/lib/radio_follow/homing_experiment --obstacles 12 --seed $s; done'
+  shown 'for s in 1 2 3 4 5; do "$RF_WS"/devel/lib/radio_follow/lab homing_experiment --obstacles 12 --seed $s; done'
   for s in 1 2 3 4 5; do
     echo "target set $s:"
     echo
-    "$bin/homing_experiment" --obstacles 12 --seed "$s"
+    "$bin/lab" homing_experiment --obstacles 12 --seed "$s"
     echo
   done
   echo "The same with a robot of radius 0.3 m (the paper's thresholds leave too little room):"
   echo
-  shown '"$RF_WS"/devel/lib/radio_follow/homing_experiment --obstacles 12 --robot-radius 0.3'
-  "$bin/homing_experiment" --obstacles 12 --robot-radius 0.3
+  shown '"$RF_WS"/devel/lib/radio_follow/lab homing_experiment --obstacles 12 --robot-radius 0.3'
+  "$bin/lab" homing_experiment --obstacles 12 --robot-radius 0.3
   echo
   echo "Seed 000's law as published (the hybrid rule's goal, range_step 0: no step along the line of sight), on the benchmark:"
   echo
   printf 'goal_estimator: seed000\nrange_step: 0.0\n' >"$tmp/paper_law.yaml"
-  shown "printf 'goal_estimator: seed000\\nrange_step: 0.0\\n' > /tmp/paper_law.yaml; \"\$RF_WS\"/devel/lib/radio_follow/homing_experiment --params /tmp/paper_law.yaml"
-  "$bin/homing_experiment" --params "$tmp/paper_law.yaml"
+  shown "printf 'goal_estimator: seed000\\nrange_step: 0.0\\n' > /tmp/paper_law.yaml; \"\$RF_WS\"/devel/lib/radio_follow/lab homing_experiment --params /tmp/paper_law.yaml"
+  "$bin/lab" homing_experiment --params "$tmp/paper_law.yaml"
   echo
   echo "A lower eq 14 threshold (doc/control/homing.md) instead of the range step, on the benchmark:"
   echo
   printf 'goal_estimator: seed000\nrange_step: 0.0\nerror_threshold: 0.1\n' >"$tmp/threshold.yaml"
-  shown "printf 'goal_estimator: seed000\\nrange_step: 0.0\\nerror_threshold: 0.1\\n' > /tmp/threshold.yaml; \"\$RF_WS\"/devel/lib/radio_follow/homing_experiment --params /tmp/threshold.yaml"
-  "$bin/homing_experiment" --params "$tmp/threshold.yaml"
+  shown "printf 'goal_estimator: seed000\\nrange_step: 0.0\\nerror_threshold: 0.1\\n' > /tmp/threshold.yaml; \"\$RF_WS\"/devel/lib/radio_follow/lab homing_experiment --params /tmp/threshold.yaml"
+  "$bin/lab" homing_experiment --params "$tmp/threshold.yaml"
   echo
   echo "The law's parameters one at a time (configuration 5's goal error against the paper's 0.11 m):"
   echo
@@ -238,8 +238,8 @@ if wanted placement; then
     optimise "config/placement/${robot}_region.yaml" --method all --compare "config/layouts/$robot.yaml"
     cp "$tmp/opt/${robot}_optimised.yaml" "$tmp/${robot}_optimised.yaml"
   done
-  shown '"$RF_WS"/devel/lib/radio_follow/locator_pcrb --layouts spot,/tmp/opt/spot_optimised.yaml,tracked,/tmp/opt/tracked_optimised.yaml --paths straight,arc --runs 20'
-  "$bin/locator_pcrb" --layouts "spot,$tmp/spot_optimised.yaml,tracked,$tmp/tracked_optimised.yaml" \
+  shown '"$RF_WS"/devel/lib/radio_follow/lab locator_pcrb --layouts spot,/tmp/opt/spot_optimised.yaml,tracked,/tmp/opt/tracked_optimised.yaml --paths straight,arc --runs 20'
+  "$bin/lab" locator_pcrb --layouts "spot,$tmp/spot_optimised.yaml,tracked,$tmp/tracked_optimised.yaml" \
     --paths straight,arc --runs 20
 fi
 
@@ -329,33 +329,33 @@ if wanted standing; then
   t0=$(now)
   for experiment in static walk; do
     for layout in spot tracked cube spot_tdoa; do
-      shown "\"\$RF_WS\"/devel/lib/radio_follow/standing_experiments --experiment $experiment --layout $layout"
-      "$bin/standing_experiments" --experiment "$experiment" --layout "$layout"
+      shown "\"\$RF_WS\"/devel/lib/radio_follow/lab standing_experiments --experiment $experiment --layout $layout"
+      "$bin/lab" standing_experiments --experiment "$experiment" --layout "$layout"
       echo
     done
   done
   # The TDoA heading mode on eight simulated robots: the whole-walk line of each.
   for robot in 2 3 4 5 6 7 8; do
-    shown "\"\$RF_WS\"/devel/lib/radio_follow/standing_experiments --experiment walk --layout spot_tdoa --robot $robot | tail -1"
-    "$bin/standing_experiments" --experiment walk --layout spot_tdoa --robot "$robot" | tail -1
+    shown "\"\$RF_WS\"/devel/lib/radio_follow/lab standing_experiments --experiment walk --layout spot_tdoa --robot $robot | tail -1"
+    "$bin/lab" standing_experiments --experiment walk --layout spot_tdoa --robot "$robot" | tail -1
   done
   # Issue 35's bench: one board alone, the person walking and standing in front of it.
   echo
-  shown "\"\$RF_WS\"/devel/lib/radio_follow/standing_experiments --experiment heading --walks 1000"
-  "$bin/standing_experiments" --experiment heading --walks 1000
+  shown "\"\$RF_WS\"/devel/lib/radio_follow/lab standing_experiments --experiment heading --walks 1000"
+  "$bin/lab" standing_experiments --experiment heading --walks 1000
   echo
-  shown "\"\$RF_WS\"/devel/lib/radio_follow/standing_experiments --experiment heading --walks 1000 --layout xplr_kit"
-  "$bin/standing_experiments" --experiment heading --walks 1000 --layout xplr_kit
+  shown "\"\$RF_WS\"/devel/lib/radio_follow/lab standing_experiments --experiment heading --walks 1000 --layout xplr_kit"
+  "$bin/lab" standing_experiments --experiment heading --walks 1000 --layout xplr_kit
   echo "(standing: $(elapsed "$t0") s; deterministic)"
 fi
 
 if wanted rssi; then
   heading "RSSI filters and seed 002's trilateration (doc/rssi_filters.md)"
-  shown '"$RF_WS"/devel/lib/radio_follow/rssi_filter_compare'
-  "$bin/rssi_filter_compare"
+  shown '"$RF_WS"/devel/lib/radio_follow/lab rssi_filter_compare'
+  "$bin/lab" rssi_filter_compare
   echo
-  shown '"$RF_WS"/devel/lib/radio_follow/trilateration_compare'
-  "$bin/trilateration_compare"
+  shown '"$RF_WS"/devel/lib/radio_follow/lab trilateration_compare'
+  "$bin/lab" trilateration_compare
   echo
   echo "(rssi: deterministic but for the trilateration timings, which are ratios measured in the same run)"
 fi
@@ -375,21 +375,21 @@ if wanted real; then
     echo
   done
   echo "The standing mode's cold starts (the robot and the person standing: doc/locator_accuracy.md#cold-starts), with its file and with the shipped covariance floor (SHIPPED_FLOOR.yaml: the file with range_bias_sigma: 0.05 and azimuth_bias_sigma_deg: 2.0):"
-  shown '(cd test && "$RF_WS"/devel/lib/radio_follow/locator_cold_starts --trials 10000 --locator-overrides ../config/locator_standing.yaml)'
-  (cd "$repo/test" && "$bin/locator_cold_starts" --trials 10000 --locator-overrides ../config/locator_standing.yaml)
+  shown '(cd test && "$RF_WS"/devel/lib/radio_follow/lab locator_cold_starts --trials 10000 --locator-overrides ../config/locator_standing.yaml)'
+  (cd "$repo/test" && "$bin/lab" locator_cold_starts --trials 10000 --locator-overrides ../config/locator_standing.yaml)
   sed -e 's/^range_bias_sigma:.*/range_bias_sigma: 0.05/' \
     -e 's/^azimuth_bias_sigma_deg:.*/azimuth_bias_sigma_deg: 2.0/' config/locator_standing.yaml >"$tmp/shipped_floor.yaml"
-  shown '(cd test && "$RF_WS"/devel/lib/radio_follow/locator_cold_starts --trials 10000 --locator-overrides SHIPPED_FLOOR.yaml)'
-  (cd "$repo/test" && "$bin/locator_cold_starts" --trials 10000 --locator-overrides "$tmp/shipped_floor.yaml")
+  shown '(cd test && "$RF_WS"/devel/lib/radio_follow/lab locator_cold_starts --trials 10000 --locator-overrides SHIPPED_FLOOR.yaml)'
+  (cd "$repo/test" && "$bin/lab" locator_cold_starts --trials 10000 --locator-overrides "$tmp/shipped_floor.yaml")
   echo
   echo "What the standing mode costs a walking person (the Gaussian walking-person benchmark):"
-  shown '"$RF_WS"/devel/lib/radio_follow/locator_pcrb --runs 200 --locator-overrides config/locator_standing.yaml'
-  "$bin/locator_pcrb" --runs 200 --locator-overrides config/locator_standing.yaml
+  shown '"$RF_WS"/devel/lib/radio_follow/lab locator_pcrb --runs 200 --locator-overrides config/locator_standing.yaml'
+  "$bin/lab" locator_pcrb --runs 200 --locator-overrides config/locator_standing.yaml
   echo
   echo "... and with DECORRELATION.yaml on top (BEACON.yaml: both files' keys):"
   cat config/locator_standing.yaml "$tmp/decorrelation.yaml" > "$tmp/beacon.yaml"
-  shown '"$RF_WS"/devel/lib/radio_follow/locator_pcrb --runs 200 --locator-overrides BEACON.yaml'
-  "$bin/locator_pcrb" --runs 200 --locator-overrides "$tmp/beacon.yaml"
+  shown '"$RF_WS"/devel/lib/radio_follow/lab locator_pcrb --runs 200 --locator-overrides BEACON.yaml'
+  "$bin/lab" locator_pcrb --runs 200 --locator-overrides "$tmp/beacon.yaml"
   echo
   echo "(real: $(elapsed "$t0") s; deterministic)"
 fi

@@ -3,7 +3,7 @@
 """Markdown tables for scripts/results.sh from the tools' raw outputs.
 
   results_tables.py bench BENCH.json          locator solve vs the thesis's, mirror test
-  results_tables.py homing-range OUT...       range over homing_experiment outputs
+  results_tables.py homing-range OUT...       range over lab homing_experiment outputs
   results_tables.py placement DIR...          rings of placement_advisor summaries
   results_tables.py offline-speed LOG...      replay speed of locator_offline runs
   results_tables.py median X...               median of numbers

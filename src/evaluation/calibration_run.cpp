@@ -135,7 +135,7 @@ Layout locatorLayoutFor(const Layout& layout, const sim::WorldConfig& world) {
   Layout calibrated = runCalibration(layout, world).layout;
   if (world.profile == sim::SensorProfile::kIdeal) {
     // Ideal boards sit exactly as designed: a yaw fit would only turn them by the tables'
-    // direction-dependent azimuth bias (locator_cold_starts --sensor-profile ideal: NEES
+    // direction-dependent azimuth bias (lab locator_cold_starts --sensor-profile ideal: NEES
     // 18.6 with it, 3.2 without).
     calibrated.aoa_boards = layout.aoa_boards;
   }

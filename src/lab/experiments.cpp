@@ -1,15 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Runs the closed-loop experiments of test/experiments.yaml in the lockstep loop
-// (sim/closed_loop.hpp) with the shipped configuration over noise seeds 1..N and prints
-// the Markdown table of doc/experiments.md (ranges over the seeds); then, when some
-// experiments' scenarios have obstacles, their table of obstacle metrics (success: runs
-// that kept following without a collision, evaluation::keptFollowing); then one line per
-// broken threshold. Exit status 1 when any run broke one. Deterministic: the same
-// arguments print the same table.
-//   experiments [--seeds N] [--file test/experiments.yaml] [--config-dir DIR]
-//               [--sensor-profile ideal|realistic] [name ...]
-// --sensor-profile replaces every experiment's (default: the file's); with realistic each
-// seed is its own simulated robot, calibrated by the calibration run before it follows.
+// lab experiments: the closed-loop experiments of test/experiments.yaml over seeds 1..N
+// (evaluation/experiment.hpp), as doc/experiments.md's tables.
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -21,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "lab_commands.hpp"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/evaluation/experiment.hpp"
 
@@ -80,42 +72,57 @@ std::string obstacleRow(const radio_follow::evaluation::Experiment& experiment, 
   return row;
 }
 
-}  // namespace
+radio_follow::cli::CommandLine experimentsCommandLine() {
+  namespace lab = radio_follow::lab;
+  radio_follow::cli::CommandLine cli(
+      "lab experiments",
+      "usage: lab experiments [--seeds N] [--file FILE] [--config-dir DIR]\n"
+      "         [--sensor-profile ideal|realistic] [name ...]\n",
+      "Runs the closed-loop experiments of test/experiments.yaml (all, or those named) in the\n"
+      "lockstep loop with the shipped configuration over noise seeds 1..N and prints the\n"
+      "Markdown table of doc/experiments.md (ranges over the seeds); then, when some\n"
+      "experiments' scenarios have obstacles, their table of obstacle metrics (success: runs\n"
+      "that kept following without a collision); then one line per broken threshold. Exit 1\n"
+      "when any run broke one, 2 on a bad option or file. Deterministic.\n");
+  cli.options()("seeds", lab::value("N", "8"), "noise seeds 1..N")(
+      "file", lab::value("FILE", RF_EXPERIMENTS_FILE), "the experiments and their thresholds")(
+      "config-dir", lab::value("DIR", RF_CONFIG_DIR), "the shipped configuration's folder")(
+      "sensor-profile", lab::value("P"),
+      "ideal or realistic, for every experiment (default: the file's); realistic: each seed "
+      "is its own simulated robot, calibrated by the calibration run before it follows");
+  cli.positional("name", -1);
+  return cli;
+}
 
-int main(int argc, char** argv) {
+struct ExperimentsOptions {
   int seeds = 8;
-  std::string file = RF_EXPERIMENTS_FILE;
-  std::string config_dir = RF_CONFIG_DIR;
+  std::string file;
+  std::string config_dir;
   std::string profile;
   std::vector<std::string> names;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if ((arg == "--seeds" || arg == "--file" || arg == "--config-dir" ||
-         arg == "--sensor-profile") &&
-        i + 1 < argc) {
-      const std::string value = argv[++i];
-      if (arg == "--seeds") {
-        seeds = std::atoi(value.c_str());
-      } else if (arg == "--sensor-profile") {
-        profile = value;
-      } else if (arg == "--file") {
-        file = value;
-      } else {
-        config_dir = value;
-      }
-    } else if (arg.rfind("--", 0) == 0) {
-      std::fprintf(stderr,
-                   "usage: experiments [--seeds N] [--file FILE] [--config-dir DIR] "
-                   "[--sensor-profile ideal|realistic] [name ...]\n");
-      return 2;
-    } else {
-      names.push_back(arg);
-    }
+};
+
+ExperimentsOptions readExperimentsOptions(const radio_follow::lab::po::variables_map& values) {
+  using radio_follow::cli::CommandLine;
+  ExperimentsOptions o;
+  o.seeds = static_cast<int>(radio_follow::lab::count(values, "seeds", 1));
+  o.file = values["file"].as<std::string>();
+  o.config_dir = values["config-dir"].as<std::string>();
+  o.profile = CommandLine::text(values, "sensor-profile");
+  if (!o.profile.empty()) {
+    radio_follow::sim::parseSensorProfile(o.profile, "--sensor-profile");  // refused before a run
   }
-  if (seeds < 1) {
-    std::fprintf(stderr, "experiments: --seeds must be >= 1\n");
-    return 2;
-  }
+  o.names = CommandLine::texts(values, "name");
+  return o;
+}
+
+}  // namespace
+
+int radio_follow::lab::experimentsMain(int argc, char** argv) {
+  const ExperimentsOptions o = experimentsCommandLine().parse(argc, argv, readExperimentsOptions);
+  const int seeds = o.seeds;
+  const std::string& profile = o.profile;
+  const std::vector<std::string>& names = o.names;
   try {
     std::vector<std::string> broken;
     std::string obstacle_rows;
@@ -128,7 +135,7 @@ int main(int argc, char** argv) {
       std::printf("---|");
     }
     std::printf("\n");
-    for (auto experiment : radio_follow::evaluation::loadExperiments(file)) {
+    for (auto experiment : radio_follow::evaluation::loadExperiments(o.file)) {
       if (!names.empty() && std::find(names.begin(), names.end(), experiment.name) == names.end()) {
         continue;
       }
@@ -141,7 +148,7 @@ int main(int argc, char** argv) {
       int collisions = 0;
       double min_clearance = std::numeric_limits<double>::infinity();  // no obstacles
       for (int seed = 1; seed <= seeds; ++seed) {
-        const auto result = radio_follow::evaluation::runExperiment(experiment, config_dir, seed);
+        const auto result = radio_follow::evaluation::runExperiment(experiment, o.config_dir, seed);
         for (std::size_t i = 0; i < std::size(kColumns); ++i) {
           values[i].push_back(kColumns[i].value(result.report));
         }
@@ -174,7 +181,7 @@ int main(int argc, char** argv) {
     }
     return broken.empty() ? 0 : 1;
   } catch (const radio_follow::ParamError& e) {
-    std::fprintf(stderr, "experiments: %s\n", e.what());
+    std::fprintf(stderr, "lab experiments: %s\n", e.what());
     return 2;
   }
 }

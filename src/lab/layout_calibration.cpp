@@ -1,53 +1,67 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Runs the simulated calibration run (evaluation/calibration_run.hpp) for a layout on the
-// simulated robot of a hardware seed and prints the calibrated layout (writeCalibratedLayout:
-// only the modules' calibration and the boards' yaw change), each fit's figures in its
-// header comment: how the shipped layouts' calibrations for
-// the simulator's default hardware are made (doc/simulator.md, "Calibration run").
-//   layout_calibration [--layout spot] [--hardware-seed 1] [--seed 1] [--config-dir DIR]
-// The sensors are config/simulator.yaml's with the realistic profile.
+// lab layout_calibration: a layout calibrated by the simulated calibration run
+// (evaluation/calibration_run.hpp) on the simulated robot of a hardware seed.
 #include <cstdio>
-#include <cstdlib>
 #include <exception>
-#include <map>
 #include <string>
 #include <vector>
 
+#include "lab_commands.hpp"
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
-#include "radio_follow/common/tool_options.hpp"
 #include "radio_follow/common/yaml_keys.hpp"
 #include "radio_follow/common/yaml_params.hpp"
 #include "radio_follow/evaluation/calibration_run.hpp"
 
 namespace {
 
-int usage(const std::string& problem) {
-  std::fprintf(stderr,
-               "layout_calibration: %s\nusage: layout_calibration [--layout L] "
-               "[--hardware-seed N] [--seed N] [--config-dir DIR]\n",
-               problem.c_str());
-  return 2;
+radio_follow::cli::CommandLine layoutCalibrationCommandLine() {
+  namespace lab = radio_follow::lab;
+  radio_follow::cli::CommandLine cli(
+      "lab layout_calibration",
+      "usage: lab layout_calibration [--layout L] [--hardware-seed N] [--seed N] "
+      "[--config-dir DIR]\n",
+      "Runs the simulated calibration run (evaluation/calibration_run.hpp) for a layout on the\n"
+      "simulated robot of a hardware seed and prints the calibrated layout (only the modules'\n"
+      "calibration and the boards' yaw change), each fit's figures in its header comment: how\n"
+      "the shipped layouts' calibrations for the simulator's default hardware are made\n"
+      "(doc/simulator.md, \"Calibration run\"). The sensors are config/simulator.yaml's with the\n"
+      "realistic profile.\n");
+  cli.options()("layout", lab::value("L", "spot"), "config/layouts/<L>.yaml")(
+      "hardware-seed", lab::value("N", "1"), "the simulated robot")(
+      "seed", lab::value("N", "1"), "the calibration run's noise seed")(
+      "config-dir", lab::value("DIR", RF_CONFIG_DIR), "the shipped configuration's folder");
+  return cli;
+}
+
+struct LayoutCalibrationOptions {
+  std::string layout;
+  int hardware_seed = 1;
+  int seed = 1;
+  std::string config_dir;
+};
+
+LayoutCalibrationOptions readLayoutCalibrationOptions(
+    const radio_follow::lab::po::variables_map& values) {
+  LayoutCalibrationOptions o;
+  o.layout = values["layout"].as<std::string>();
+  o.hardware_seed = static_cast<int>(radio_follow::lab::count(values, "hardware-seed", 0));
+  o.seed = static_cast<int>(radio_follow::lab::count(values, "seed", 0));
+  o.config_dir = values["config-dir"].as<std::string>();
+  return o;
 }
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int radio_follow::lab::layoutCalibrationMain(int argc, char** argv) {
   namespace rf = radio_follow;
-  // Every option takes a value; the map holds the defaults.
-  std::map<std::string, std::string> options{{"--layout", "spot"},
-                                             {"--hardware-seed", "1"},
-                                             {"--seed", "1"},
-                                             {"--config-dir", RF_CONFIG_DIR}};
-  if (const auto problem = rf::readToolOptions(argc, argv, options)) {
-    return usage(*problem);
-  }
-  const std::string layout_name = options["--layout"];
-  const std::string config_dir = options["--config-dir"];
+  const LayoutCalibrationOptions o =
+      layoutCalibrationCommandLine().parse(argc, argv, readLayoutCalibrationOptions);
+  const std::string& layout_name = o.layout;
+  const std::string& config_dir = o.config_dir;
+  const int hardware_seed = o.hardware_seed;
+  const int seed = o.seed;
   try {
-    const auto hardware_seed =
-        static_cast<int>(rf::toolCount("--hardware-seed", options["--hardware-seed"]));
-    const auto seed = static_cast<int>(rf::toolCount("--seed", options["--seed"]));
     const std::string path = config_dir + "/layouts/" + layout_name + ".yaml";
     const rf::Layout layout = rf::loadLayoutFile(path, "--layout");
     rf::sim::WorldConfig world;
@@ -56,7 +70,7 @@ int main(int argc, char** argv) {
     world.hardware_seed = static_cast<std::uint64_t>(hardware_seed);
     world.seed = static_cast<std::uint64_t>(seed);
     const rf::evaluation::CalibrationResult result = rf::evaluation::runCalibration(layout, world);
-    std::vector<std::string> header{"layout_calibration --layout " + layout_name +
+    std::vector<std::string> header{"lab layout_calibration --layout " + layout_name +
                                     " --hardware-seed " + std::to_string(hardware_seed) +
                                     " --seed " + std::to_string(seed) +
                                     ": the simulated calibration run (doc/simulator.md)"};
@@ -81,7 +95,7 @@ int main(int argc, char** argv) {
                           .c_str());
     return 0;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "layout_calibration: %s\n", e.what());
+    std::fprintf(stderr, "lab layout_calibration: %s\n", e.what());
     return 2;
   }
 }

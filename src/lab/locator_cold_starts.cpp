@@ -1,70 +1,89 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Issue 14's cold-start benchmark (evaluation/cold_starts.hpp): the locator started from
-// nothing, many times, on a standing robot's simulated sensors with the shipped
-// config/locator.yaml; how often, and how long, a drivable estimate sits on the mirror image.
-//   locator_cold_starts [--layout spot] [--trials 10000] [--first 0]
-//                       [--sensor-profile realistic] [--locator-overrides FILE]
-//                       [--config-dir DIR] [--trace TRIAL]
-// Lists the trials that sat on the mirror for more than 1 s; --trace prints every update of
-// one trial (status, error, hypotheses) and, before each, the ranges and bearings it got,
-// beside what an exact sensor would have reported, to see why. Each trial has its own random
-// stream, so `--first N --trials 1 --trace N` runs trial N alone.
+// lab locator_cold_starts: issue 14's cold-start benchmark (evaluation/cold_starts.hpp).
 #include <cmath>
 #include <cstdio>
 #include <exception>
-#include <map>
+#include <optional>
 #include <string>
 
+#include "lab_commands.hpp"
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
-#include "radio_follow/common/tool_options.hpp"
 #include "radio_follow/estimation/measurement_models.hpp"
 #include "radio_follow/evaluation/closed_loop.hpp"
 #include "radio_follow/evaluation/cold_starts.hpp"
 
 namespace {
 
-int usage(const std::string& problem) {
-  std::fprintf(
-      stderr,
-      "locator_cold_starts: %s\nusage: locator_cold_starts [--layout L] [--trials N] [--first N] "
-      "[--sensor-profile ideal|realistic] [--locator-overrides FILE] "
-      "[--config-dir DIR] [--trace TRIAL]\n",
-      problem.c_str());
-  return 2;
+radio_follow::cli::CommandLine coldStartsCommandLine() {
+  namespace lab = radio_follow::lab;
+  radio_follow::cli::CommandLine cli(
+      "lab locator_cold_starts",
+      "usage: lab locator_cold_starts [--layout L] [--trials N] [--first N]\n"
+      "         [--sensor-profile ideal|realistic] [--locator-overrides FILE] [--config-dir DIR]\n"
+      "         [--trace TRIAL]\n",
+      "Issue 14's cold-start benchmark (evaluation/cold_starts.hpp): the locator started from\n"
+      "nothing, many times, on a standing robot's simulated sensors with the shipped\n"
+      "config/locator.yaml; how often, and how long, a drivable estimate sits on the mirror\n"
+      "image. Lists the trials that sat on the mirror for more than 1 s. Each trial has its own\n"
+      "random stream, so `--first N --trials 1 --trace N` runs trial N alone.\n");
+  cli.options()("layout", lab::value("L", "spot"), "config/layouts/<L>.yaml")(
+      "trials", lab::value("N", "10000"), "cold starts, >= 1")("first", lab::value("N", "0"),
+                                                               "the first trial's index")(
+      "sensor-profile", lab::value("P", "realistic"), "ideal or realistic")(
+      "locator-overrides", lab::value("FILE"), "YAML over config/locator.yaml")(
+      "config-dir", lab::value("DIR", RF_CONFIG_DIR), "the shipped configuration's folder")(
+      "trace", lab::value("TRIAL"),
+      "print every update of that trial (status, error, hypotheses) and, before each, the "
+      "ranges and bearings it got beside what an exact sensor would have reported");
+  return cli;
+}
+
+struct ColdStartsOptions {
+  std::string layout;
+  std::size_t trials = 10000;
+  std::size_t first = 0;
+  std::string profile_name;
+  radio_follow::sim::SensorProfile profile = radio_follow::sim::SensorProfile::kRealistic;
+  std::string locator_overrides;
+  std::string config_dir;
+  std::optional<std::size_t> trace;
+};
+
+ColdStartsOptions readColdStartsOptions(const radio_follow::lab::po::variables_map& values) {
+  namespace lab = radio_follow::lab;
+  ColdStartsOptions o;
+  o.layout = values["layout"].as<std::string>();
+  o.trials = static_cast<std::size_t>(lab::count(values, "trials", 1));
+  o.first = static_cast<std::size_t>(lab::count(values, "first", 0));
+  o.profile_name = values["sensor-profile"].as<std::string>();
+  o.profile = radio_follow::sim::parseSensorProfile(o.profile_name, "--sensor-profile");
+  o.locator_overrides = radio_follow::cli::CommandLine::text(values, "locator-overrides");
+  o.config_dir = values["config-dir"].as<std::string>();
+  if (values.count("trace")) {
+    const std::string text = values["trace"].as<std::string>();
+    o.trace = static_cast<std::size_t>(radio_follow::cli::wholeNumber(
+        "--trace", text, static_cast<double>(o.first), static_cast<double>(o.first + o.trials - 1),
+        "a trial index in [--first, --first + --trials)"));
+  }
+  return o;
 }
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int radio_follow::lab::locatorColdStartsMain(int argc, char** argv) {
   namespace rf = radio_follow;
-  std::map<std::string, std::string> options{{"--layout", "spot"},
-                                             {"--trials", "10000"},
-                                             {"--first", "0"},
-                                             {"--sensor-profile", "realistic"},
-                                             {"--locator-overrides", ""},
-                                             {"--config-dir", RF_CONFIG_DIR},
-                                             {"--trace", ""}};
-  if (const auto problem = rf::readToolOptions(argc, argv, options)) {
-    return usage(*problem);
-  }
+  const ColdStartsOptions o = coldStartsCommandLine().parse(argc, argv, readColdStartsOptions);
   try {
-    const std::size_t trials = rf::toolCount("--trials", options["--trials"], 1);
-    const std::size_t first = rf::toolCount("--first", options["--first"]);
-    const rf::sim::SensorProfile profile =
-        rf::sim::parseSensorProfile(options["--sensor-profile"], "--sensor-profile");
     // The lockstep loop's loader: the shipped simulator and locator files, as the robot runs.
     const rf::evaluation::ClosedLoopConfig c = rf::evaluation::loadClosedLoopConfig(
-        options["--config-dir"], options["--layout"], "outdoor_loop",
-        rf::evaluation::FollowController::kVelocity, 1, "", options["--locator-overrides"],
-        profile);
+        o.config_dir, o.layout, "outdoor_loop", rf::evaluation::FollowController::kVelocity, 1, "",
+        o.locator_overrides, o.profile);
     rf::evaluation::ColdStartParams params;
-    params.trials = trials;
-    params.first_trial = first;
-    if (!options["--trace"].empty()) {
-      const std::size_t traced = rf::toolCount("--trace", options["--trace"]);
-      rf::require(traced >= first && traced < first + trials, "--trace", options["--trace"],
-                  "a trial index in [--first, --first + --trials)");
+    params.trials = o.trials;
+    params.first_trial = o.first;
+    if (o.trace) {
+      const std::size_t traced = *o.trace;
       std::printf(
           "trial %zu: t (s), status, estimate x y (m), error (m), hypotheses, "
           "weight, alternative x y (m)\n",
@@ -108,8 +127,8 @@ int main(int argc, char** argv) {
         rf::evaluation::runColdStarts(c.layout, c.world, c.locator, params);
     std::printf(
         "layout %s, %s sensors, %zu cold starts (%d robots, person %.1f-%.1f m, %.0f s each)\n",
-        options["--layout"].c_str(), options["--sensor-profile"].c_str(), r.trials, params.robots,
-        params.min_distance, params.max_distance, params.duration);
+        o.layout.c_str(), o.profile_name.c_str(), r.trials, params.robots, params.min_distance,
+        params.max_distance, params.duration);
     std::printf(
         "mirror locks longer than 1 s: %zu; trials ever on the mirror while usable: %zu; "
         "longest %.2f s\n",
@@ -135,7 +154,7 @@ int main(int argc, char** argv) {
         r.within_95, r.nees_samples);
     return 0;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "locator_cold_starts: %s\n", e.what());
+    std::fprintf(stderr, "lab locator_cold_starts: %s\n", e.what());
     return 1;
   }
 }

@@ -1,26 +1,23 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Monte Carlo accuracy of the locator's solver against the Cramer-Rao lower bound, per
+// lab locator_montecarlo: the locator's solver against the Cramer-Rao lower bound, per
 // sensor layout and noise level, plus the NLOS outlier test and per-solve latency.
-// ROS-free; prints Markdown tables (doc/locator_accuracy.md holds a run and the command).
-//
-//   locator_montecarlo [--trials N] [--seed S] [--layouts DIR] [--range-loss TYPE]
-//                      [--range-loss-scale S] [--outliers 0|1]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <optional>
 #include <random>
 #include <string>
 #include <vector>
 
+#include "lab_commands.hpp"
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/estimation/fisher.hpp"
 #include "radio_follow/estimation/initializer.hpp"
 #include "radio_follow/estimation/position_solver.hpp"
 #include "radio_follow/estimation/synthetic_observations.hpp"
+#include "target_grid.hpp"
 
 namespace rf = radio_follow;
 
@@ -32,17 +29,17 @@ struct Case {
   int max_bearings;
 };
 
-struct Options {
-  int trials = 200;
-  unsigned long seed = 1;
-  std::string layouts = "config/layouts";
+struct MontecarloOptions {
+  int trials = 0;
+  unsigned long seed = 0;
+  std::string layouts;
   rf::estimation::LossConfig range_loss = rf::estimation::SolverConfig{}.range_loss;
-  bool outliers = true;
+  bool outliers = false;
 };
 
-constexpr double kHeight = 1.0;       // target plane (2D mode), m
-constexpr double kRangeSigma = 0.03;  // m
-constexpr double kWellPosed = 0.1;    // sqrt(tr CRLB) / distance below this: well posed
+constexpr double kTargetHeight = 1.0;  // target plane (2D mode), m
+constexpr double kRangeSigma = 0.03;   // m
+constexpr double kWellPosed = 0.1;     // sqrt(tr CRLB) / distance below this: well posed
 
 double percentile(std::vector<double> v, double q) {
   if (v.empty())
@@ -50,17 +47,6 @@ double percentile(std::vector<double> v, double q) {
   std::sort(v.begin(), v.end());
   const std::size_t i = std::min(v.size() - 1, static_cast<std::size_t>(q * (v.size() - 1) + 0.5));
   return v[i];
-}
-
-std::vector<Eigen::Vector3d> grid() {
-  std::vector<Eigen::Vector3d> points;
-  for (int r = 1; r <= 10; ++r) {
-    for (int k = 0; k < 12; ++k) {
-      const double a = rf::deg2rad(15.0 + 30.0 * k);  // off the boards' seams and axes
-      points.emplace_back(r * std::cos(a), r * std::sin(a), kHeight);
-    }
-  }
-  return points;
 }
 
 rf::estimation::SolveResult coldSolve(const rf::estimation::PositionSolver& solver,
@@ -80,17 +66,17 @@ rf::estimation::SyntheticNoise noiseFor(const Case& c) {
   return noise;
 }
 
-void accuracyTable(const Options& opt, const std::vector<Case>& cases) {
+void accuracyTable(const MontecarloOptions& opt, const std::vector<Case>& cases) {
   std::printf(
       "| layout | az sigma | bearings | well-posed | RMSE/CRLB median | p90 | max | "
       "RMSE, CRLB (m, pooled) | ill-posed RMSE/CRLB median | failures | cold solve median / p99 "
       "(us) |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
   rf::estimation::SolverConfig config;
-  config.height = kHeight;
+  config.height = kTargetHeight;
   config.range_loss = opt.range_loss;
   const rf::estimation::PositionSolver solver(config);
   rf::estimation::InitializerConfig init;
-  init.height = kHeight;
+  init.height = kTargetHeight;
   std::vector<std::vector<double>> by_radius(cases.size());
   for (std::size_t ci = 0; ci < cases.size(); ++ci) {
     const Case& c = cases[ci];
@@ -105,7 +91,7 @@ void accuracyTable(const Options& opt, const std::vector<Case>& cases) {
     int well = 0;
     std::vector<double> radius_mse(11, 0.0);
     std::vector<double> radius_crlb(11, 0.0);
-    const auto points = grid();
+    const auto points = rf::lab::targetGrid(kTargetHeight);
     for (const auto& truth : points) {
       const rf::estimation::ObservationSet ideal =
           rf::estimation::idealObservations(layout, truth, noiseFor(c), c.max_bearings);
@@ -178,7 +164,7 @@ void accuracyTable(const Options& opt, const std::vector<Case>& cases) {
 }
 
 // One range reads +2 m (blocked direct path) in 10 % of epochs.
-void outlierTable(const Options& opt, const std::vector<Case>& cases) {
+void outlierTable(const MontecarloOptions& opt, const std::vector<Case>& cases) {
   std::printf(
       "\nNLOS outlier test: one range +2 m in 10 %% of epochs; RMSE (m) over the grid, "
       "tracking (warm start from the last epoch), bearing loss = range loss:\n\n| layout | az "
@@ -193,7 +179,7 @@ void outlierTable(const Options& opt, const std::vector<Case>& cases) {
     const rf::Layout layout = rf::loadLayoutFile(opt.layouts + "/" + c.layout + ".yaml");
     for (const auto& loss : losses) {
       rf::estimation::SolverConfig config;
-      config.height = kHeight;
+      config.height = kTargetHeight;
       config.range_loss = config.bearing_loss = loss;
       const rf::estimation::PositionSolver solver(config);
       double se[2] = {0.0, 0.0};
@@ -201,7 +187,7 @@ void outlierTable(const Options& opt, const std::vector<Case>& cases) {
       for (int pass = 0; pass < 2; ++pass) {
         std::mt19937_64 rng(opt.seed);
         std::uniform_real_distribution<double> unit(0.0, 1.0);
-        for (const auto& truth : grid()) {
+        for (const auto& truth : rf::lab::targetGrid(kTargetHeight)) {
           const rf::estimation::ObservationSet ideal =
               rf::estimation::idealObservations(layout, truth, noiseFor(c), c.max_bearings);
           // Tracking: the first epoch starts cold (and clean), the others from the last
@@ -215,7 +201,7 @@ void outlierTable(const Options& opt, const std::vector<Case>& cases) {
             if (pass == 1 && u < 0.1 && warm)
               obs.ranges[which].range += 2.0;
             rf::estimation::InitializerConfig init;
-            init.height = kHeight;
+            init.height = kTargetHeight;
             const rf::estimation::SolveResult r =
                 warm ? solver.solve(obs, *warm) : coldSolve(solver, obs, init);
             if (r.success) {
@@ -235,48 +221,56 @@ void outlierTable(const Options& opt, const std::vector<Case>& cases) {
   }
 }
 
+radio_follow::cli::CommandLine montecarloCommandLine() {
+  namespace lab = radio_follow::lab;
+  radio_follow::cli::CommandLine cli(
+      "lab locator_montecarlo",
+      "usage: lab locator_montecarlo [--trials N] [--seed S] [--layouts DIR]\n"
+      "         [--range-loss none|huber|soft_l1|cauchy] [--range-loss-scale S] "
+      "[--outliers 0|1]\n",
+      "Monte Carlo accuracy of the locator's solver against the Cramer-Rao lower bound, per\n"
+      "sensor layout and noise level, plus the NLOS outlier test and per-solve latency.\n"
+      "ROS-free; prints Markdown tables (doc/locator_accuracy.md holds a run and the command).\n");
+  cli.options()("trials", lab::value("N", "200"), "trials per grid point, >= 1")(
+      "seed", lab::value("S", "1"), "the noise seed")(
+      "layouts", lab::value("DIR", "config/layouts"), "the layouts' folder")(
+      "range-loss", lab::value("TYPE"),
+      "the solver's range loss: none, huber, soft_l1 or cauchy; default: the solver's")(
+      "range-loss-scale", lab::value("S"), "its scale, > 0; default: the solver's")(
+      "outliers", lab::value("0|1", "1"), "1: also the NLOS outlier test");
+  return cli;
+}
+
+MontecarloOptions readMontecarloOptions(const radio_follow::lab::po::variables_map& values) {
+  namespace lab = radio_follow::lab;
+  MontecarloOptions opt;
+  opt.trials = static_cast<int>(lab::count(values, "trials", 1));
+  opt.seed = static_cast<unsigned long>(lab::count(values, "seed", 0));
+  opt.layouts = values["layouts"].as<std::string>();
+  if (values.count("range-loss")) {
+    opt.range_loss.type =
+        rf::estimation::parseLossType(values["range-loss"].as<std::string>(), "--range-loss");
+  }
+  if (values.count("range-loss-scale")) {
+    opt.range_loss.scale =
+        lab::number(values, "range-loss-scale", "a scale > 0", [](double v) { return v > 0.0; });
+  }
+  opt.outliers =
+      rf::cli::choice("--outliers", values["outliers"].as<std::string>(), {"0", "1"}) == "1";
+  return opt;
+}
+
 }  // namespace
 
-int main(int argc, char** argv) {
-  Options opt;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const std::string key = argv[i];
-    if (key == "--trials") {
-      opt.trials = std::atoi(argv[i + 1]);
-    } else if (key == "--seed") {
-      opt.seed = std::strtoul(argv[i + 1], nullptr, 10);
-    } else if (key == "--layouts") {
-      opt.layouts = argv[i + 1];
-    } else if (key == "--range-loss") {
-      try {
-        opt.range_loss.type = rf::estimation::parseLossType(argv[i + 1], "--range-loss");
-      } catch (const std::exception& e) {
-        std::fprintf(stderr, "%s\n", e.what());
-        return 2;
-      }
-    } else if (key == "--range-loss-scale") {
-      opt.range_loss.scale = std::atof(argv[i + 1]);
-    } else if (key == "--outliers") {
-      opt.outliers = std::string(argv[i + 1]) != "0";
-    } else {
-      std::fprintf(stderr,
-                   "usage: %s [--trials N] [--seed S] [--layouts DIR] [--range-loss "
-                   "none|huber|soft_l1|cauchy] [--range-loss-scale S] [--outliers 0|1]\n",
-                   argv[0]);
-      return 2;
-    }
-  }
-  if (opt.trials < 1) {
-    std::fprintf(stderr, "--trials must be at least 1\n");
-    return 2;
-  }
+int radio_follow::lab::locatorMontecarloMain(int argc, char** argv) {
+  const MontecarloOptions opt = montecarloCommandLine().parse(argc, argv, readMontecarloOptions);
   try {
     std::printf(
         "Target on the plane z = %.1f m (2D mode), range sigma %.2f m, elevation sigma = "
         "azimuth sigma, %d trials per grid point (1-10 m x 12 directions), range "
         "loss %s %.1f, bearing loss huber 2, cold start (trilateration or multi-start).\n\n",
-        kHeight, kRangeSigma, opt.trials, rf::estimation::toString(opt.range_loss.type).c_str(),
-        opt.range_loss.scale);
+        kTargetHeight, kRangeSigma, opt.trials,
+        rf::estimation::toString(opt.range_loss.type).c_str(), opt.range_loss.scale);
     accuracyTable(opt, {{"spot_twr", 0, 0},
                         {"tracked", 0, 0},
                         {"cube", 2, 1},
@@ -288,7 +282,7 @@ int main(int argc, char** argv) {
     if (opt.outliers)
       outlierTable(opt, {{"tracked", 0, 0}, {"spot", 2, 1}, {"spot_twr", 0, 0}});
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
+    std::fprintf(stderr, "lab locator_montecarlo: %s\n", e.what());
     return 1;
   }
   return 0;

@@ -1,7 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Fits the log-distance RSSI model rssi = rssi_at_1m - 10 n log10(d) to a CSV table of
-// "distance,rssi" rows (metres, dBm; a header line and '#' comments are skipped) and
-// prints the parameters plus the YAML snippet for homing_controller.
+// lab rssi_calibration_fit: the log-distance RSSI model fitted to a CSV of distance,rssi.
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -10,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "lab_commands.hpp"
 #include "radio_follow/control/rssi_model.hpp"
 
 namespace {
@@ -20,17 +19,31 @@ bool parseRow(const std::string& line, radio_follow::control::RssiSample& sample
   return static_cast<bool>(in >> sample.distance >> comma >> sample.rssi) && comma == ',';
 }
 
+radio_follow::cli::CommandLine rssiFitCommandLine() {
+  radio_follow::cli::CommandLine cli(
+      "lab rssi_calibration_fit", "usage: lab rssi_calibration_fit SAMPLES.csv\n",
+      "Fits the log-distance RSSI model rssi = rssi_at_1m - 10 n log10(d) to a CSV table of\n"
+      "\"distance,rssi\" rows (metres, dBm; a header line and '#' comments are skipped) and\n"
+      "prints the parameters plus the YAML snippet for homing_controller.\n");
+  cli.positional("samples", 1);
+  return cli;
+}
+
+std::string readRssiFitOptions(const radio_follow::lab::po::variables_map& values) {
+  const auto paths = radio_follow::cli::CommandLine::texts(values, "samples");
+  if (paths.empty()) {
+    throw radio_follow::cli::UsageError("no SAMPLES.csv");
+  }
+  return paths.front();
+}
+
 }  // namespace
 
-int main(int argc, char** argv) {
-  if (argc != 2 || std::string(argv[1]) == "-h" || std::string(argv[1]) == "--help") {
-    std::cerr << "usage: rssi_calibration_fit <samples.csv>\n"
-                 "  CSV rows: distance_m,rssi_dbm (header and # comments skipped)\n";
-    return 2;
-  }
-  std::ifstream file(argv[1]);
+int radio_follow::lab::rssiCalibrationFitMain(int argc, char** argv) {
+  const std::string path = rssiFitCommandLine().parse(argc, argv, readRssiFitOptions);
+  std::ifstream file(path);
   if (!file) {
-    std::cerr << "cannot open " << argv[1] << "\n";
+    std::cerr << "cannot open " << path << "\n";
     return 1;
   }
   std::vector<radio_follow::control::RssiSample> samples;
@@ -46,7 +59,7 @@ int main(int argc, char** argv) {
       if (samples.empty() && line_number == 1) {
         continue;  // header
       }
-      std::cerr << argv[1] << ":" << line_number << ": expected 'distance,rssi'\n";
+      std::cerr << path << ":" << line_number << ": expected 'distance,rssi'\n";
       return 1;
     }
     samples.push_back(sample);

@@ -1,34 +1,27 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Seed 002's Table 2 in shape, on simulated RSSI (sim::RssiChannel: the thesis's measured
-// XPLR-AOA-1 RSSI tables with time-correlated shadowing, fades and dropouts): a tag held
-// at known distances, the raw readings against the moving mean, the moving median and the
-// 1-D Kalman estimator (control/rssi_filter.hpp), each turned into a distance by the
-// log-distance model fitted to a separate calibration run (control::fitRssiModel, as
-// rssi_calibration_fit does). Then the same filters while the robot drives at the tag,
-// where a filter's lag costs as much as its noise. Deterministic; prints Markdown.
-//   rssi_filter_compare [--seed 1] [--readings 3000] [--window 10] [--process-noise 1]
-//                       [--measurement-noise 25] [--speed 0.3] [--runs 200]
+// lab rssi_filter_compare: seed 002's Table 2 in shape, on simulated RSSI: the RSSI filters
+// (control/rssi_filter.hpp) with the tag held still and while the robot drives at it.
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <exception>
 #include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "lab_commands.hpp"
 #include "radio_follow/common/error_statistics.hpp"
 #include "radio_follow/common/param_error.hpp"
-#include "radio_follow/common/tool_options.hpp"
 #include "radio_follow/control/rssi_filter.hpp"
 #include "radio_follow/control/rssi_model.hpp"
 #include "radio_follow/sim/rssi_channel.hpp"
 
+namespace rf = radio_follow;
+
 namespace {
 
-namespace rf = radio_follow;
 using Type = rf::control::RssiFilterParams::Type;
 
 constexpr std::array<Type, 4> kTypes{Type::kNone, Type::kMean, Type::kMedian, Type::kKalman};
@@ -80,15 +73,6 @@ double stddev(const std::vector<double>& v) {
     s += (x - m) * (x - m);
   }
   return std::sqrt(s / static_cast<double>(v.size()));
-}
-
-int usage(const std::string& problem) {
-  std::fprintf(stderr,
-               "rssi_filter_compare: %s\nusage: rssi_filter_compare [--seed S] [--readings N] "
-               "[--window N] [--process-noise Q] [--measurement-noise R] [--speed V] "
-               "[--runs N]\n",
-               problem.c_str());
-  return 2;
 }
 
 /// The log-distance model fitted to `readings` raw readings at each distance.
@@ -196,28 +180,63 @@ void approachTable(const rf::control::RssiFilterParams& base, const rf::control:
   }
 }
 
+rf::cli::CommandLine rssiFilterCommandLine() {
+  namespace lab = rf::lab;
+  rf::cli::CommandLine cli(
+      "lab rssi_filter_compare",
+      "usage: lab rssi_filter_compare [--seed S] [--readings N] [--window N] [--process-noise Q]\n"
+      "         [--measurement-noise R] [--speed V] [--runs N]\n",
+      "Seed 002's Table 2 in shape, on simulated RSSI (sim::RssiChannel: the thesis's measured\n"
+      "XPLR-AOA-1 RSSI tables with time-correlated shadowing, fades and dropouts): a tag held\n"
+      "at known distances, the raw readings against the moving mean, the moving median and the\n"
+      "1-D Kalman estimator (control/rssi_filter.hpp), each turned into a distance by the\n"
+      "log-distance model fitted to a separate calibration run (control::fitRssiModel, as\n"
+      "lab rssi_calibration_fit does). Then the same filters while the robot drives at the\n"
+      "tag, where a filter's lag costs as much as its noise. Deterministic; prints Markdown.\n");
+  cli.options()("seed", lab::value("S", "1"), "the readings' seed")(
+      "readings", lab::value("N", "3000"), "readings per distance, >= 1")(
+      "window", lab::value("N", "10"), "the mean's and the median's window, readings")(
+      "process-noise", lab::value("Q", "1"), "the Kalman filter's process noise, dB^2")(
+      "measurement-noise", lab::value("R", "25"), "the Kalman filter's measurement noise, dB^2")(
+      "speed", lab::value("V", "0.3"), "the robot's speed towards the tag, m/s")(
+      "runs", lab::value("N", "200"), "approach runs, >= 1");
+  return cli;
+}
+
+struct RssiFilterOptions {
+  unsigned long seed = 1;
+  int readings = 3000;
+  int runs = 200;
+  double speed = 0.3;
+  rf::control::RssiFilterParams filter;
+};
+
+RssiFilterOptions readRssiFilterOptions(const rf::lab::po::variables_map& values) {
+  namespace lab = rf::lab;
+  RssiFilterOptions o;
+  o.seed = static_cast<unsigned long>(lab::count(values, "seed", 0));
+  o.readings = static_cast<int>(lab::count(values, "readings", 1));
+  o.runs = static_cast<int>(lab::count(values, "runs", 1));
+  o.speed = lab::number(values, "speed", "a speed > 0 m/s", [](double v) { return v > 0.0; });
+  const auto any = [](double) { return true; };  // the filter's validate() checks them
+  o.filter.window.window = static_cast<int>(lab::count(values, "window", 0));
+  o.filter.kalman.process_noise = lab::number(values, "process-noise", "a variance in dB^2", any);
+  o.filter.kalman.measurement_noise =
+      lab::number(values, "measurement-noise", "a variance in dB^2", any);
+  o.filter.validate();
+  return o;
+}
+
 }  // namespace
 
-int main(int argc, char** argv) {
-  std::map<std::string, std::string> options{
-      {"--seed", "1"},          {"--readings", "3000"},        {"--window", "10"},
-      {"--process-noise", "1"}, {"--measurement-noise", "25"}, {"--speed", "0.3"},
-      {"--runs", "200"}};
-  if (const auto problem = rf::readToolOptions(argc, argv, options)) {
-    return usage(*problem);
-  }
+int radio_follow::lab::rssiFilterCompareMain(int argc, char** argv) {
+  const RssiFilterOptions o = rssiFilterCommandLine().parse(argc, argv, readRssiFilterOptions);
+  const unsigned long seed = o.seed;
+  const int readings = o.readings;
+  const int runs = o.runs;
+  const double speed = o.speed;
+  const control::RssiFilterParams& filter = o.filter;
   try {
-    const unsigned long seed = rf::toolCount("--seed", options["--seed"]);
-    const auto readings = static_cast<int>(rf::toolCount("--readings", options["--readings"], 1));
-    const auto runs = static_cast<int>(rf::toolCount("--runs", options["--runs"], 1));
-    const double speed = std::atof(options["--speed"].c_str());
-    rf::require(speed > 0.0, "--speed", options["--speed"], "a speed > 0 m/s");
-    rf::control::RssiFilterParams filter;
-    filter.window.window = static_cast<int>(rf::toolCount("--window", options["--window"]));
-    filter.kalman.process_noise = std::atof(options["--process-noise"].c_str());
-    filter.kalman.measurement_noise = std::atof(options["--measurement-noise"].c_str());
-    filter.validate();
-
     const rf::control::RssiFit fit = calibrate(readings, seed);
     const rf::sim::RssiChannelFigures figures;
     std::printf(
@@ -239,7 +258,7 @@ int main(int argc, char** argv) {
     approachTable(filter, fit.model, speed, runs, seed);
     return 0;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "rssi_filter_compare: %s\n", e.what());
+    std::fprintf(stderr, "lab rssi_filter_compare: %s\n", e.what());
     return 1;
   }
 }

@@ -1,48 +1,25 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The thesis's Experiments 1 and 2 (Sections 5.3-5.4) on the simulator's sensors, with the
-// shipped config/locator.yaml and config/simulator.yaml: the robot stands; the person
-// stands at points around it for a minute each (static), or walks round it (walk). Prints
-// the thesis's figures by direction as Markdown, for the layout as shipped and, where it
-// has three or more TWR modules and AoA boards, for its TWR modules alone. A layout with
-// TDoA anchors (the TDoA heading mode) also runs without their auto-calibration, and the
-// walk adds the heading error. `heading` is issue 35's bench: the layout's first AoA board
-// alone, the person walking and standing in front of it (evaluation/heading_walks.hpp),
-// the locator's heading against the board's newest raw reading.
-//   standing_experiments --experiment static|walk|heading [--layout spot]
-//                        [--sensor-profile realistic] [--duration 60] [--sectors 8]
-//                        [--robot 1] [--seed 1] [--scenario walk_around] [--walks 1000]
-//                        [--config-dir DIR]
+// lab standing_experiments: the thesis's Experiments 1 and 2 (Sections 5.3-5.4) on the
+// simulator's sensors, the robot standing; and issue 35's single-board heading bench.
 #include "radio_follow/evaluation/standing_experiments.hpp"
 
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <exception>
-#include <map>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "lab_commands.hpp"
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/error_statistics.hpp"
 #include "radio_follow/common/param_error.hpp"
-#include "radio_follow/common/tool_options.hpp"
 #include "radio_follow/evaluation/closed_loop.hpp"
 #include "radio_follow/evaluation/heading_walks.hpp"
 
-namespace {
-
 namespace rf = radio_follow;
 
-int usage(const std::string& problem) {
-  std::fprintf(stderr,
-               "standing_experiments: %s\nusage: standing_experiments --experiment "
-               "static|walk|heading [--layout L] [--sensor-profile ideal|realistic] "
-               "[--duration S] [--sectors N] [--robot N] [--seed N] [--scenario S] "
-               "[--walks N] [--config-dir DIR]\n",
-               problem.c_str());
-  return 2;
-}
+namespace {
 
 struct Configuration {
   std::string name;
@@ -83,44 +60,92 @@ std::string metres(double v) {
   return text;
 }
 
+rf::cli::CommandLine standingCommandLine() {
+  namespace lab = rf::lab;
+  rf::cli::CommandLine cli(
+      "lab standing_experiments",
+      "usage: lab standing_experiments --experiment static|walk|heading [--layout L]\n"
+      "         [--sensor-profile ideal|realistic] [--duration S] [--sectors N] [--robot N]\n"
+      "         [--seed N] [--scenario S] [--walks N] [--config-dir DIR]\n",
+      "The thesis's Experiments 1 and 2 (Sections 5.3-5.4) on the simulator's sensors, with the\n"
+      "shipped config/locator.yaml and config/simulator.yaml: the robot stands; the person\n"
+      "stands at points around it for a minute each (static), or walks round it (walk). Prints\n"
+      "the thesis's figures by direction as Markdown, for the layout as shipped and, where it\n"
+      "has three or more TWR modules and AoA boards, for its TWR modules alone. A layout with\n"
+      "TDoA anchors (the TDoA heading mode) also runs without their auto-calibration, and the\n"
+      "walk adds the heading error. `heading` is issue 35's bench: the layout's first AoA board\n"
+      "alone, the person walking and standing in front of it (evaluation/heading_walks.hpp),\n"
+      "the locator's heading against the board's newest raw reading.\n");
+  cli.options()("experiment", lab::value("E"), "static, walk or heading (required)")(
+      "layout", lab::value("L", "spot"), "config/layouts/<L>.yaml")(
+      "sensor-profile", lab::value("P", "realistic"), "ideal or realistic")(
+      "duration", lab::value("S", "60"), "static: s per point; heading: s per walk")(
+      "sectors", lab::value("N", "8"), "directions the tables group by, 1-36")(
+      "robot", lab::value("N", "1"), "the simulated robot (static, walk), >= 1")(
+      "seed", lab::value("N", "1"), "the noise seed")(
+      "scenario", lab::value("S", "walk_around"),
+      "walk: config/scenarios/<S>.yaml (the robot at the origin facing +x)")(
+      "walks", lab::value("N", "1000"), "heading: walks, 1-100000")(
+      "config-dir", lab::value("DIR", RF_CONFIG_DIR), "the shipped configuration's folder");
+  return cli;
+}
+
+struct StandingOptions {
+  std::string experiment;
+  std::string layout;
+  std::string profile_name;
+  rf::sim::SensorProfile profile = rf::sim::SensorProfile::kRealistic;
+  double duration = 60.0;
+  int sectors = 8;
+  long robot = 1;
+  long seed = 1;
+  std::string scenario;
+  int walks = 1000;
+  std::string config_dir;
+};
+
+StandingOptions readStandingOptions(const rf::lab::po::variables_map& values) {
+  namespace lab = rf::lab;
+  StandingOptions o;
+  if (!values.count("experiment")) {
+    throw rf::cli::UsageError("--experiment is required: static, walk or heading");
+  }
+  o.experiment = rf::cli::choice("--experiment", values["experiment"].as<std::string>(),
+                                 {"static", "walk", "heading"});
+  o.layout = values["layout"].as<std::string>();
+  o.profile_name = values["sensor-profile"].as<std::string>();
+  o.profile = rf::sim::parseSensorProfile(o.profile_name, "--sensor-profile");
+  o.duration = lab::number(values, "duration", "seconds > 0", [](double s) { return s > 0.0; });
+  o.sectors = static_cast<int>(lab::count(values, "sectors", 1, 36));
+  o.robot = lab::count(values, "robot", 1);
+  o.seed = lab::count(values, "seed", 0);
+  o.scenario = values["scenario"].as<std::string>();
+  o.walks = static_cast<int>(lab::count(values, "walks", 1, 100000));
+  o.config_dir = values["config-dir"].as<std::string>();
+  return o;
+}
+
 }  // namespace
 
-int main(int argc, char** argv) {
-  std::map<std::string, std::string> options{{"--experiment", ""},
-                                             {"--layout", "spot"},
-                                             {"--sensor-profile", "realistic"},
-                                             {"--duration", "60"},
-                                             {"--sectors", "8"},
-                                             {"--robot", "1"},
-                                             {"--seed", "1"},
-                                             {"--scenario", "walk_around"},
-                                             {"--walks", "1000"},
-                                             {"--config-dir", RF_CONFIG_DIR}};
-  if (const auto problem = rf::readToolOptions(argc, argv, options)) {
-    return usage(*problem);
-  }
-  const std::string experiment = options["--experiment"];
-  if (experiment != "static" && experiment != "walk" && experiment != "heading") {
-    return usage("--experiment must be static, walk or heading");
-  }
+int radio_follow::lab::standingExperimentsMain(int argc, char** argv) {
+  const StandingOptions o = standingCommandLine().parse(argc, argv, readStandingOptions);
+  const std::string& experiment = o.experiment;
+  const int sectors = o.sectors;
+  const long robot = o.robot;
+  const long seed = o.seed;
   try {
-    const auto sectors = static_cast<int>(rf::toolCount("--sectors", options["--sectors"], 1, 36));
-    const auto robot = static_cast<long>(rf::toolCount("--robot", options["--robot"], 1));
-    const auto seed = static_cast<long>(rf::toolCount("--seed", options["--seed"]));
-    const rf::sim::SensorProfile profile =
-        rf::sim::parseSensorProfile(options["--sensor-profile"], "--sensor-profile");
     // The lockstep loop's loader: the shipped simulator and locator files, as the robot runs.
     const rf::evaluation::ClosedLoopConfig c = rf::evaluation::loadClosedLoopConfig(
-        options["--config-dir"], options["--layout"], "outdoor_loop",
-        rf::evaluation::FollowController::kVelocity, static_cast<int>(seed), "", "", profile);
+        o.config_dir, o.layout, "outdoor_loop", rf::evaluation::FollowController::kVelocity,
+        static_cast<int>(seed), "", "", o.profile);
     const auto configs = configurations(c.layout, c.locator);
     // The TDoA heading mode: the direction is the anchors' alone, so show its error.
     const bool headings = !c.layout.tdoa_anchors.empty();
 
     if (experiment == "heading") {
       rf::evaluation::HeadingWalkParams params;
-      params.walks = static_cast<int>(rf::toolCount("--walks", options["--walks"], 1, 100000));
-      params.duration = std::atof(options["--duration"].c_str());
+      params.walks = o.walks;
+      params.duration = o.duration;
       params.seed = static_cast<std::uint64_t>(seed);
       const rf::evaluation::HeadingWalkResult r =
           rf::evaluation::runHeadingWalks(c.layout, c.world, c.locator, params);
@@ -134,10 +159,10 @@ int main(int argc, char** argv) {
           "%.0f deg of its boresight, standing %.0f %% of the waypoints for %.0f-%.0f s); "
           "heading error at every locator update after %.0f s, deg\n\n"
           "| heading | median | p95 |\n| --- | --- | --- |\n",
-          options["--layout"].c_str(), c.layout.aoa_boards.front().id.c_str(),
-          options["--sensor-profile"].c_str(), params.robots, params.walks, params.duration,
-          params.min_distance, params.max_distance, rf::rad2deg(params.max_direction),
-          100.0 * params.stand_probability, params.min_stand, params.max_stand, params.settle);
+          o.layout.c_str(), c.layout.aoa_boards.front().id.c_str(), o.profile_name.c_str(),
+          params.robots, params.walks, params.duration, params.min_distance, params.max_distance,
+          rf::rad2deg(params.max_direction), 100.0 * params.stand_probability, params.min_stand,
+          params.max_stand, params.settle);
       row("the locator's", r.locator_deg);
       row("the newest raw reading's", r.raw_deg);
       std::printf(
@@ -152,16 +177,16 @@ int main(int argc, char** argv) {
 
     if (experiment == "static") {
       rf::evaluation::StaticAccuracyParams params;
-      params.duration = std::atof(options["--duration"].c_str());
+      params.duration = o.duration;
       params.robot = static_cast<std::uint64_t>(robot);
       params.seed = static_cast<std::uint64_t>(seed);
       std::printf(
           "Experiment 1, layout %s, %s sensors (robot %ld): the person stands %d points x %zu "
           "distances (%.1f-%.1f m), %.0f s each; per direction the largest error of the mean "
           "estimate and the largest spread of the estimates, m\n\n",
-          options["--layout"].c_str(), options["--sensor-profile"].c_str(), robot,
-          params.directions, params.distances.size(), params.distances.front(),
-          params.distances.back(), params.duration);
+          o.layout.c_str(), o.profile_name.c_str(), robot, params.directions,
+          params.distances.size(), params.distances.front(), params.distances.back(),
+          params.duration);
       std::vector<std::vector<rf::evaluation::DirectionSector>> tables;
       std::vector<std::vector<rf::evaluation::DistanceRow>> rows;
       std::vector<double> usable;
@@ -218,11 +243,10 @@ int main(int argc, char** argv) {
     }
 
     const rf::sim::Scenario scenario = rf::sim::loadScenarioFile(
-        options["--config-dir"] + "/scenarios/" + options["--scenario"] + ".yaml",
-        static_cast<std::uint64_t>(seed));
+        o.config_dir + "/scenarios/" + o.scenario + ".yaml", static_cast<std::uint64_t>(seed));
     rf::require(scenario.robot_start.x == 0.0 && scenario.robot_start.y == 0.0 &&
                     scenario.robot_start.yaw == 0.0,
-                "robot_start", options["--scenario"],
+                "robot_start", o.scenario,
                 "a scenario with the robot at the origin facing +x (it stands)");
     rf::evaluation::WalkAroundParams params;
     params.robot = static_cast<std::uint64_t>(robot);
@@ -231,8 +255,8 @@ int main(int argc, char** argv) {
         "Experiment 2, layout %s, %s sensors (robot %ld): the person walks scenario %s "
         "(%.1f m, %.0f s) round the standing robot; estimate error by the person's direction, "
         "m\n\n",
-        options["--layout"].c_str(), options["--sensor-profile"].c_str(), robot,
-        options["--scenario"].c_str(), scenario.target.length(), scenario.duration);
+        o.layout.c_str(), o.profile_name.c_str(), robot, o.scenario.c_str(),
+        scenario.target.length(), scenario.duration);
     std::vector<std::vector<rf::evaluation::DirectionSector>> tables;
     std::vector<std::vector<rf::evaluation::WalkSample>> runs;
     std::string header = "| direction (deg) |";
@@ -291,7 +315,7 @@ int main(int argc, char** argv) {
     std::printf("\n");
     return 0;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "standing_experiments: %s\n", e.what());
+    std::fprintf(stderr, "lab standing_experiments: %s\n", e.what());
     return 1;
   }
 }

@@ -1,62 +1,33 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The locator's closed-form initial guess (estimation::trilaterate: differences against
-// the first module, normal equations) against seed 002 eqs 2-8 as written
-// (estimation::trilaterateQr: consecutive differences, QR), on every shipped layout with
-// three or more UWB modules, with the simulator's realistic ranging (sim/sensor_profile:
-// per-module bias and scale, time-correlated noise, reflections, dropouts; hardware seed 1,
-// the robot the shipped layouts' calibrations were fitted on) corrected by each module's
-// calibration as the locator does. Horizontal error of the guess, and the time per call of
-// each, measured in the same run. Deterministic but for the timings. Prints Markdown.
-//   trilateration_compare [--trials 200] [--seed 1] [--layouts DIR] [--repeats 20]
+// lab trilateration_compare: the locator's closed-form initial guess against seed 002's
+// eqs 2-8 as written, on realistic simulated ranging: error and time per call.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <exception>
-#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "radio_follow/common/angles.hpp"
+#include "lab_commands.hpp"
 #include "radio_follow/common/error_statistics.hpp"
 #include "radio_follow/common/param_error.hpp"
-#include "radio_follow/common/tool_options.hpp"
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/estimation/initializer.hpp"
 #include "radio_follow/sim/sensor_profile.hpp"
-
-namespace {
+#include "target_grid.hpp"
 
 namespace rf = radio_follow;
 namespace est = radio_follow::estimation;
 
-constexpr double kHeight = 1.0;  // the tag's plane (2D mode), m
+namespace {
+
+constexpr double kTagHeight = 1.0;  // the tag's plane (2D mode), m
 constexpr const char* kLayouts[] = {"spot_twr", "spot", "tracked", "cube"};
 
 using Solver = std::optional<Eigen::Vector3d> (*)(const std::vector<est::RangeObservation>&,
                                                   const est::InitializerConfig&);
-
-int usage(const std::string& problem) {
-  std::fprintf(stderr,
-               "trilateration_compare: %s\nusage: trilateration_compare [--trials N] [--seed S] "
-               "[--layouts DIR] [--repeats N]\n",
-               problem.c_str());
-  return 2;
-}
-
-/// Targets 1-10 m away in 12 directions, off the layouts' axes (as locator_montecarlo).
-std::vector<Eigen::Vector3d> grid() {
-  std::vector<Eigen::Vector3d> points;
-  for (int r = 1; r <= 10; ++r) {
-    for (int k = 0; k < 12; ++k) {
-      const double a = rf::deg2rad(15.0 + 30.0 * k);
-      points.emplace_back(r * std::cos(a), r * std::sin(a), kHeight);
-    }
-  }
-  return points;
-}
 
 /// One epoch's calibrated ranges per trial and target, in time order per target.
 struct Epochs {
@@ -68,7 +39,7 @@ Epochs simulate(const rf::Layout& layout, int trials, unsigned long seed) {
   Epochs epochs;
   rf::sim::Rng rng(seed);
   const rf::sim::TwrNoise noise;  // the realistic figures add their own dropouts
-  for (const Eigen::Vector3d& target : grid()) {
+  for (const Eigen::Vector3d& target : rf::lab::targetGrid(kTagHeight)) {
     std::vector<rf::sim::TwrHardware> hardware;
     std::vector<rf::sim::TwrNoiseState> state;
     for (const rf::TwrModule& m : layout.twr_modules) {
@@ -144,28 +115,58 @@ double rmse(const std::vector<double>& e) {
   return std::sqrt(s / static_cast<double>(e.size()));
 }
 
+rf::cli::CommandLine trilaterationCommandLine() {
+  namespace lab = rf::lab;
+  rf::cli::CommandLine cli(
+      "lab trilateration_compare",
+      "usage: lab trilateration_compare [--trials N] [--seed S] [--layouts DIR] [--repeats N]\n",
+      "The locator's closed-form initial guess (estimation::trilaterate: differences against\n"
+      "the first module, normal equations) against seed 002 eqs 2-8 as written\n"
+      "(estimation::trilaterateQr: consecutive differences, QR), on every shipped layout with\n"
+      "three or more UWB modules, with the simulator's realistic ranging (hardware seed 1, the\n"
+      "robot the shipped layouts' calibrations were fitted on) corrected by each module's\n"
+      "calibration as the locator does. Horizontal error of the guess, and the time per call\n"
+      "of each, measured in the same run. Deterministic but for the timings. Prints Markdown.\n");
+  cli.options()("trials", lab::value("N", "200"), "epochs per target, >= 1")(
+      "seed", lab::value("S", "1"), "the ranging noise's seed")(
+      "layouts", lab::value("DIR", std::string(RF_CONFIG_DIR) + "/layouts"), "the layouts' folder")(
+      "repeats", lab::value("N", "20"), "timing passes over every epoch, >= 1");
+  return cli;
+}
+
+struct TrilaterationOptions {
+  int trials = 200;
+  int repeats = 20;
+  unsigned long seed = 1;
+  std::string layouts;
+};
+
+TrilaterationOptions readTrilaterationOptions(const rf::lab::po::variables_map& values) {
+  TrilaterationOptions o;
+  o.trials = static_cast<int>(rf::lab::count(values, "trials", 1));
+  o.repeats = static_cast<int>(rf::lab::count(values, "repeats", 1));
+  o.seed = static_cast<unsigned long>(rf::lab::count(values, "seed", 0));
+  o.layouts = values["layouts"].as<std::string>();
+  return o;
+}
+
 }  // namespace
 
-int main(int argc, char** argv) {
-  std::map<std::string, std::string> options{{"--trials", "200"},
-                                             {"--seed", "1"},
-                                             {"--layouts", std::string(RF_CONFIG_DIR) + "/layouts"},
-                                             {"--repeats", "20"}};
-  if (const auto problem = rf::readToolOptions(argc, argv, options)) {
-    return usage(*problem);
-  }
+int radio_follow::lab::trilaterationCompareMain(int argc, char** argv) {
+  const TrilaterationOptions o =
+      trilaterationCommandLine().parse(argc, argv, readTrilaterationOptions);
+  const int trials = o.trials;
+  const int repeats = o.repeats;
+  const unsigned long seed = o.seed;
   try {
-    const auto trials = static_cast<int>(rf::toolCount("--trials", options["--trials"], 1));
-    const auto repeats = static_cast<int>(rf::toolCount("--repeats", options["--repeats"], 1));
-    const unsigned long seed = rf::toolCount("--seed", options["--seed"]);
     est::InitializerConfig config;
-    config.height = kHeight;
+    config.height = kTagHeight;
     std::printf(
         "| layout | modules | epochs | method | failures | error median (m) | p95 (m) | RMSE (m) "
         "| time per call (us) | time / first-difference normal |\n"
         "|---|---|---|---|---|---|---|---|---|---|\n");
     for (const char* name : kLayouts) {
-      const rf::Layout layout = rf::loadLayoutFile(options["--layouts"] + "/" + name + ".yaml");
+      const rf::Layout layout = rf::loadLayoutFile(o.layouts + "/" + name + ".yaml");
       if (layout.twr_modules.size() < 3) {
         std::printf("| %s | %zu | - | (fewer than 3 modules: no trilateration) | | | | | | |\n",
                     name, layout.twr_modules.size());
@@ -198,7 +199,7 @@ int main(int argc, char** argv) {
     }
     return 0;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "trilateration_compare: %s\n", e.what());
+    std::fprintf(stderr, "lab trilateration_compare: %s\n", e.what());
     return 1;
   }
 }

@@ -104,7 +104,7 @@ class RssiKalman {
 /// controller's `rssi_filter/...` parameters (config/homing_controller.yaml).
 struct RssiFilterParams {
   enum class Type { kNone, kMean, kMedian, kKalman };
-  /// kalman: the smallest distance error in rssi_filter_compare, static and approaching
+  /// kalman: the smallest distance error in lab rssi_filter_compare, static and approaching
   /// (doc/rssi_filters.md).
   Type type = Type::kKalman;
   RssiWindowParams window;

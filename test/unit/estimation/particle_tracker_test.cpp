@@ -219,7 +219,7 @@ TEST(ParticleFilter, AShadowedElevationKeepsTheAzimuthsSay) {
 }
 
 // The first epoch of a simulated cold start that locked onto a wrong direction for 1.1 s
-// (locator_cold_starts trial 7389, realistic profile): the person 7.4 m away at -19 deg;
+// (lab locator_cold_starts trial 7389, realistic profile): the person 7.4 m away at -19 deg;
 // the front board sees them; the right board, the person 72 deg off its boresight (past
 // its 70 deg field of view), reports an edge-biased 34 deg; the left board, the person
 // behind it, a reflection. The cold start follows the board that can see the person.

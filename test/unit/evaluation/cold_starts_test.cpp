@@ -110,7 +110,7 @@ TEST(ColdStarts, ATrialRunAloneIsTheSameTrialAsInTheSeries) {
   }
 }
 
-// The readings a trial's locator got, as `locator_cold_starts --trace` prints them: every
+// The readings a trial's locator got, as `lab locator_cold_starts --trace` prints them: every
 // module's range and every board's bearing at 10 Hz from the sensor's own phase, each
 // before the update that applies it, and watching them changes nothing.
 TEST(ColdStarts, ShowsEveryReadingBeforeTheUpdateThatAppliesIt) {
@@ -159,7 +159,7 @@ TEST(ColdStarts, ShowsEveryReadingBeforeTheUpdateThatAppliesIt) {
   EXPECT_GE(bearings, 10u);
 }
 
-// Trials 5263 and 7884 of `locator_cold_starts --trials 10000` (doc/locator_accuracy.md,
+// Trials 5263 and 7884 of `lab locator_cold_starts --trials 10000` (doc/locator_accuracy.md,
 // "What the locks are"): when cold starts began from the first inputs, the first epoch
 // allowed several places, the main cloud settled on one of them a metre or more from
 // where it started, and the mirror filter, drawn as the image of the unsettled cloud, was

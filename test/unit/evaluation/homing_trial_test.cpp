@@ -140,7 +140,7 @@ TEST(HomingTrial, HomingControllerReachesBeaconsInEveryQuadrantUnderTheWorstNois
   EXPECT_LT(s.final_error, 0.6);
 }
 
-/// Configuration 5's mean goal error on one target set of 40, as homing_experiment runs it
+/// Configuration 5's mean goal error on one target set of 40, as lab homing_experiment runs it
 /// (doc/homing_experiment.md): the node's shipped files, a UWB distance, the paper's speed.
 double configurationFiveGoalError(const std::string& goal_estimator, std::uint64_t set) {
   HomingNodeParams node = loadHomingNodeParams(RF_CONFIG_DIR);

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The thesis's Experiments 1-2 (Sections 5.3-5.4) on the shipped configuration, short
-// versions of what `standing_experiments` prints (doc/standing_experiments.md). The
+// versions of what `lab standing_experiments` prints (doc/standing_experiments.md). The
 // thresholds are the thesis's findings and the project's follow requirement, not this
 // simulator's output.
 #include "radio_follow/evaluation/standing_experiments.hpp"
