@@ -121,14 +121,16 @@ void locatorUpdate(benchmark::State& state, const std::string& name,
   for (auto _ : state) {
     t += 0.05;
     const Eigen::Vector3d truth(4.0 * std::cos(0.1 * t), 4.0 * std::sin(0.1 * t), 1.0);
-    for (const auto& m : layout.twr_modules) {
-      locator.addRange(m.id, (truth - m.position).norm() + 0.03 * noise(rng), t);
+    for (std::size_t i = 0; i < layout.twr_modules.size(); ++i) {
+      const auto& m = layout.twr_modules[i];
+      locator.addRange(i, (truth - m.position).norm() + 0.03 * noise(rng), t);
       t += 0.002;  // each sensor at its own stamp
     }
-    for (const auto& b : layout.aoa_boards) {
+    for (std::size_t i = 0; i < layout.aoa_boards.size(); ++i) {
+      const auto& b = layout.aoa_boards[i];
       const Eigen::Vector2d ae =
           rf::estimation::predictBearing(truth, b.position, b.orientation.toRotationMatrix());
-      locator.addBearing(b.id, ae(0) + 0.08 * noise(rng), ae(1) + 0.08 * noise(rng), -60.0, t);
+      locator.addBearing(i, ae(0) + 0.08 * noise(rng), ae(1) + 0.08 * noise(rng), -60.0, t);
       t += 0.002;
     }
     const auto start = std::chrono::steady_clock::now();

@@ -164,11 +164,11 @@ void timeLocator(const rf::Layout& layout, const est::LocatorConfig& config,
       const Epoch& e = epochs[k];
       double t = e.t;
       for (std::size_t m = 0; m < e.obs.ranges.size(); ++m) {
-        locator.addRange(layout.twr_modules[m].id, e.obs.ranges[m].range, t);
+        locator.addRange(m, e.obs.ranges[m].range, t);
         t += kSensorStep;
       }
       for (const auto& b : e.bearings) {
-        locator.addBearing(layout.aoa_boards[b.board].id, b.z.azimuth, b.z.elevation, -60.0, t);
+        locator.addBearing(b.board, b.z.azimuth, b.z.elevation, -60.0, t);
         t += kSensorStep;
       }
       timer.start();

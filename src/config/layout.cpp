@@ -207,6 +207,27 @@ const AoaBoard* Layout::findAoaBoard(const std::string& id_or_frame) const {
   return nullptr;
 }
 
+namespace {
+
+template <typename Sensor>
+std::size_t indexIn(const std::vector<Sensor>& list, const Sensor* found) {
+  return found == nullptr ? kNoSensor : static_cast<std::size_t>(found - list.data());
+}
+
+}  // namespace
+
+std::size_t Layout::twrModuleIndex(const std::string& id_or_frame) const {
+  return indexIn(twr_modules, findTwrModule(id_or_frame));
+}
+
+std::size_t Layout::aoaBoardIndex(const std::string& id_or_frame) const {
+  return indexIn(aoa_boards, findAoaBoard(id_or_frame));
+}
+
+std::size_t Layout::tdoaAnchorIndex(const std::string& id) const {
+  return indexIn(tdoa_anchors, findTdoaAnchor(id));
+}
+
 bool Layout::isTargetTdoaTag(const std::string& tag_id) const {
   return !target_tdoa_tag_id.empty() && normalizeId(tag_id) == target_tdoa_tag_id;
 }

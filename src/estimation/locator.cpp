@@ -84,16 +84,16 @@ bool Locator::setConfig(const LocatorConfig& config) {
   return filter_.reconfigure(config_.kalman());
 }
 
-bool Locator::addRange(const std::string& module_id, double raw_range, double t,
+bool Locator::addRange(std::size_t module, double raw_range, double t,
                        const std::optional<Pose2>& pose) {
-  const TwrModule* module = layout_.findTwrModule(module_id);
   // The drivers' bounds (plausibility.hpp), and 0 m is no range to solve with.
-  if (module == nullptr || !plausibleRange(raw_range) || raw_range <= 0.0 || !std::isfinite(t)) {
+  if (module >= layout_.twr_modules.size() || !plausibleRange(raw_range) || raw_range <= 0.0 ||
+      !std::isfinite(t)) {
     ++stats_.invalid_measurements;
     return false;
   }
-  RangeSlot& slot = ranges_[static_cast<std::size_t>(module - layout_.twr_modules.data())];
-  slot.range = module->correctRange(raw_range);
+  RangeSlot& slot = ranges_[module];
+  slot.range = layout_.twr_modules[module].correctRange(raw_range);
   slot.t = t;
   slot.valid = slot.range > 0.0;
   if (slot.valid && config_.estimator == Estimator::kParticle) {
@@ -101,25 +101,24 @@ bool Locator::addRange(const std::string& module_id, double raw_range, double t,
     m.kind = TrackedMeasurement::Kind::kRange;
     m.t = t;
     m.pose = pose;
-    m.sensor = static_cast<std::size_t>(module - layout_.twr_modules.data());
+    m.sensor = module;
     m.value = slot.range;
     tracker_.add(m);
   }
   return slot.valid;
 }
 
-bool Locator::addBearing(const std::string& board_id, double azimuth, double elevation, double rssi,
+bool Locator::addBearing(std::size_t index, double azimuth, double elevation, double rssi,
                          double t, const std::optional<Pose2>& pose) {
-  const AoaBoard* board = layout_.findAoaBoard(board_id);
-  if (board == nullptr || !plausibleAngleRad(azimuth) || !plausibleAngleRad(elevation) ||
-      !std::isfinite(t)) {
+  if (index >= layout_.aoa_boards.size() || !plausibleAngleRad(azimuth) ||
+      !plausibleAngleRad(elevation) || !std::isfinite(t)) {
     ++stats_.invalid_measurements;
     return false;
   }
-  const std::size_t index = static_cast<std::size_t>(board - layout_.aoa_boards.data());
   // The board's calibrated elevation offset (a real board reads low): both estimators,
   // and the published bearing, see the corrected elevation.
-  elevation = std::clamp(elevation - board->elevation_offset, -0.5 * kPi, 0.5 * kPi);
+  elevation =
+      std::clamp(elevation - layout_.aoa_boards[index].elevation_offset, -0.5 * kPi, 0.5 * kPi);
   BearingSlot& slot = bearings_[index];
   slot.azimuth = azimuth;
   slot.elevation = elevation;
@@ -151,15 +150,11 @@ bool Locator::addBearing(const std::string& board_id, double azimuth, double ele
   return true;
 }
 
-bool Locator::addTdoaCalibration(const std::string& module_id, const std::string& anchor_a,
-                                 const std::string& anchor_b, double difference, double t) {
-  const TdoaAnchor* a = layout_.findTdoaAnchor(anchor_a);
-  const TdoaAnchor* b = layout_.findTdoaAnchor(anchor_b);
-  const std::optional<std::size_t> module = tdoa_calibration_.moduleOf(module_id);
-  if (a == nullptr || b == nullptr || !module || !plausibleDistanceDifference(difference) ||
-      !tdoa_calibration_.add(*module, static_cast<std::size_t>(a - layout_.tdoa_anchors.data()),
-                             static_cast<std::size_t>(b - layout_.tdoa_anchors.data()), difference,
-                             t)) {
+bool Locator::addTdoaCalibration(std::size_t module, std::size_t a, std::size_t b,
+                                 double difference, double t) {
+  // TdoaCalibration::add refuses an unknown module or anchor.
+  if (!plausibleDistanceDifference(difference) ||
+      !tdoa_calibration_.add(module, a, b, difference, t)) {
     ++stats_.invalid_measurements;
     return false;
   }
@@ -167,17 +162,14 @@ bool Locator::addTdoaCalibration(const std::string& module_id, const std::string
   return true;
 }
 
-bool Locator::addTdoa(const std::string& anchor_a, const std::string& anchor_b, double difference,
-                      double variance, double t, const std::optional<Pose2>& pose) {
-  const TdoaAnchor* a = layout_.findTdoaAnchor(anchor_a);
-  const TdoaAnchor* b = layout_.findTdoaAnchor(anchor_b);
-  if (a == nullptr || b == nullptr || a == b || !plausibleDistanceDifference(difference) ||
+bool Locator::addTdoa(std::size_t ia, std::size_t ib, double difference, double variance, double t,
+                      const std::optional<Pose2>& pose) {
+  const std::size_t anchors = layout_.tdoa_anchors.size();
+  if (ia >= anchors || ib >= anchors || ia == ib || !plausibleDistanceDifference(difference) ||
       !std::isfinite(t)) {
     ++stats_.invalid_measurements;
     return false;
   }
-  const std::size_t ia = static_cast<std::size_t>(a - layout_.tdoa_anchors.data());
-  const std::size_t ib = static_cast<std::size_t>(b - layout_.tdoa_anchors.data());
   if (tdoa_calibration_.active()) {
     const std::optional<double> offset = tdoa_calibration_.offset(ia, ib);
     if (!offset) {

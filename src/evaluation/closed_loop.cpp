@@ -56,10 +56,15 @@ void ClosedLoopConfig::validate() const {
       for (const AoaBoard& b : l.aoa_boards) {
         out.push_back(b.id);
       }
+      for (const TdoaAnchor& a : l.tdoa_anchors) {
+        out.push_back(a.id);
+      }
       return out;
     };
+    // The world's sensor indices are the locator's.
     require(ids(*locator_layout) == ids(layout), "locator_layout", std::string("(a layout)"),
-            "the same TWR modules and AoA boards as the world's layout, in the same order");
+            "the same TWR modules, AoA boards and TDoA anchors as the world's layout, in the "
+            "same order");
   }
   for (const SensorOutage& o : outages) {
     const bool known = std::any_of(layout.twr_modules.begin(), layout.twr_modules.end(),
@@ -275,7 +280,7 @@ void ClosedLoop::feedSensors(const sim::StepEvents& events, double now) {
     if (silent(module.id, stamp)) {
       continue;
     }
-    locator_.addRange(module.id, e.range, stamp, odometryAt(stamp));
+    locator_.addRange(e.module, e.range, stamp, odometryAt(stamp));
     // The controller watches the same ranges (uwb/<id>/ranges) for its safety stop.
     follower_.pipeline().onRange(stamp, now, "uwb/" + module.id + "/ranges/" + module.id, module.id,
                                  layout.target_anchor_id, e.range);
@@ -286,7 +291,7 @@ void ClosedLoop::feedSensors(const sim::StepEvents& events, double now) {
     if (silent(board.id, stamp)) {
       continue;
     }
-    locator_.addBearing(board.id, e.sample.azimuth, e.sample.elevation, e.sample.rssi, stamp,
+    locator_.addBearing(e.board, e.sample.azimuth, e.sample.elevation, e.sample.rssi, stamp,
                         odometryAt(stamp));
   }
   for (const sim::TdoaEvent& e : events.tdoa) {

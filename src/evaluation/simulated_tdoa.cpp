@@ -12,12 +12,10 @@ void feedTdoaBlink(estimation::Locator& locator, const Layout& layout, std::size
     if (i == reference) {
       continue;
     }
-    const std::string& a = layout.tdoa_anchors[i].id;
-    const std::string& r = layout.tdoa_anchors[reference].id;
     if (module) {
-      locator.addTdoaCalibration(layout.twr_modules[*module].id, a, r, differences[k++], t);
+      locator.addTdoaCalibration(*module, i, reference, differences[k++], t);
     } else {
-      locator.addTdoa(a, r, differences[k++], variance, t, pose);
+      locator.addTdoa(i, reference, differences[k++], variance, t, pose);
     }
   }
 }

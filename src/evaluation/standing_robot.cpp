@@ -50,7 +50,7 @@ void StandingRobotSensors::feed(estimation::Locator& locator, double now,
                 ? sim::simulateRealisticTwr(m, hardware_[s], world_.twr, states_[s], at, t, rng)
                 : sim::simulateTwrRange(m, world_.twr, at, rng);
         if (range) {
-          locator.addRange(m.id, *range, t);
+          locator.addRange(s, *range, t);
           if (observer_) {
             observer_({SensorReading::Kind::kRange, s, t, *range, 0.0});
           }
@@ -63,8 +63,7 @@ void StandingRobotSensors::feed(estimation::Locator& locator, double now,
             realistic_ ? aoa_[b].simulate(world_.aoa, at, t, rng)
                        : sim::simulateAoa(layout_.aoa_boards[b], world_.aoa, at, rng);
         if (sample) {
-          locator.addBearing(layout_.aoa_boards[b].id, sample->azimuth, sample->elevation,
-                             sample->rssi, t);
+          locator.addBearing(b, sample->azimuth, sample->elevation, sample->rssi, t);
           if (observer_) {
             observer_({SensorReading::Kind::kBearing, b, t, sample->azimuth, sample->elevation});
           }

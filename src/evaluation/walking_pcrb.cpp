@@ -218,7 +218,7 @@ WalkingPcrbResult runWalkingPcrb(const Layout& layout, sim::WorldConfig world,
           const TwrModule& m = layout.twr_modules[e.sensor];
           const std::optional<double> range = sim::simulateTwrRange(m, world.twr, p, rng);
           if (range) {
-            estimator.addRange(m.id, *range, e.t);
+            estimator.addRange(e.sensor, *range, e.t);
             const Eigen::Matrix2d info = rangeInformation(m, world.twr, p);
             all.add(e.t, info);
             in_fov.add(e.t, info);
@@ -228,7 +228,8 @@ WalkingPcrbResult runWalkingPcrb(const Layout& layout, sim::WorldConfig world,
         const AoaBoard& b = layout.aoa_boards[e.sensor - modules];
         const std::optional<sim::AoaSample> sample = sim::simulateAoa(b, world.aoa, p, rng);
         if (sample) {
-          estimator.addBearing(b.id, sample->azimuth, sample->elevation, sample->rssi, e.t);
+          estimator.addBearing(e.sensor - modules, sample->azimuth, sample->elevation, sample->rssi,
+                               e.t);
           const Eigen::Matrix2d info = bearingInformation(b, world.aoa, p);
           all.add(e.t, info);
           in_fov.add(e.t, inFieldOfView(b, p) ? info : Eigen::Matrix2d::Zero());

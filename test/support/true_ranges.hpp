@@ -33,8 +33,9 @@ inline estimation::LocatorConfig solverBackend() {
 
 /// Every module of the locator's layout reports its exact range to `truth` at time t.
 inline void feedRanges(estimation::Locator& locator, const Eigen::Vector3d& truth, double t) {
-  for (const auto& m : locator.layout().twr_modules) {
-    ASSERT_TRUE(locator.addRange(m.id, (truth - m.position).norm(), t));
+  const auto& modules = locator.layout().twr_modules;
+  for (std::size_t i = 0; i < modules.size(); ++i) {
+    ASSERT_TRUE(locator.addRange(i, (truth - modules[i].position).norm(), t));
   }
 }
 

@@ -2,6 +2,8 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <cstddef>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -61,6 +63,10 @@ struct TdoaAnchor {
   Eigen::Vector3d position = Eigen::Vector3d::Zero();
 };
 
+/// No sensor of the layout: an ID it does not have. The locator refuses (and counts) a
+/// measurement of it.
+inline constexpr std::size_t kNoSensor = std::numeric_limits<std::size_t>::max();
+
 /// Where every radio sensor sits on the robot, and what the target carries.
 /// Shared by the locator, the simulator and the placement advisor.
 struct Layout {
@@ -84,6 +90,10 @@ struct Layout {
   const TwrModule* findTwrModule(const std::string& id_or_frame) const;
   const AoaBoard* findAoaBoard(const std::string& id_or_frame) const;
   const TdoaAnchor* findTdoaAnchor(const std::string& id) const;
+  /// A sensor's index in its list (what the locator takes), or kNoSensor.
+  std::size_t twrModuleIndex(const std::string& id_or_frame) const;
+  std::size_t aoaBoardIndex(const std::string& id_or_frame) const;
+  std::size_t tdoaAnchorIndex(const std::string& id) const;
   /// Whether TDoA measurements of `tag_id` (any case) are the target's.
   bool isTargetTdoaTag(const std::string& tag_id) const;
 };

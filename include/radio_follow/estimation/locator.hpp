@@ -195,26 +195,30 @@ class Locator {
  public:
   Locator(const Layout& layout, const LocatorConfig& config);
 
-  /// Raw (uncalibrated) range of TWR module `module_id`; false if the module is unknown
+  // Sensors are named by their index in the layout's lists (Layout::twrModuleIndex and
+  // the like): the wrappers resolve a message's IDs once, not the core on every message.
+  // An index the layout does not have (kNoSensor) is refused and counted.
+
+  /// Raw (uncalibrated) range of TWR module `module`; false if the module is unknown
   /// or the range is not finite and positive.
   /// `pose`: the robot in the odometry frame at `t` (particle estimator: the track is
   /// then kept in the odometry frame; give it for every measurement or for none).
-  bool addRange(const std::string& module_id, double raw_range, double t,
+  bool addRange(std::size_t module, double raw_range, double t,
                 const std::optional<Pose2>& pose = std::nullopt);
-  /// Bearing of board `board_id` (its id or frame_id) in the board frame.
-  bool addBearing(const std::string& board_id, double azimuth, double elevation, double rssi,
-                  double t, const std::optional<Pose2>& pose = std::nullopt);
+  /// Bearing of board `board` in the board frame.
+  bool addBearing(std::size_t board, double azimuth, double elevation, double rssi, double t,
+                  const std::optional<Pose2>& pose = std::nullopt);
   /// Distance difference |p - a| - |p - b| of anchors a and b; variance <= 0 uses tdoa_sigma.
   /// With TDoA auto-calibration active (TdoaCalibration::active) the pair's learnt offset
   /// is subtracted first; until the pair has one the difference is held back (counted in
   /// LocatorStats::tdoa_uncalibrated, not refused).
-  bool addTdoa(const std::string& anchor_a, const std::string& anchor_b, double difference,
-               double variance, double t, const std::optional<Pose2>& pose = std::nullopt);
-  /// A difference |m - a| - |m - b| of one of the robot's own TWR modules' blinks (module
-  /// by its ID, any case): feeds the anchors' offsets (TdoaCalibration), never the
-  /// estimate. False for an unknown module or anchor or a value that is not finite.
-  bool addTdoaCalibration(const std::string& module_id, const std::string& anchor_a,
-                          const std::string& anchor_b, double difference, double t);
+  bool addTdoa(std::size_t a, std::size_t b, double difference, double variance, double t,
+               const std::optional<Pose2>& pose = std::nullopt);
+  /// A difference |m - a| - |m - b| of one of the robot's own TWR modules' blinks: feeds
+  /// the anchors' offsets (TdoaCalibration), never the estimate. False for an unknown
+  /// module or anchor or a value that is not finite.
+  bool addTdoaCalibration(std::size_t module, std::size_t a, std::size_t b, double difference,
+                          double t);
 
   /// Applies new tuning without a restart (live tuning). Throws ParamError and keeps the
   /// old tuning when `config` is invalid or changes `mode` (2d/3d: the state's size).

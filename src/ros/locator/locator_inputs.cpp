@@ -31,16 +31,21 @@ std::size_t LocatorInputs::add(const UwbRanges& msg) {
   // IDs compare normalised (upper case), as the layout parser stores them: a layout
   // saying "da12" and a driver printing "DA12" mean the same anchor. (The module lookup,
   // Layout::findTwrModule, normalises the module ID itself.)
-  const std::string& module = msg.tag_id.empty() ? msg.header.frame_id : msg.tag_id;
+  const Layout& layout = locator_.layout();
+  const std::size_t module =
+      modules_(msg.tag_id.empty() ? msg.header.frame_id : msg.tag_id,
+               [&](const std::string& id) { return layout.twrModuleIndex(id); });
   std::size_t refused = 0;
   std::optional<Pose2> pose;
   if (!poseFor(msg.header.stamp, &pose)) {
     return 0;  // counted by the placement
   }
   for (const auto& range : msg.ranges) {
-    const std::string anchor = normalizeId(range.anchor_id);
-    if (anchor != locator_.layout().target_anchor_id) {
-      ++other_anchors_[anchor];  // another anchor of the UWB network, or a wrong layout
+    const bool target = target_anchors_(range.anchor_id, [&](const std::string& id) {
+                          return normalizeId(id) == layout.target_anchor_id ? 0 : kNoSensor;
+                        }) == 0;
+    if (!target) {
+      ++other_anchors_[normalizeId(range.anchor_id)];  // another anchor, or a wrong layout
       continue;
     }
     ++target_ranges_;
@@ -58,17 +63,27 @@ std::size_t LocatorInputs::add(const AoaBearing& msg) {
   if (!poseFor(msg.header.stamp, &pose)) {
     return 0;
   }
-  return !locator_.addBearing(msg.header.frame_id, msg.azimuth, msg.elevation, msg.rssi,
+  const std::size_t board = boards_(msg.header.frame_id, [&](const std::string& id) {
+    return locator_.layout().aoaBoardIndex(id);
+  });
+  return !locator_.addBearing(board, msg.azimuth, msg.elevation, msg.rssi,
                               msg.header.stamp.toSec(), pose);
 }
 
 std::size_t LocatorInputs::add(const TdoaMeasurements& msg) {
-  if (!locator_.layout().isTargetTdoaTag(msg.tag_id)) {
-    if (locator_.tdoaCalibration().moduleOf(msg.tag_id)) {
+  const Layout& layout = locator_.layout();
+  const auto anchor = [&](const std::string& id) {
+    return tdoa_anchors_(id, [&](const std::string& a) { return layout.tdoaAnchorIndex(a); });
+  };
+  if (!layout.isTargetTdoaTag(msg.tag_id)) {
+    const std::size_t module = tdoa_tags_(msg.tag_id, [&](const std::string& id) {
+      return locator_.tdoaCalibration().moduleOf(id).value_or(kNoSensor);
+    });
+    if (module != kNoSensor) {
       // One of the robot's own modules, at a known position: the anchors' offsets.
       std::size_t refused = 0;
       for (const auto& d : msg.differences) {
-        refused += !locator_.addTdoaCalibration(msg.tag_id, d.anchor_a, d.anchor_b,
+        refused += !locator_.addTdoaCalibration(module, anchor(d.anchor_a), anchor(d.anchor_b),
                                                 d.distance_difference, msg.header.stamp.toSec());
       }
       ++calibration_blinks_;
@@ -83,8 +98,8 @@ std::size_t LocatorInputs::add(const TdoaMeasurements& msg) {
     return 0;
   }
   for (const auto& d : msg.differences) {
-    refused += !locator_.addTdoa(d.anchor_a, d.anchor_b, d.distance_difference, d.variance,
-                                 msg.header.stamp.toSec(), pose);
+    refused += !locator_.addTdoa(anchor(d.anchor_a), anchor(d.anchor_b), d.distance_difference,
+                                 d.variance, msg.header.stamp.toSec(), pose);
   }
   return refused;
 }

@@ -38,7 +38,7 @@ class Feeder {
     std::normal_distribution<double> angle_noise(0.0, angle_sigma_);
     double at = t;
     for (const auto& m : locator_.layout().twr_modules) {
-      locator_.addRange(m.id, (local - m.position).norm() + range_noise(rng_), at, pose);
+      locator_.addRange(locator_.layout().twrModuleIndex(m.id), (local - m.position).norm() + range_noise(rng_), at, pose);
       at += 0.01;
     }
     if (!bearings) {
@@ -49,7 +49,7 @@ class Feeder {
         continue;  // behind the board
       }
       const Eigen::Vector2d ae = predictBearing(seen, b.position, b.orientation.toRotationMatrix());
-      locator_.addBearing(b.id, ae(0) + angle_noise(rng_), ae(1) + angle_noise(rng_), -60.0, at,
+      locator_.addBearing(locator_.layout().aoaBoardIndex(b.id), ae(0) + angle_noise(rng_), ae(1) + angle_noise(rng_), -60.0, at,
                           pose);
       at += 0.01;
     }
@@ -248,10 +248,10 @@ TEST(ParticleTracker, AColdStartTrustsTheBoardThatCanSeeTheTarget) {
       predictBearing(truth, right.position, right.orientation.toRotationMatrix());
   ASSERT_GT(beyond(0), 70.0 * deg);  // outside the right board's field of view
   const auto& modules = locator.layout().twr_modules;
-  ASSERT_TRUE(locator.addRange(modules.back().id, (truth - modules.back().position).norm(), 0.03));
-  ASSERT_TRUE(locator.addBearing("front", seen(0) - 3.3 * deg, seen(1), -60.0, 0.003));
-  ASSERT_TRUE(locator.addBearing("left", -55.4 * deg, 3.6 * deg, -60.0, 0.032));
-  ASSERT_TRUE(locator.addBearing("right", 34.1 * deg, 3.4 * deg, -60.0, 0.026));
+  ASSERT_TRUE(locator.addRange(locator.layout().twrModuleIndex(modules.back().id), (truth - modules.back().position).norm(), 0.03));
+  ASSERT_TRUE(locator.addBearing(locator.layout().aoaBoardIndex("front"), seen(0) - 3.3 * deg, seen(1), -60.0, 0.003));
+  ASSERT_TRUE(locator.addBearing(locator.layout().aoaBoardIndex("left"), -55.4 * deg, 3.6 * deg, -60.0, 0.032));
+  ASSERT_TRUE(locator.addBearing(locator.layout().aoaBoardIndex("right"), 34.1 * deg, 3.4 * deg, -60.0, 0.026));
   const LocatorEstimate e = locator.update(0.25);
   ASSERT_TRUE(hasPosition(e.status)) << toString(e.status);
   EXPECT_LT((e.position - truth).head<2>().norm(), 1.0) << e.position.transpose();
@@ -265,7 +265,7 @@ TEST(ParticleTracker, AColdStartWaitsForEverySensorBrieflyAndNoLonger) {
   const auto heard = [&config, &truth](bool every_board) {
     Locator locator(test::uncalibratedLayout("spot.yaml"), config);
     for (const auto& m : locator.layout().twr_modules) {
-      locator.addRange(m.id, (truth - m.position).norm(), 0.01);
+      locator.addRange(locator.layout().twrModuleIndex(m.id), (truth - m.position).norm(), 0.01);
     }
     for (const auto& b : locator.layout().aoa_boards) {
       if (every_board || b.id == "front") {
@@ -273,7 +273,7 @@ TEST(ParticleTracker, AColdStartWaitsForEverySensorBrieflyAndNoLonger) {
         if (std::abs(ae(0)) > M_PI / 2.0) {
           ae(0) = std::copysign(M_PI - std::abs(ae(0)), ae(0));  // behind: read mirrored
         }
-        locator.addBearing(b.id, ae(0), ae(1), -60.0, 0.02);
+        locator.addBearing(locator.layout().aoaBoardIndex(b.id), ae(0), ae(1), -60.0, 0.02);
       }
     }
     std::vector<bool> positioned;
@@ -336,7 +336,7 @@ TEST(ParticleTracker, OdometryFrameTrackingPlacesEveryMeasurementAtItsPose) {
   EXPECT_LT((e.position - seen).head<2>().norm(), 1e-9);
   EXPECT_NEAR(e.robot_pose.yaw, 0.02 * 59, 1e-9);
   // A measurement without a pose switches frames: the track restarts.
-  locator.addRange("5722", 4.0, 6.05);
+  locator.addRange(locator.layout().twrModuleIndex("5722"), 4.0, 6.05);
   locator.update(6.1);
   EXPECT_EQ(locator.tracker().stats().frame_switches, 1u);
 }
@@ -499,7 +499,7 @@ TEST(ParticleTracker, TwoReflectionsDoNotUnsettleASettledSide) {
     ASSERT_NE(b, nullptr) << board;
     const Eigen::Vector2d ae =
         predictBearing(mirror, b->position, b->orientation.toRotationMatrix());
-    locator.addBearing(b->id, ae(0), ae(1), -60.0, 3.0);
+    locator.addBearing(locator.layout().aoaBoardIndex(b->id), ae(0), ae(1), -60.0, 3.0);
   }
   for (int k = 30; k < 40; ++k) {
     feed.epoch(truth, 0.1 * k + 0.005, std::nullopt);
@@ -517,15 +517,15 @@ TEST(ParticleTracker, OutOfOrderMeasurementsAreSortedAndFutureOnesDropped) {
   const auto& modules = locator.layout().twr_modules;
   // Newest first: the tracker applies them in stamp order.
   for (int k = 2; k >= 0; --k) {
-    locator.addRange(modules[k].id, (truth - modules[k].position).norm(), 1.0 + 0.01 * k);
+    locator.addRange(locator.layout().twrModuleIndex(modules[k].id), (truth - modules[k].position).norm(), 1.0 + 0.01 * k);
   }
-  locator.addRange(modules[0].id, 3.0, 5.0);  // 4 s ahead of the clock
+  locator.addRange(locator.layout().twrModuleIndex(modules[0].id), 3.0, 5.0);  // 4 s ahead of the clock
   locator.update(1.05);
   EXPECT_EQ(locator.tracker().stats().future_dropped, 1u);
   EXPECT_EQ(locator.tracker().stats().cold_starts, 1u);
   EXPECT_EQ(locator.tracker().stats().late, 0u);
   // A range older than what the filter already applied is applied at the filter's time.
-  locator.addRange(modules[1].id, (truth - modules[1].position).norm(), 1.005);
+  locator.addRange(locator.layout().twrModuleIndex(modules[1].id), (truth - modules[1].position).norm(), 1.005);
   locator.update(1.1);
   EXPECT_EQ(locator.tracker().stats().late, 1u);
 }
@@ -570,7 +570,7 @@ TEST(ParticleTracker, OneBoardNeverTurnsItsBackOnAPersonInFront) {
       const double a = deg2rad(t < 20.0 ? 30.0 : t < 50.0 ? 30.0 - 2.0 * (t - 20.0) : -30.0);
       const Eigen::Vector3d person(3.0 * std::cos(a), 3.0 * std::sin(a), 1.0);
       const Eigen::Vector2d ae = realBearing(person, rng);
-      locator.addBearing("aoa", ae(0), ae(1), -60.0, t);
+      locator.addBearing(locator.layout().aoaBoardIndex("aoa"), ae(0), ae(1), -60.0, t);
       const LocatorEstimate e = locator.update(t + 0.01);
       if (t > 2.0) {
         ASSERT_EQ(e.status, TargetStatus::kHeadingOnly) << "seed " << seed << " at " << t;
@@ -594,7 +594,7 @@ TEST(ParticleTracker, ADirectionAloneIsARayFromTheBoard) {
   LocatorEstimate e;
   for (int k = 1; k <= 100; ++k) {
     const double t = 0.1 * k;
-    locator.addBearing("aoa", a, 0.0, -60.0, t);
+    locator.addBearing(locator.layout().aoaBoardIndex("aoa"), a, 0.0, -60.0, t);
     e = locator.update(t + 0.01);
   }
   ASSERT_EQ(e.status, TargetStatus::kHeadingOnly);
@@ -623,7 +623,7 @@ TEST(ParticleTracker, OneBoardFindsAPersonBehindWhenTheRobotTurns) {
       Pose2 pose;
       pose.yaw = 0.4 * std::sin(0.6 * t);  // the robot turns +-23 deg in place
       const Eigen::Vector2d ae = realBearing(pose.fromFixed(person), rng);
-      locator.addBearing("aoa", ae(0), ae(1), -60.0, t, pose);
+      locator.addBearing(locator.layout().aoaBoardIndex("aoa"), ae(0), ae(1), -60.0, t, pose);
       e = locator.update(t + 0.01);
     }
     ASSERT_EQ(e.status, TargetStatus::kHeadingOnly) << "seed " << seed;

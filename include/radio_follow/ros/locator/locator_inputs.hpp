@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <functional>
 #include <map>
+#include <unordered_map>
 #include <optional>
 #include <string>
 
@@ -65,6 +66,29 @@ class LocatorInputs {
   /// The pose for a message stamped `stamp`; false: drop the message (TF gap).
   bool poseFor(const ros::Time& stamp, std::optional<Pose2>* pose);
 
+  /// Message IDs as they arrive, resolved once each: the first message with an ID asks
+  /// `resolve`, later ones find the answer here. At most kMaxIds are kept (a stream of
+  /// made-up IDs is resolved every time rather than grow the table).
+  class IdCache {
+   public:
+    template <typename Resolve>
+    std::size_t operator()(const std::string& id, Resolve resolve) {
+      const auto found = ids_.find(id);
+      if (found != ids_.end()) {
+        return found->second;
+      }
+      const std::size_t index = resolve(id);
+      if (ids_.size() < kMaxIds) {
+        ids_.emplace(id, index);
+      }
+      return index;
+    }
+
+   private:
+    static constexpr std::size_t kMaxIds = 256;
+    std::unordered_map<std::string, std::size_t> ids_;
+  };
+
   static double rosNow() { return ros::Time::now().toSec(); }
 
   estimation::Locator& locator_;
@@ -75,6 +99,11 @@ class LocatorInputs {
   std::map<std::string, std::size_t> other_anchors_;
   std::map<std::string, std::size_t> other_tdoa_tags_;
   std::size_t calibration_blinks_ = 0;
+  IdCache modules_;         // UwbRanges tag_id or frame -> TWR module index
+  IdCache target_anchors_;  // UwbRange.anchor_id -> 0: the target's, kNoSensor: another
+  IdCache boards_;          // AoaBearing frame -> AoA board index
+  IdCache tdoa_anchors_;    // TdoaDifference anchor -> TDoA anchor index
+  IdCache tdoa_tags_;       // TdoaMeasurements tag_id -> TWR module index (calibration)
 };
 
 }  // namespace radio_follow
