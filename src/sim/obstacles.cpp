@@ -67,8 +67,7 @@ const ParamTable<ScanConfig>& ScanConfig::table() {
           .add("scan/range_min", &C::range_min, "m", "Shortest range reported.",
                Range::atLeast(0.0))
           .add("scan/range_max", &C::range_max, "m",
-               "Longest range reported, > scan/range_min; farther is no return.",
-               Range::above(0.0))
+               "Longest range reported, > scan/range_min; farther is no return.", Range::above(0.0))
           .add("scan/sigma", &C::sigma, "m", "Range noise.", Range::atLeast(0.0));
   return t;
 }

@@ -24,8 +24,7 @@ const ParamTable<RobotLimits>& RobotLimits::table() {
           .add("max_linear", &R::max_linear, "m/s", "Top speed, both directions.",
                Range::above(0.0))
           .add("max_angular", &R::max_angular, "rad/s", "Top turn rate.", Range::above(0.0))
-          .add("max_linear_accel", &R::max_linear_accel, "m/s^2", "Speeding up.",
-               Range::above(0.0))
+          .add("max_linear_accel", &R::max_linear_accel, "m/s^2", "Speeding up.", Range::above(0.0))
           .add("max_linear_decel", &R::max_linear_decel, "m/s^2", "Slowing down.",
                Range::above(0.0))
           .add("max_angular_accel", &R::max_angular_accel, "rad/s^2", "Turn acceleration.",

@@ -17,8 +17,7 @@ const ParamTable<SimulatorParams>& SimulatorParams::table() {
           .add("step_rate", &P::step_rate, "Hz", "Physics steps per simulated second.",
                Range::closed(10.0, 10000.0))
           .add("time_factor", &P::time_factor, "",
-               "Simulated seconds per wall second (sim time only).",
-               Range::aboveUpTo(0.0, 1000.0))
+               "Simulated seconds per wall second (sim time only).", Range::aboveUpTo(0.0, 1000.0))
           .add("cmd_timeout", &P::cmd_timeout, "s",
                "Without cmd_vel this long the base stops by itself.", Range::above(0.0))
           .add("shutdown_on_finish", &P::shutdown_on_finish, "",

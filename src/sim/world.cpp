@@ -21,12 +21,12 @@ const ParamTable<WorldConfig>& WorldConfig::table() {
   const Range probability = Range::closed(0.0, 1.0);
   static const ParamTable<W> t =
       ParamTable<W>()
-          .addChoice("sensor_profile", &W::profile,
-                     std::vector<std::pair<std::string, SensorProfile>>{
-                         {"ideal", SensorProfile::kIdeal},
-                         {"realistic", SensorProfile::kRealistic}},
-                     "The sensors' errors: the thesis's tables with white noise, or real "
-                     "hardware's (doc/simulator.md).")
+          .addChoice(
+              "sensor_profile", &W::profile,
+              std::vector<std::pair<std::string, SensorProfile>>{
+                  {"ideal", SensorProfile::kIdeal}, {"realistic", SensorProfile::kRealistic}},
+              "The sensors' errors: the thesis's tables with white noise, or real "
+              "hardware's (doc/simulator.md).")
           .add("hardware_seed", &W::hardware_seed, "",
                "Which simulated robot (realistic profile): every module's and board's own "
                "errors.",

@@ -156,8 +156,8 @@ void expectCovered(const ParamTable<S>& table, const std::vector<std::string>& y
     EXPECT_TRUE(found) << e.name << ": no row \"| `" << e.name << "` |\" in doc/" << doc_file;
     if (found) {
       EXPECT_TRUE(sameValue(value, documented))
-          << e.name << ": doc/" << doc_file << " says " << documented
-          << ", the table's default is " << paramValueText(value);
+          << e.name << ": doc/" << doc_file << " says " << documented << ", the table's default is "
+          << paramValueText(value);
     }
   }
 }

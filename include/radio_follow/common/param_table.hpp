@@ -94,10 +94,14 @@ class ParamTable {
   ParamTable& add(const std::string& name, Sub S::*outer, T Sub::*inner, const std::string& unit,
                   const std::string& doc, Range range = Range::any()) {
     static_assert(!std::is_same_v<T, std::size_t>, "a nested count needs a table of its own");
-    entries_.push_back(Entry{
-        name, unit, doc, range, {},
-        [outer, inner](const S& s) { return ParamValue((s.*outer).*inner); },
-        [outer, inner](S& s, const ParamValue& v) { (s.*outer).*inner = std::get<T>(v); }});
+    entries_.push_back(
+        Entry{name,
+              unit,
+              doc,
+              range,
+              {},
+              [outer, inner](const S& s) { return ParamValue((s.*outer).*inner); },
+              [outer, inner](S& s, const ParamValue& v) { (s.*outer).*inner = std::get<T>(v); }});
     return *this;
   }
 
@@ -158,21 +162,21 @@ class ParamTable {
   template <typename Sub>
   ParamTable& include(const ParamTable<Sub>& sub, Sub S::*member, const std::string& prefix = "") {
     for (const auto& e : sub.entries()) {
-      entries_.push_back(Entry{
-          prefix + e.name, e.unit, e.doc, e.range, e.choices,
-          [member, get = e.get](const S& s) { return get(s.*member); },
-          [member, set = e.set, inner = "~" + e.name, outer = "~" + prefix + e.name](
-              S& s, const ParamValue& v) {
-            try {
-              set(s.*member, v);
-            } catch (const ParamError& error) {
-              // An unknown choice names the entry as `sub` knows it: give its full name.
-              if (error.name() != inner) {
-                throw;
-              }
-              throw error.renamed(outer);
-            }
-          }});
+      entries_.push_back(Entry{prefix + e.name, e.unit, e.doc, e.range, e.choices,
+                               [member, get = e.get](const S& s) { return get(s.*member); },
+                               [member, set = e.set, inner = "~" + e.name,
+                                outer = "~" + prefix + e.name](S& s, const ParamValue& v) {
+                                 try {
+                                   set(s.*member, v);
+                                 } catch (const ParamError& error) {
+                                   // An unknown choice names the entry as `sub` knows it: give its
+                                   // full name.
+                                   if (error.name() != inner) {
+                                     throw;
+                                   }
+                                   throw error.renamed(outer);
+                                 }
+                               }});
     }
     return *this;
   }

@@ -66,8 +66,8 @@ std::size_t LocatorInputs::add(const AoaBearing& msg) {
   const std::size_t board = boards_(msg.header.frame_id, [&](const std::string& id) {
     return locator_.layout().aoaBoardIndex(id);
   });
-  return !locator_.addBearing(board, msg.azimuth, msg.elevation, msg.rssi,
-                              msg.header.stamp.toSec(), pose);
+  return !locator_.addBearing(board, msg.azimuth, msg.elevation, msg.rssi, msg.header.stamp.toSec(),
+                              pose);
 }
 
 std::size_t LocatorInputs::add(const TdoaMeasurements& msg) {

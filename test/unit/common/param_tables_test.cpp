@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "../../support/param_coverage.hpp"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/common/param_table.hpp"
 #include "radio_follow/common/yaml_params.hpp"
@@ -24,7 +25,6 @@
 #include "radio_follow/drivers/dwm1001_params.hpp"
 #include "radio_follow/drivers/ublox_aoa_params.hpp"
 #include "radio_follow/estimation/locator.hpp"
-#include "../../support/param_coverage.hpp"
 
 namespace radio_follow {
 namespace {
@@ -122,7 +122,8 @@ TEST(ParamTables, VelocityLawIsInItsYamlAndDoc) {
 }
 
 TEST(ParamTables, PathFollowerIsInItsYamlAndDoc) {
-  expectCovered(control::PathFollowParams::table(), {"path_follower.yaml"}, "nodes/path_follower.md");
+  expectCovered(control::PathFollowParams::table(), {"path_follower.yaml"},
+                "nodes/path_follower.md");
 }
 
 TEST(ParamTables, HomingControllerIsInItsYamlAndDoc) {
@@ -193,8 +194,8 @@ TEST(ParamTables, SerialDriversAreInTheirYamlAndDoc) {
   // The device path differs per device (the launch file gives it); a board's frame too.
   expectCovered(drivers::Dwm1001Params::table(), {"dwm1001_driver.yaml"}, "nodes/dwm1001_driver.md",
                 {"port"});
-  expectCovered(drivers::UbloxAoaParams::table(), {"ublox_aoa_driver.yaml"}, "nodes/ublox_aoa_driver.md",
-                {"port", "frame_id"});
+  expectCovered(drivers::UbloxAoaParams::table(), {"ublox_aoa_driver.yaml"},
+                "nodes/ublox_aoa_driver.md", {"port", "frame_id"});
 }
 
 TEST(ParamTables, LiveTuningDefaultsAreTheTables) {

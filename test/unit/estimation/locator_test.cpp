@@ -80,7 +80,8 @@ TEST(Locator, ClockJumpBackStartsOver) {
 
 TEST(Locator, ImplausibleRangesAreRefused) {
   Locator locator(layoutFile("spot_twr.yaml"), test::solverBackend());
-  EXPECT_FALSE(locator.addRange(locator.layout().twrModuleIndex("5722"), 1e154, 0.0));  // a long plain number from a device
+  EXPECT_FALSE(locator.addRange(locator.layout().twrModuleIndex("5722"), 1e154,
+                                0.0));  // a long plain number from a device
   EXPECT_FALSE(locator.addRange(locator.layout().twrModuleIndex("5722"), kMaxUwbRange + 1.0, 0.0));
   EXPECT_EQ(locator.stats().invalid_measurements, 2u);
 }
@@ -155,14 +156,18 @@ tdoa_anchors:
     return (truth - layout.tdoa_anchors[a].position).norm() -
            (truth - layout.tdoa_anchors[b].position).norm();
   };
-  ASSERT_TRUE(locator.addTdoa(locator.layout().tdoaAnchorIndex("b"), locator.layout().tdoaAnchorIndex("a"), diff(1, 0), 0.0004, 0.0));
-  ASSERT_TRUE(locator.addTdoa(locator.layout().tdoaAnchorIndex("c"), locator.layout().tdoaAnchorIndex("a"), diff(2, 0), 0.0004, 0.0));
-  ASSERT_TRUE(locator.addTdoa(locator.layout().tdoaAnchorIndex("d"), locator.layout().tdoaAnchorIndex("a"), diff(3, 0), 0.0004, 0.0));
+  ASSERT_TRUE(locator.addTdoa(locator.layout().tdoaAnchorIndex("b"),
+                              locator.layout().tdoaAnchorIndex("a"), diff(1, 0), 0.0004, 0.0));
+  ASSERT_TRUE(locator.addTdoa(locator.layout().tdoaAnchorIndex("c"),
+                              locator.layout().tdoaAnchorIndex("a"), diff(2, 0), 0.0004, 0.0));
+  ASSERT_TRUE(locator.addTdoa(locator.layout().tdoaAnchorIndex("d"),
+                              locator.layout().tdoaAnchorIndex("a"), diff(3, 0), 0.0004, 0.0));
   const LocatorEstimate e = locator.update(0.0);
   ASSERT_EQ(e.status, TargetStatus::kHeadingOnly);
   EXPECT_LT(headingError(e.position, truth), 0.05);
   EXPECT_EQ(e.sources, kSourceTdoa);
-  EXPECT_FALSE(locator.addTdoa(locator.layout().tdoaAnchorIndex("a"), locator.layout().tdoaAnchorIndex("a"), 0.0, 0.0, 0.0));
+  EXPECT_FALSE(locator.addTdoa(locator.layout().tdoaAnchorIndex("a"),
+                               locator.layout().tdoaAnchorIndex("a"), 0.0, 0.0, 0.0));
 }
 
 TEST(Locator, AppliesTheCalibrationPolynomial) {
@@ -178,7 +183,8 @@ twr_modules:
   Locator locator(layout, config);
   const Eigen::Vector3d truth(3.0, 1.0, config.height);
   for (const auto& m : layout.twr_modules) {
-    locator.addRange(locator.layout().twrModuleIndex(m.id), (truth - m.position).norm() + 0.1, 0.0);  // raw reads 10 cm long
+    locator.addRange(locator.layout().twrModuleIndex(m.id), (truth - m.position).norm() + 0.1,
+                     0.0);  // raw reads 10 cm long
   }
   const LocatorEstimate e = locator.update(0.0);
   ASSERT_EQ(e.status, TargetStatus::kOk);
@@ -201,7 +207,8 @@ aoa_boards:
       predictBearing(truth, board.position, board.orientation.toRotationMatrix());
   LocatorEstimate e;
   for (std::size_t k = 0; k < kMinRssiToChoose; ++k) {
-    ASSERT_TRUE(locator.addBearing(locator.layout().aoaBoardIndex("front"), ae(0), ae(1) - deg2rad(8.0), -60.0, 0.1 * k));
+    ASSERT_TRUE(locator.addBearing(locator.layout().aoaBoardIndex("front"), ae(0),
+                                   ae(1) - deg2rad(8.0), -60.0, 0.1 * k));
     e = locator.update(0.1 * k + 0.01);
   }
   ASSERT_EQ(e.status, TargetStatus::kHeadingOnly);
@@ -220,10 +227,10 @@ TEST(Locator, TwoRangesNeedAWarmStart) {
     ASSERT_EQ(locator.update(0.1 * k).status, TargetStatus::kOk) << k;
   }
   // Two modules stop: two ranges keep tracking the confirmed side, flagged DEGRADED.
-  ASSERT_TRUE(
-      locator.addRange(locator.layout().twrModuleIndex("1A01"), (truth - locator.layout().twr_modules[0].position).norm(), 0.9));
-  ASSERT_TRUE(
-      locator.addRange(locator.layout().twrModuleIndex("1A02"), (truth - locator.layout().twr_modules[1].position).norm(), 0.9));
+  ASSERT_TRUE(locator.addRange(locator.layout().twrModuleIndex("1A01"),
+                               (truth - locator.layout().twr_modules[0].position).norm(), 0.9));
+  ASSERT_TRUE(locator.addRange(locator.layout().twrModuleIndex("1A02"),
+                               (truth - locator.layout().twr_modules[1].position).norm(), 0.9));
   const LocatorEstimate e = locator.update(1.05);
   EXPECT_EQ(e.status, TargetStatus::kDegraded);
   EXPECT_LT((e.position - truth).norm(), 1e-3);
@@ -237,10 +244,10 @@ TEST(Locator, TwoRangesOfAnUnconfirmedTrackAreAmbiguous) {
   const Eigen::Vector3d truth(3.0, -1.0, config.height);
   feedRanges(locator, truth, 0.0);
   ASSERT_EQ(locator.update(0.0).status, TargetStatus::kOk);
-  ASSERT_TRUE(
-      locator.addRange(locator.layout().twrModuleIndex("1A01"), (truth - locator.layout().twr_modules[0].position).norm(), 0.4));
-  ASSERT_TRUE(
-      locator.addRange(locator.layout().twrModuleIndex("1A02"), (truth - locator.layout().twr_modules[1].position).norm(), 0.4));
+  ASSERT_TRUE(locator.addRange(locator.layout().twrModuleIndex("1A01"),
+                               (truth - locator.layout().twr_modules[0].position).norm(), 0.4));
+  ASSERT_TRUE(locator.addRange(locator.layout().twrModuleIndex("1A02"),
+                               (truth - locator.layout().twr_modules[1].position).norm(), 0.4));
   EXPECT_EQ(locator.update(0.55).status, TargetStatus::kAmbiguous);
 }
 
@@ -356,7 +363,8 @@ TEST(LocatorMirror, NoiseDoesNotConfirmASide) {
   for (int k = 0; k < epochs; ++k) {
     const double t = 1.0 + 0.1 * k;
     for (const auto& m : locator.layout().twr_modules) {
-      ASSERT_TRUE(locator.addRange(locator.layout().twrModuleIndex(m.id), (truth - m.position).norm() + noise(rng), t));
+      ASSERT_TRUE(locator.addRange(locator.layout().twrModuleIndex(m.id),
+                                   (truth - m.position).norm() + noise(rng), t));
     }
     ambiguous += locator.update(t + 0.01).status == TargetStatus::kAmbiguous;
   }

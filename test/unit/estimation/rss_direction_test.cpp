@@ -161,7 +161,8 @@ TEST(RssDifferencer, TheLocatorFeedsDifferencesOnlyWithRssDirection) {
     for (int k = 0; k < 2; ++k) {
       const double t = 0.1 * k;
       for (const auto& m : layout.twr_modules) {
-        locator.addRange(locator.layout().twrModuleIndex(m.id), (Eigen::Vector3d(3.0, 0.5, 1.0) - m.position).norm(), t);
+        locator.addRange(locator.layout().twrModuleIndex(m.id),
+                         (Eigen::Vector3d(3.0, 0.5, 1.0) - m.position).norm(), t);
       }
       double rssi = -50.0;
       for (const auto& b : layout.aoa_boards) {

@@ -141,22 +141,30 @@ TEST(TdoaCalibration, TheLocatorFusesTheTargetsDifferencesCorrected) {
   const auto target = [&](std::size_t a) {
     return difference(layout, person, a, 0) + offset[a] - offset[0];
   };
-  EXPECT_TRUE(locator.addTdoa(locator.layout().tdoaAnchorIndex("2002"), locator.layout().tdoaAnchorIndex("2000"), target(1), 0.0, 0.0));
-  EXPECT_TRUE(locator.addTdoa(locator.layout().tdoaAnchorIndex("2001"), locator.layout().tdoaAnchorIndex("2000"), target(2), 0.0, 0.0));
+  EXPECT_TRUE(locator.addTdoa(locator.layout().tdoaAnchorIndex("2002"),
+                              locator.layout().tdoaAnchorIndex("2000"), target(1), 0.0, 0.0));
+  EXPECT_TRUE(locator.addTdoa(locator.layout().tdoaAnchorIndex("2001"),
+                              locator.layout().tdoaAnchorIndex("2000"), target(2), 0.0, 0.0));
   EXPECT_EQ(locator.stats().tdoa_uncalibrated, 2u);
   EXPECT_EQ(locator.update(0.0).status, TargetStatus::kLost);
 
   for (int k = 0; k < 10; ++k) {
     for (std::size_t a : {1u, 2u}) {
       const double d = difference(layout, layout.twr_modules[0].position, a, 0) + offset[a];
-      EXPECT_TRUE(locator.addTdoaCalibration(locator.layout().twrModuleIndex("5722"), locator.layout().tdoaAnchorIndex(layout.tdoa_anchors[a].id), locator.layout().tdoaAnchorIndex("2000"), d,
-                                             0.01 * k));
+      EXPECT_TRUE(
+          locator.addTdoaCalibration(locator.layout().twrModuleIndex("5722"),
+                                     locator.layout().tdoaAnchorIndex(layout.tdoa_anchors[a].id),
+                                     locator.layout().tdoaAnchorIndex("2000"), d, 0.01 * k));
     }
   }
-  EXPECT_FALSE(locator.addTdoaCalibration(locator.layout().twrModuleIndex("DA12"), locator.layout().tdoaAnchorIndex("2002"), locator.layout().tdoaAnchorIndex("2000"), 0.1, 0.1));  // not a module
+  EXPECT_FALSE(locator.addTdoaCalibration(
+      locator.layout().twrModuleIndex("DA12"), locator.layout().tdoaAnchorIndex("2002"),
+      locator.layout().tdoaAnchorIndex("2000"), 0.1, 0.1));  // not a module
   EXPECT_EQ(locator.stats().tdoa_calibration_differences, 20u);
-  locator.addTdoa(locator.layout().tdoaAnchorIndex("2002"), locator.layout().tdoaAnchorIndex("2000"), target(1), 0.0, 0.2);
-  locator.addTdoa(locator.layout().tdoaAnchorIndex("2001"), locator.layout().tdoaAnchorIndex("2000"), target(2), 0.0, 0.2);
+  locator.addTdoa(locator.layout().tdoaAnchorIndex("2002"),
+                  locator.layout().tdoaAnchorIndex("2000"), target(1), 0.0, 0.2);
+  locator.addTdoa(locator.layout().tdoaAnchorIndex("2001"),
+                  locator.layout().tdoaAnchorIndex("2000"), target(2), 0.0, 0.2);
   const LocatorEstimate e = locator.update(0.2);
   ASSERT_EQ(e.status, TargetStatus::kHeadingOnly);
   const double heading = std::atan2(e.position.y(), e.position.x());
@@ -165,8 +173,10 @@ TEST(TdoaCalibration, TheLocatorFusesTheTargetsDifferencesCorrected) {
   // The same differences uncorrected (calibration off): the offsets turn the heading.
   config.tdoa_calibration.enabled = false;
   Locator uncalibrated(layout, config);
-  uncalibrated.addTdoa(uncalibrated.layout().tdoaAnchorIndex("2002"), uncalibrated.layout().tdoaAnchorIndex("2000"), target(1), 0.0, 0.2);
-  uncalibrated.addTdoa(uncalibrated.layout().tdoaAnchorIndex("2001"), uncalibrated.layout().tdoaAnchorIndex("2000"), target(2), 0.0, 0.2);
+  uncalibrated.addTdoa(uncalibrated.layout().tdoaAnchorIndex("2002"),
+                       uncalibrated.layout().tdoaAnchorIndex("2000"), target(1), 0.0, 0.2);
+  uncalibrated.addTdoa(uncalibrated.layout().tdoaAnchorIndex("2001"),
+                       uncalibrated.layout().tdoaAnchorIndex("2000"), target(2), 0.0, 0.2);
   const LocatorEstimate u = uncalibrated.update(0.2);
   ASSERT_EQ(u.status, TargetStatus::kHeadingOnly);
   EXPECT_GT(std::abs(std::atan2(u.position.y(), u.position.x()) - heading), 0.2);

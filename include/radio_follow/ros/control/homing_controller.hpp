@@ -10,8 +10,8 @@
 #include "radio_follow/UwbRanges.h"
 #include "radio_follow/common/param_table.hpp"
 #include "radio_follow/control/homing_controller.hpp"
-#include "radio_follow/ros/control/controller_base.hpp"
 #include "radio_follow/ros/common/params.hpp"
+#include "radio_follow/ros/control/controller_base.hpp"
 
 namespace radio_follow {
 

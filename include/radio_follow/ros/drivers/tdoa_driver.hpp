@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "radio_follow/common/param_table.hpp"
 #include "radio_follow/TdoaMeasurements.h"
+#include "radio_follow/common/param_table.hpp"
 #include "radio_follow/drivers/delivery_queue.hpp"
 #include "radio_follow/drivers/tdoa_receiver.hpp"
 #include "radio_follow/drivers/tdoa_udp_transport.hpp"

@@ -6,9 +6,9 @@
 #include <cstddef>
 #include <functional>
 #include <map>
-#include <unordered_map>
 #include <optional>
 #include <string>
+#include <unordered_map>
 
 #include "radio_follow/AoaBearing.h"
 #include "radio_follow/TdoaMeasurements.h"
