@@ -29,10 +29,19 @@ Params loadShared(const ros::NodeHandle& private_nh, const std::string& ns) {
 
 }  // namespace
 
+const ParamTable<LayoutDriversNode::Params>& LayoutDriversNode::Params::table() {
+  using P = LayoutDriversNode::Params;
+  static const ParamTable<P> t =
+      ParamTable<P>()
+          .add("layout_file", &P::layout_file, "", "Absolute path of the robot's layout.")
+          .add("uwb_port_prefix", &P::uwb_port_prefix, "",
+               "A module's device is this plus its ID.")
+          .add("aoa_port_prefix", &P::aoa_port_prefix, "", "A board's device is this plus its ID.");
+  return t;
+}
+
 void LayoutDriversNode::Params::load(const ParamReader& private_nh) {
-  private_nh.param("layout_file", layout_file, layout_file);
-  private_nh.param("uwb_port_prefix", uwb_port_prefix, uwb_port_prefix);
-  private_nh.param("aoa_port_prefix", aoa_port_prefix, aoa_port_prefix);
+  table().load(private_nh, *this);
   private_nh.own(kModuleNamespace);
   private_nh.own(kBoardNamespace);
 }

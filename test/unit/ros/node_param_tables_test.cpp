@@ -12,6 +12,7 @@
 #include "radio_follow/ros/control/estimate_follower.hpp"
 #include "radio_follow/ros/control/homing_controller.hpp"
 #include "radio_follow/ros/control/path_follower.hpp"
+#include "radio_follow/ros/drivers/layout_drivers.hpp"
 #include "radio_follow/ros/drivers/tdoa_driver.hpp"
 #include "radio_follow/ros/locator/locator_node.hpp"
 #include "radio_follow/ros/sim/follow_evaluator_node.hpp"
@@ -38,6 +39,10 @@ TEST(NodeParamTables, TdoaDriverIsInItsYamlAndDoc) {
 
 TEST(NodeParamTables, AnnouncerIsInItsYamlAndDoc) {
   expectCovered(AnnouncerNode::Params::table(), {"announcer.yaml"}, "nodes/announcer.md");
+}
+
+TEST(NodeParamTables, LayoutDriversIsInItsDoc) {
+  expectCovered(LayoutDriversNode::Params::table(), {}, "nodes/layout_drivers.md");
 }
 
 TEST(NodeParamTables, LayoutPublisherIsInItsDoc) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "radio_follow/common/param_table.hpp"
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/ros/common/params.hpp"
 #include "radio_follow/ros/drivers/dwm1001_driver.hpp"
@@ -30,6 +31,8 @@ class LayoutDriversNode {
     std::string uwb_port_prefix = "/dev/dwm1001_";
     std::string aoa_port_prefix = "/dev/aoa_";
 
+    /// layout_file and the port prefixes (the shared driver settings: their own tables).
+    static const ParamTable<Params>& table();
     void load(const ParamReader& private_nh);
     void validate() const;
   };
