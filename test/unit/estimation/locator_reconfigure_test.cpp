@@ -56,6 +56,26 @@ TEST(LocatorSetConfig, MotionModelChangeRestartsTheFilter) {
   EXPECT_LT((e.position - truth).norm(), 1e-3);
 }
 
+TEST(LocatorSetConfig, EstimatorSwitchRestartsTheTrack) {
+  LocatorConfig config = test::solverBackend();
+  Locator locator(spotTwr(), config);
+  const Eigen::Vector3d truth(-2.0, 3.0, config.height);
+  feedRanges(locator, truth, 1.0);
+  ASSERT_EQ(locator.update(1.0).status, TargetStatus::kOk);
+  config.estimator = Estimator::kParticle;
+  config.gate_probability = 0.99;
+  EXPECT_FALSE(locator.setConfig(config));
+  EXPECT_FALSE(locator.filter().initialized());
+  // The idle solver estimator takes new tuning too: a switch back finds it.
+  EXPECT_LT(locator.filter().gateThreshold(), KalmanFilter(KalmanConfig{}).gateThreshold());
+  config.estimator = Estimator::kSolver;
+  EXPECT_FALSE(locator.setConfig(config));
+  feedRanges(locator, truth, 1.1);
+  const LocatorEstimate e = locator.update(1.1);
+  EXPECT_EQ(e.status, TargetStatus::kOk);
+  EXPECT_LT((e.position - truth).norm(), 1e-3);
+}
+
 TEST(LocatorSetConfig, InvalidOrModeChangingConfigIsRefusedAndTheOldOneKept) {
   LocatorConfig config = test::solverBackend();
   config.motion_model = MotionModel::kConstantPosition;  // state size 2 in the plane

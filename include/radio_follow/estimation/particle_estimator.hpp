@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "radio_follow/config/layout.hpp"
+#include "radio_follow/estimation/particle_tracker.hpp"
+#include "radio_follow/estimation/position_estimator.hpp"
+#include "radio_follow/estimation/rss_direction.hpp"
+
+namespace radio_follow {
+namespace estimation {
+
+/// Estimator::kParticle: every measurement at its stamp into a ParticleTracker (odometry
+/// frame when the measurements carry poses), with the opposed boards' RSSI differences
+/// when rss_direction is on. Reads LocatorConfig only through LocatorConfig::tracker().
+class ParticleEstimator : public PositionEstimator {
+ public:
+  ParticleEstimator(const Layout& layout, const ParticleTrackerConfig& config);
+
+  void add(const TrackedMeasurement& m, double rssi) override;
+  /// The fresh lists only feed the diagnostics (which bearings were "used").
+  LocatorEstimate estimate(double now, const FreshMeasurements& fresh, LocatorEstimate partial,
+                           LocatorStats& stats) override;
+  void reset() override;
+  /// Always true: a new particle count restarts the tracker inside
+  /// ParticleTracker::setConfig, which does not report it.
+  bool setConfig(const LocatorConfig& config) override;
+
+  const ParticleTracker& tracker() const { return tracker_; }
+
+ private:
+  std::vector<AoaBoard> boards_;
+  ParticleTrackerConfig config_;
+  ParticleTracker tracker_;
+  RssDifferencer rss_;  ///< opposed boards' RSSI differences (rss_direction only)
+};
+
+}  // namespace estimation
+}  // namespace radio_follow

@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <memory>
+#include <optional>
+
+#include "radio_follow/estimation/aoa_selector.hpp"
+#include "radio_follow/estimation/initializer.hpp"
+#include "radio_follow/estimation/kalman_filter.hpp"
+#include "radio_follow/estimation/position_estimator.hpp"
+#include "radio_follow/estimation/position_solver.hpp"
+
+namespace radio_follow {
+namespace estimation {
+
+/// Estimator::kSolver: per update, the boards that may speak (AoaSelector), a Ceres solve
+/// of the newest measurement of each sensor (warm, cold or multi-start), the mirror test,
+/// and a Kalman filter in the robot frame. Keeps the whole LocatorConfig: it reads the
+/// sigmas, the status thresholds and the filter's settings from it, and builds its parts
+/// with LocatorConfig::solver(), kalman() and initializer().
+class SolverEstimator : public PositionEstimator {
+ public:
+  SolverEstimator(std::size_t board_count, const LocatorConfig& config);
+
+  /// Measurements are read from the Locator's fresh lists at each update: nothing to do.
+  void add(const TrackedMeasurement& /*m*/, double /*rssi*/) override {}
+  void recordRssi(std::size_t board, double rssi) override { selector_.recordRssi(board, rssi); }
+  LocatorEstimate estimate(double now, const FreshMeasurements& fresh, LocatorEstimate partial,
+                           LocatorStats& stats) override;
+  /// Forgets the filter's track, the warm start and the mirror test's side; keeps the
+  /// board selection's RSSI history and votes.
+  void reset() override;
+  /// Rebuilds the solver (it owns the losses); a change of the AoA selection settings
+  /// restarts the selection's RSSI history. False when the filter restarted (motion_model).
+  bool setConfig(const LocatorConfig& config) override;
+
+  const KalmanFilter& filter() const { return filter_; }
+
+ private:
+  LocatorEstimate lose(LocatorEstimate estimate, LocatorStats& stats);
+  /// The mirror test (LocatorConfig::ambiguity_margin): true when `solution` may as well
+  /// be its mirror image. Updates the run of epochs that preferred this side.
+  bool mirrorAmbiguous(const ObservationSet& obs, const SolveResult& solution, double sigma);
+  void forgetSide();
+
+  std::size_t board_count_;
+  LocatorConfig config_;
+  InitializerConfig init_config_;
+  std::unique_ptr<PositionSolver> solver_;  // rebuilt by setConfig (it owns the losses)
+  AoaSelector selector_;
+  KalmanFilter filter_;
+  /// Last solution, and whether it had a range (a heading-only one does not tell where
+  /// along the bearing the target is, so it cannot warm-start a ranged solve).
+  std::optional<Eigen::Vector3d> warm_;
+  bool warm_ranged_ = false;
+  /// Mirror test: epochs in a row whose data preferred the tracked side, and whether the
+  /// track has been confirmed so since it started.
+  int side_votes_ = 0;
+  bool side_confirmed_ = false;
+};
+
+}  // namespace estimation
+}  // namespace radio_follow
