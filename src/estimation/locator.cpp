@@ -86,8 +86,8 @@ bool Locator::addRange(std::size_t module, double raw_range, double t,
   return slot.valid;
 }
 
-bool Locator::addBearing(std::size_t index, double azimuth, double elevation, double rssi,
-                         double t, const std::optional<Pose2>& pose) {
+bool Locator::addBearing(std::size_t index, double azimuth, double elevation, double rssi, double t,
+                         const std::optional<Pose2>& pose) {
   if (index >= layout_.aoa_boards.size() || !plausibleAngleRad(azimuth) ||
       !plausibleAngleRad(elevation) || !std::isfinite(t)) {
     ++stats_.invalid_measurements;

@@ -34,8 +34,7 @@ const ParamTable<LayoutDriversNode::Params>& LayoutDriversNode::Params::table() 
   static const ParamTable<P> t =
       ParamTable<P>()
           .add("layout_file", &P::layout_file, "", "Absolute path of the robot's layout.")
-          .add("uwb_port_prefix", &P::uwb_port_prefix, "",
-               "A module's device is this plus its ID.")
+          .add("uwb_port_prefix", &P::uwb_port_prefix, "", "A module's device is this plus its ID.")
           .add("aoa_port_prefix", &P::aoa_port_prefix, "", "A board's device is this plus its ID.");
   return t;
 }

@@ -38,7 +38,8 @@ class Feeder {
     std::normal_distribution<double> angle_noise(0.0, angle_sigma_);
     double at = t;
     for (const auto& m : locator_.layout().twr_modules) {
-      locator_.addRange(locator_.layout().twrModuleIndex(m.id), (local - m.position).norm() + range_noise(rng_), at, pose);
+      locator_.addRange(locator_.layout().twrModuleIndex(m.id),
+                        (local - m.position).norm() + range_noise(rng_), at, pose);
       at += 0.01;
     }
     if (!bearings) {
@@ -49,8 +50,8 @@ class Feeder {
         continue;  // behind the board
       }
       const Eigen::Vector2d ae = predictBearing(seen, b.position, b.orientation.toRotationMatrix());
-      locator_.addBearing(locator_.layout().aoaBoardIndex(b.id), ae(0) + angle_noise(rng_), ae(1) + angle_noise(rng_), -60.0, at,
-                          pose);
+      locator_.addBearing(locator_.layout().aoaBoardIndex(b.id), ae(0) + angle_noise(rng_),
+                          ae(1) + angle_noise(rng_), -60.0, at, pose);
       at += 0.01;
     }
   }
@@ -248,10 +249,14 @@ TEST(ParticleTracker, AColdStartTrustsTheBoardThatCanSeeTheTarget) {
       predictBearing(truth, right.position, right.orientation.toRotationMatrix());
   ASSERT_GT(beyond(0), 70.0 * deg);  // outside the right board's field of view
   const auto& modules = locator.layout().twr_modules;
-  ASSERT_TRUE(locator.addRange(locator.layout().twrModuleIndex(modules.back().id), (truth - modules.back().position).norm(), 0.03));
-  ASSERT_TRUE(locator.addBearing(locator.layout().aoaBoardIndex("front"), seen(0) - 3.3 * deg, seen(1), -60.0, 0.003));
-  ASSERT_TRUE(locator.addBearing(locator.layout().aoaBoardIndex("left"), -55.4 * deg, 3.6 * deg, -60.0, 0.032));
-  ASSERT_TRUE(locator.addBearing(locator.layout().aoaBoardIndex("right"), 34.1 * deg, 3.4 * deg, -60.0, 0.026));
+  ASSERT_TRUE(locator.addRange(locator.layout().twrModuleIndex(modules.back().id),
+                               (truth - modules.back().position).norm(), 0.03));
+  ASSERT_TRUE(locator.addBearing(locator.layout().aoaBoardIndex("front"), seen(0) - 3.3 * deg,
+                                 seen(1), -60.0, 0.003));
+  ASSERT_TRUE(locator.addBearing(locator.layout().aoaBoardIndex("left"), -55.4 * deg, 3.6 * deg,
+                                 -60.0, 0.032));
+  ASSERT_TRUE(locator.addBearing(locator.layout().aoaBoardIndex("right"), 34.1 * deg, 3.4 * deg,
+                                 -60.0, 0.026));
   const LocatorEstimate e = locator.update(0.25);
   ASSERT_TRUE(hasPosition(e.status)) << toString(e.status);
   EXPECT_LT((e.position - truth).head<2>().norm(), 1.0) << e.position.transpose();
@@ -517,15 +522,18 @@ TEST(ParticleTracker, OutOfOrderMeasurementsAreSortedAndFutureOnesDropped) {
   const auto& modules = locator.layout().twr_modules;
   // Newest first: the tracker applies them in stamp order.
   for (int k = 2; k >= 0; --k) {
-    locator.addRange(locator.layout().twrModuleIndex(modules[k].id), (truth - modules[k].position).norm(), 1.0 + 0.01 * k);
+    locator.addRange(locator.layout().twrModuleIndex(modules[k].id),
+                     (truth - modules[k].position).norm(), 1.0 + 0.01 * k);
   }
-  locator.addRange(locator.layout().twrModuleIndex(modules[0].id), 3.0, 5.0);  // 4 s ahead of the clock
+  locator.addRange(locator.layout().twrModuleIndex(modules[0].id), 3.0,
+                   5.0);  // 4 s ahead of the clock
   locator.update(1.05);
   EXPECT_EQ(locator.tracker().stats().future_dropped, 1u);
   EXPECT_EQ(locator.tracker().stats().cold_starts, 1u);
   EXPECT_EQ(locator.tracker().stats().late, 0u);
   // A range older than what the filter already applied is applied at the filter's time.
-  locator.addRange(locator.layout().twrModuleIndex(modules[1].id), (truth - modules[1].position).norm(), 1.005);
+  locator.addRange(locator.layout().twrModuleIndex(modules[1].id),
+                   (truth - modules[1].position).norm(), 1.005);
   locator.update(1.1);
   EXPECT_EQ(locator.tracker().stats().late, 1u);
 }

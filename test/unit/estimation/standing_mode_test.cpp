@@ -133,8 +133,9 @@ double standingTargetError(double stand_time) {
     for (std::size_t i = 0; i < drift.size(); ++i) {
       drift[i] = keep * drift[i] + std::sqrt(1.0 - keep * keep) * 0.06 * unit(rng);
       const auto& m = locator.layout().twr_modules[i];
-      locator.addRange(locator.layout().twrModuleIndex(m.id), (local - m.position).norm() + drift[i] + 0.02 * unit(rng),
-                       t + 0.01 * i, pose);
+      locator.addRange(locator.layout().twrModuleIndex(m.id),
+                       (local - m.position).norm() + drift[i] + 0.02 * unit(rng), t + 0.01 * i,
+                       pose);
     }
     const LocatorEstimate e = locator.update(t + 0.05);
     if (t >= 20.0) {
@@ -169,7 +170,8 @@ double spreadAfter(double rate, double decorrelation_time) {
   const double dt = 1.0 / rate;
   for (int k = 0; k * dt < 3.0; ++k) {
     for (const auto& m : locator.layout().twr_modules) {
-      locator.addRange(locator.layout().twrModuleIndex(m.id), (target - m.position).norm() + noise(rng), k * dt);
+      locator.addRange(locator.layout().twrModuleIndex(m.id),
+                       (target - m.position).norm() + noise(rng), k * dt);
     }
     locator.update(k * dt + 0.5 * dt);
   }
