@@ -75,13 +75,7 @@ bool Locator::addRange(std::size_t module, double raw_range, double t,
   slot.t = t;
   slot.valid = slot.range > 0.0;
   if (slot.valid) {
-    TrackedMeasurement m;
-    m.kind = TrackedMeasurement::Kind::kRange;
-    m.t = t;
-    m.pose = pose;
-    m.sensor = module;
-    m.value = slot.range;
-    active().add(m, 0.0);
+    active().add({TrackedMeasurement::Kind::kRange, t, pose, module, 0, slot.range}, 0.0);
   }
   return slot.valid;
 }
@@ -105,14 +99,7 @@ bool Locator::addBearing(std::size_t index, double azimuth, double elevation, do
   slot.valid = true;
   // The solver's board selection keeps its RSSI history whichever estimator is active.
   solver_.recordRssi(index, rssi);
-  TrackedMeasurement m;
-  m.kind = TrackedMeasurement::Kind::kBearing;
-  m.t = t;
-  m.pose = pose;
-  m.sensor = index;
-  m.value = azimuth;
-  m.elevation = elevation;
-  active().add(m, rssi);
+  active().add({TrackedMeasurement::Kind::kBearing, t, pose, index, 0, azimuth, elevation}, rssi);
   return true;
 }
 
@@ -160,15 +147,8 @@ bool Locator::addTdoa(std::size_t ia, std::size_t ib, double difference, double 
       variance > 0.0 && std::isfinite(variance) ? std::sqrt(variance) : config_.tdoa_sigma;
   slot->t = t;
   slot->valid = true;
-  TrackedMeasurement m;
-  m.kind = TrackedMeasurement::Kind::kTdoa;
-  m.t = t;
-  m.pose = pose;
-  m.sensor = ia;
-  m.sensor_b = ib;
-  m.value = difference;
-  m.sigma = slot->sigma;
-  active().add(m, 0.0);
+  active().add({TrackedMeasurement::Kind::kTdoa, t, pose, ia, ib, difference, 0.0, slot->sigma},
+               0.0);
   return true;
 }
 
