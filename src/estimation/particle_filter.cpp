@@ -6,13 +6,10 @@
 #include <random>
 #include <utility>
 
-#include "radio_follow/estimation/fast_exp.hpp"
-
 namespace radio_follow {
 namespace estimation {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 /// Entries of the normal table: enough that the draws of one step never repeat.
 constexpr std::size_t kNormalTable = 1u << 16;
 /// Measurements closer in time than this share a prediction (one step is 4 normal draws
@@ -21,59 +18,7 @@ constexpr double kMinPredictStep = 0.005;
 /// Spread added around the given positions at initialisation, m.
 constexpr double kInitialSpread = 0.02;
 
-/// The parts of a heavy-tailed range likelihood that do not depend on the error.
-struct RangeTerms {
-  double gauss;  ///< (1 - eps) / (sqrt(2 pi) sigma)
-  double tail;   ///< 0.9 eps / L  (one-sided) or 0.45 eps / L (symmetric)
-  double floor;  ///< 0.1 eps / (2 W)
-  double inv_sigma;
-  double inv_length;
-};
-
-RangeTerms rangeTerms(const RangeLikelihood& m) {
-  const double eps = m.outlier_share;
-  return {(1.0 - eps) / (std::sqrt(2.0 * kPi) * m.sigma),
-          (m.one_sided ? 0.9 : 0.45) * eps / m.outlier_length, 0.1 * eps / (2.0 * m.floor_width),
-          1.0 / m.sigma, 1.0 / m.outlier_length};
-}
-
-/// 1 where x > 0, 0 where x <= 0 (for |x| > 1e-30), with arithmetic only: Eigen
-/// vectorises it, where it evaluates an expression containing a select element by element.
-template <typename Derived>
-auto step(const Eigen::ArrayBase<Derived>& x) {
-  return (x * 1e30f).max(0.0f).min(1.0f);
-}
-
-/// The inlier (Gaussian) and outlier (tail and floor) parts of the likelihood of every
-/// error in `error`, written into the two buffers (`inlier` may alias `error`).
-void rangeLikelihood(const Eigen::ArrayXf& error, const RangeLikelihood& m, Eigen::ArrayXf* inlier,
-                     Eigen::ArrayXf* outlier) {
-  const RangeTerms k = rangeTerms(m);
-  const auto tail = static_cast<float>(k.tail);
-  const auto inv_length = static_cast<float>(k.inv_length);
-  const auto floor = static_cast<float>(k.floor);
-  if (m.one_sided) {
-    *outlier = tail * step(error) * fastExp(-error.max(0.0f) * inv_length) + floor;
-  } else {
-    *outlier = tail * fastExp(-error.abs() * inv_length) + floor;
-  }
-  *inlier = static_cast<float>(k.gauss) *
-            fastExp(-0.5f * (error * static_cast<float>(k.inv_sigma)).square());
-}
-
 }  // namespace
-
-double RangeLikelihood::operator()(double error) const {
-  const RangeTerms k = rangeTerms(*this);
-  const double z = error * k.inv_sigma;
-  double tail = 0.0;
-  if (!one_sided) {
-    tail = k.tail * std::exp(-std::abs(error) * k.inv_length);
-  } else if (error > 0.0) {
-    tail = k.tail * std::exp(-error * k.inv_length);
-  }
-  return k.gauss * std::exp(-0.5 * z * z) + tail + k.floor;
-}
 
 ParticleFilter::ParticleFilter(const Config& config) : config_(config), state_(config.seed) {
   std::mt19937_64 rng(config.seed);
@@ -217,122 +162,6 @@ MeasurementFit ParticleFilter::applyLikelihood(const Eigen::ArrayXf& inlier, dou
   }
   w_ *= (inlier + static_cast<float>(outlier)) * static_cast<float>(1.0 / evidence);
   return {evidence, inlier_mass / evidence};
-}
-
-MeasurementFit ParticleFilter::weightRange(const Eigen::Vector3d& module, double range,
-                                           const RangeLikelihood& model) {
-  const Eigen::Vector3f m = local(module);
-  inlier_ = static_cast<float>(range) -
-            ((x_ - m.x()).square() + (y_ - m.y()).square() + (z_ - m.z()).square()).sqrt();
-  rangeLikelihood(inlier_, model, &inlier_, &outlier_);
-  return applyLikelihood(inlier_, outlier_);
-}
-
-MeasurementFit ParticleFilter::weightTdoa(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                                          double difference, const RangeLikelihood& model) {
-  const Eigen::Vector3f p = local(a);
-  const Eigen::Vector3f q = local(b);
-  lx_ = ((x_ - p.x()).square() + (y_ - p.y()).square() + (z_ - p.z()).square()).sqrt();
-  ly_ = ((x_ - q.x()).square() + (y_ - q.y()).square() + (z_ - q.z()).square()).sqrt();
-  inlier_ = static_cast<float>(difference) - (lx_ - ly_);
-  rangeLikelihood(inlier_, model, &inlier_, &outlier_);
-  return applyLikelihood(inlier_, outlier_);
-}
-
-MeasurementFit ParticleFilter::weightBearing(const Eigen::Vector3d& board,
-                                             const Eigen::Matrix3d& rotation, double azimuth,
-                                             double elevation, const BearingLikelihood& m) {
-  // Sigma factor: a board whose field of view does not contain the cloud's mean (the
-  // estimate), mirrored to the board's front, is worth less, for every particle alike. A
-  // factor that depended on each particle's own angle would pull a tracked cloud inside
-  // the field of view, and one from the measured angle would trust the edge's biased
-  // angles that read as inside. Mirrored, because the board hears a tag behind it as
-  // well as its mirror image in front: the side is not the sigma's business (see
-  // BearingLikelihood). So there are two concentrations, inside and outside, each with
-  // its normalising constant; for a cold start's cloud around the robot each particle's
-  // own mirrored angle decides.
-  const Eigen::Matrix3d rt = rotation.transpose();
-  const bool each_particle =
-      m.field_of_view_test == BearingLikelihood::FieldOfViewTest::kEachParticle;
-  double inside_factor = 1.0;
-  if (!each_particle) {
-    const Eigen::Vector3d centre = rt * (mean() - board);
-    const double centre_cos = std::abs(centre.x()) / std::max(1e-9, centre.head<2>().norm());
-    inside_factor = centre_cos < std::cos(m.field_of_view) ? m.edge_sigma_factor : 1.0;
-  }
-  const double outside_factor = each_particle ? m.edge_sigma_factor : inside_factor;
-  // |lx| < inside_cos * rho: outside (rho, the horizontal distance, > 0).
-  const auto inside_cos = static_cast<float>(each_particle ? std::cos(m.field_of_view) : -1.0);
-  const auto concentration = [](double sigma) { return 1.0 / (sigma * sigma); };
-  const double az_inside = concentration(m.azimuth_sigma * inside_factor);
-  const double az_outside = concentration(m.azimuth_sigma * outside_factor);
-  const double el_inside = m.use_elevation ? concentration(m.elevation_sigma * inside_factor) : 0.0;
-  const double el_outside =
-      m.use_elevation ? concentration(m.elevation_sigma * outside_factor) : 0.0;
-  // The von Mises normalisers sqrt(kappa / 2 pi), each angle's times its inlier share: the
-  // azimuth's (1 - eps) against reflections from anywhere, the elevation's (1 - eps_e)
-  // against shadowing, which lifts the elevation while the azimuth holds.
-  const auto normaliser = [](double kappa, double share) {
-    return (1.0 - share) * std::sqrt(kappa / (2.0 * kPi));
-  };
-  const double az_scale_inside = normaliser(az_inside, m.outlier_share);
-  const double az_scale_outside = normaliser(az_outside, m.outlier_share);
-  const double el_scale_inside = normaliser(el_inside, m.elevation_outlier_share);
-  const double el_scale_outside = normaliser(el_outside, m.elevation_outlier_share);
-
-  // Board-frame offsets of every particle: (lx, ly, lz) = R^T (p - board), lz when needed.
-  const Eigen::Matrix3f r = rt.cast<float>();
-  const Eigen::Vector3f b = local(board);
-  lx_ = r(0, 0) * (x_ - b.x()) + r(0, 1) * (y_ - b.y()) + r(0, 2) * (z_ - b.z());
-  ly_ = r(1, 0) * (x_ - b.x()) + r(1, 1) * (y_ - b.y()) + r(1, 2) * (z_ - b.z());
-  // Reciprocal square roots (one vector instruction and a Newton step) stand in for
-  // square roots and divisions: rho = rho^2 / rho.
-  rho2_ = (lx_.square() + ly_.square()).max(1e-18f);  // squared horizontal distance
-  inv_rho_ = rho2_.rsqrt();
-  // The per-particle constants blend by a 0/1 mask (1: outside) computed with arithmetic
-  // (step()), which vectorises where a select is evaluated element by element.
-  pick_ = step(inside_cos * rho2_ * inv_rho_ - lx_.abs());
-  const auto blend = [this](double outside, double inside) {
-    return static_cast<float>(inside) + static_cast<float>(outside - inside) * pick_;
-  };
-  // cos(measured - predicted) - 1 as dot products of unit vectors, |lx| the array's
-  // front/back mirror: in ly_ for the azimuth, in lz_ for the elevation.
-  ly_ = (lx_.abs() * std::cos(static_cast<float>(azimuth)) +
-         ly_ * std::sin(static_cast<float>(azimuth))) *
-            inv_rho_ -
-        1.0f;
-  // log of the von Mises density without its normaliser: kappa (cos - 1).
-  inlier_ = blend(az_scale_outside, az_scale_inside) * fastExp(blend(az_outside, az_inside) * ly_);
-  if (m.use_elevation) {
-    lz_ = r(2, 0) * (x_ - b.x()) + r(2, 1) * (y_ - b.y()) + r(2, 2) * (z_ - b.z());
-    lz_ = (rho2_ * inv_rho_ * std::cos(static_cast<float>(elevation)) +
-           lz_ * std::sin(static_cast<float>(elevation))) *
-              (rho2_ + lz_.square()).rsqrt() -
-          1.0f;
-    // The elevation's own mixture: its von Mises or, shadowed, uniform over [-90, 90] deg.
-    inlier_ *=
-        blend(el_scale_outside, el_scale_inside) * fastExp(blend(el_outside, el_inside) * lz_) +
-        static_cast<float>(m.elevation_outlier_share / kPi);
-  }
-  // The field of view's prior on the side: behind (lx < 0) counts behind_weight.
-  inlier_ *= 1.0f + static_cast<float>(m.behind_weight - 1.0) * step(-lx_);
-  const double uniform = 1.0 / (2.0 * kPi) / (m.use_elevation ? kPi : 1.0);
-  return applyLikelihood(inlier_, m.outlier_share * uniform);
-}
-
-MeasurementFit ParticleFilter::weightRssDirection(const Eigen::Vector3d& midpoint, double axis_yaw,
-                                                  double difference,
-                                                  const RssDirectionLikelihood& m) {
-  const Eigen::Vector3d centre = midpoint - origin_;
-  const Eigen::ArrayXd dx = x_.cast<double>() - centre.x();
-  const Eigen::ArrayXd dy = y_.cast<double>() - centre.y();
-  // cos(theta - theta_a) of every particle; one on the midpoint itself says nothing.
-  const Eigen::ArrayXd cos_offset = (dx * std::cos(axis_yaw) + dy * std::sin(axis_yaw)) /
-                                    (dx.square() + dy.square()).sqrt().max(1e-9);
-  const Eigen::ArrayXd z = (difference - m.gain * cos_offset) / m.sigma;
-  inlier_ = ((1.0 - m.outlier_share) / (std::sqrt(2.0 * kPi) * m.sigma) * (-0.5 * z.square()).exp())
-                .cast<float>();
-  return applyLikelihood(inlier_, m.outlier_share / m.floor_width);
 }
 
 double ParticleFilter::restrict(const std::function<bool(const Eigen::Vector3d&)>& keep) {

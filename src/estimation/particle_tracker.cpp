@@ -166,15 +166,14 @@ MeasurementFit ParticleTracker::weigh(ParticleFilter& filter, const TrackedMeasu
     case TrackedMeasurement::Kind::kRange: {
       RangeLikelihood model = config_.range;
       model.sigma *= sigma_scale;
-      return filter.weightRange(pose.toFixed(layout_.twr_modules[m.sensor].position), m.value,
-                                model);
+      return weighRange(filter, pose.toFixed(layout_.twr_modules[m.sensor].position), m.value,
+                        model);
     }
     case TrackedMeasurement::Kind::kTdoa: {
       RangeLikelihood model = config_.tdoa;
       model.sigma = m.sigma;
-      return filter.weightTdoa(pose.toFixed(layout_.tdoa_anchors[m.sensor].position),
-                               pose.toFixed(layout_.tdoa_anchors[m.sensor_b].position), m.value,
-                               model);
+      return weighTdoa(filter, pose.toFixed(layout_.tdoa_anchors[m.sensor].position),
+                       pose.toFixed(layout_.tdoa_anchors[m.sensor_b].position), m.value, model);
     }
     case TrackedMeasurement::Kind::kBearing: {
       const AoaBoard& board = layout_.aoa_boards[m.sensor];
@@ -190,14 +189,14 @@ MeasurementFit ParticleTracker::weigh(ParticleFilter& filter, const TrackedMeasu
       if (!rangedAt(m.t)) {
         model.elevation_sigma *= kUnrangedElevationFactor;
       }
-      return filter.weightBearing(pose.toFixed(board.position),
-                                  yawRotation(pose.yaw) * board.orientation.toRotationMatrix(),
-                                  m.value, m.elevation, model);
+      return weighBearing(filter, pose.toFixed(board.position),
+                          yawRotation(pose.yaw) * board.orientation.toRotationMatrix(), m.value,
+                          m.elevation, model);
     }
     case TrackedMeasurement::Kind::kRssDirection: {
       const RssPair& pair = rss_pairs_[m.sensor];
-      return filter.weightRssDirection(pose.toFixed(pair.midpoint), pose.yaw + pair.axis_yaw,
-                                       m.value, config_.rss);
+      return weighRssDirection(filter, pose.toFixed(pair.midpoint), pose.yaw + pair.axis_yaw,
+                               m.value, config_.rss);
     }
   }
   return {};

@@ -11,8 +11,8 @@
 #include <limits>
 
 #include "radio_follow/common/param_error.hpp"
-#include "radio_follow/estimation/cost_functors.hpp"
 #include "radio_follow/estimation/fisher.hpp"
+#include "radio_follow/estimation/measurement_models.hpp"
 
 namespace radio_follow {
 namespace estimation {

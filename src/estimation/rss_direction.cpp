@@ -102,5 +102,21 @@ std::optional<RssDifference> RssDifferencer::add(std::size_t board, double rssi,
   return RssDifference{k, rssi_a - rssi_b, std::max(own.t, other.t)};
 }
 
+MeasurementFit weighRssDirection(ParticleFilter& filter, const Eigen::Vector3d& midpoint,
+                                 double axis_yaw, double difference,
+                                 const RssDirectionLikelihood& m) {
+  const Eigen::Vector3d centre = midpoint - filter.origin();
+  const Eigen::ArrayXd dx = filter.localX().cast<double>() - centre.x();
+  const Eigen::ArrayXd dy = filter.localY().cast<double>() - centre.y();
+  // cos(theta - theta_a) of every particle; one on the midpoint itself says nothing.
+  const Eigen::ArrayXd cos_offset = (dx * std::cos(axis_yaw) + dy * std::sin(axis_yaw)) /
+                                    (dx.square() + dy.square()).sqrt().max(1e-9);
+  const Eigen::ArrayXd z = (difference - m.gain * cos_offset) / m.sigma;
+  Eigen::ArrayXf& inlier = filter.workspace().inlier;
+  inlier = ((1.0 - m.outlier_share) / (std::sqrt(2.0 * kPi) * m.sigma) * (-0.5 * z.square()).exp())
+               .cast<float>();
+  return filter.applyLikelihood(inlier, m.outlier_share / m.floor_width);
+}
+
 }  // namespace estimation
 }  // namespace radio_follow

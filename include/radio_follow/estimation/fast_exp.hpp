@@ -72,6 +72,13 @@ auto fastExp(const Eigen::ArrayBase<Derived>& x) {
   return x.unaryExpr(FastExp());
 }
 
+/// 1 where x > 0, 0 where x <= 0 (for |x| > 1e-30), with arithmetic only: Eigen
+/// vectorises it, where it evaluates an expression containing a select element by element.
+template <typename Derived>
+auto positiveStep(const Eigen::ArrayBase<Derived>& x) {
+  return (x * 1e30f).max(0.0f).min(1.0f);
+}
+
 }  // namespace estimation
 }  // namespace radio_follow
 

@@ -7,61 +7,11 @@
 #include <functional>
 #include <vector>
 
+#include "radio_follow/config/layout.hpp"
 #include "radio_follow/estimation/kalman_filter.hpp"
-#include "radio_follow/estimation/rss_direction.hpp"
 
 namespace radio_follow {
 namespace estimation {
-
-/// A range or distance-difference likelihood with heavy tails (seed 001's robust
-/// measurement model; real UWB: doc/nodes/locator.md, "Particle estimator"):
-///   l(e) = (1 - eps) N(e; 0, sigma^2) + eps [0.9 (e > 0) exp(-e / L) / L + 0.1 / (2 W)],
-/// e = measured - predicted. A reflection only ever makes a range longer, so most of the
-/// outlier mass is on the long side; the small two-sided floor keeps every particle
-/// alive under any measurement (no zero weights, no underflow).
-struct RangeLikelihood {
-  double sigma = 0.07;          ///< m
-  double outlier_share = 0.02;  ///< eps
-  double outlier_length = 1.0;  ///< L, mean excess of a long outlier, m
-  bool one_sided = true;        ///< false (TDoA: either anchor's path may be long): symmetric
-  double floor_width = 20.0;    ///< W, m
-
-  /// l(e), not normalised over the outlier floor's support.
-  double operator()(double error) const;
-};
-
-/// A bearing likelihood for real boards (issue 35; doc/nodes/locator.md, "Bearings"): von
-/// Mises in azimuth (and elevation), concentration 1 / sigma^2, mixed with a uniform share
-/// for reflections, so an error of any size costs at most the floor (real boards: median
-/// 8 deg, p95 30 deg). A board cannot tell a tag in front from one behind its plane: a
-/// particle behind the board predicts the mirrored direction with the same likelihood,
-/// times `behind_weight` (the field of view's prior: the board faces where the tag is
-/// expected, and its ground plane hears less from behind). So the size of an error never
-/// decides the side; only a change of geometry does (the robot turning or driving), or
-/// that prior.
-struct BearingLikelihood {
-  /// Which angle decides whether the board sees the target (its sigma then grows by
-  /// `edge_sigma_factor`).
-  enum class FieldOfViewTest {
-    /// The cloud's mean, mirrored to the board's front, for every particle alike: a
-    /// tracked cloud's estimate.
-    kCloudMean,
-    /// Each particle's own angle, mirrored to the front: a cold start's cloud spread
-    /// around the robot, whose mean (near the robot) says nothing about where the
-    /// target is.
-    kEachParticle,
-  };
-  double azimuth_sigma = 0.087;   ///< rad
-  double elevation_sigma = 0.17;  ///< rad
-  bool use_elevation = true;
-  double outlier_share = 0.05;     ///< reflections, from any direction
-  /// Elevations alone off (shadowed: the wearer's body between tag and board), uniform.
-  double elevation_outlier_share = 0.1;
-  double field_of_view = 1.22;     ///< rad; beyond it the sigma grows
-  double edge_sigma_factor = 6.0;  ///< sigma factor of a bearing measured outside it
-  double behind_weight = 0.5;      ///< likelihood factor of a particle behind the board
-  FieldOfViewTest field_of_view_test = FieldOfViewTest::kCloudMean;
-};
 
 /// What one measurement told a filter: its marginal likelihood sum_i w_i l_i (the
 /// evidence the hypothesis bank compares) and the posterior probability that it was not
@@ -114,18 +64,30 @@ class ParticleFilter {
   void predict(double t);
   double time() const { return t_; }
 
-  MeasurementFit weightRange(const Eigen::Vector3d& module, double range,
-                             const RangeLikelihood& model);
-  MeasurementFit weightTdoa(const Eigen::Vector3d& anchor_a, const Eigen::Vector3d& anchor_b,
-                            double difference, const RangeLikelihood& model);
-  /// `rotation`: board -> tracking frame; azimuth/elevation in the board frame.
-  MeasurementFit weightBearing(const Eigen::Vector3d& board, const Eigen::Matrix3d& rotation,
-                               double azimuth, double elevation, const BearingLikelihood& model);
-  /// An opposed pair's RSSI difference (rss_direction.hpp): `midpoint` of the pair and
-  /// `axis_yaw` of its forward board in the tracking frame; the particle's direction is
-  /// taken in the xy-plane.
-  MeasurementFit weightRssDirection(const Eigen::Vector3d& midpoint, double axis_yaw,
-                                    double difference, const RssDirectionLikelihood& model);
+  // What a measurement kind's likelihood reads and writes (range_measurement.hpp,
+  // tdoa_measurement.hpp, bearing_measurement.hpp, rss_direction.hpp): it computes one
+  // likelihood per particle from the positions below into the workspace, then
+  // applyLikelihood() multiplies the weights by it.
+
+  /// Particle positions relative to origin(), single precision (see the members).
+  const Eigen::ArrayXf& localX() const { return x_; }
+  const Eigen::ArrayXf& localY() const { return y_; }
+  const Eigen::ArrayXf& localZ() const { return z_; }
+  const Eigen::Vector3d& origin() const { return origin_; }
+  /// `p` (tracking frame) relative to origin(), single precision.
+  Eigen::Vector3f local(const Eigen::Vector3d& p) const { return (p - origin_).cast<float>(); }
+  /// Per-particle work arrays of the likelihoods, kept so that none allocates per
+  /// measurement. Their contents are the caller's between calls.
+  struct Workspace {
+    Eigen::ArrayXf inlier, outlier, lx, ly, lz, rho2, inv_rho, pick;
+  };
+  Workspace& workspace() { return work_; }
+  /// Multiplies the weights by each particle's inlier + outlier likelihood and
+  /// renormalises; returns the measurement's evidence and inlier probability. A
+  /// measurement nothing explains (zero or non-finite evidence) leaves them unchanged.
+  MeasurementFit applyLikelihood(const Eigen::ArrayXf& inlier, const Eigen::ArrayXf& outlier);
+  /// The same with an outlier likelihood that is the same for every particle.
+  MeasurementFit applyLikelihood(const Eigen::ArrayXf& inlier, double outlier);
 
   /// Systematic resampling when the effective sample size is below the threshold.
   /// Returns true when it resampled.
@@ -166,10 +128,6 @@ class ParticleFilter {
  private:
   /// `count` systematic draws of particle indices by weight, into indices_.
   void drawIndices(std::size_t count);
-  /// Multiplies the weights by inlier + outlier likelihood and renormalises.
-  MeasurementFit applyLikelihood(const Eigen::ArrayXf& inlier, const Eigen::ArrayXf& outlier);
-  /// The same with an outlier likelihood that is the same for every particle.
-  MeasurementFit applyLikelihood(const Eigen::ArrayXf& inlier, double outlier);
   /// splitmix64: fast, plenty for indexing a table and systematic resampling, and its
   /// draws depend on each other only through one addition, so a loop of draws pipelines.
   std::uint64_t nextRandom() {
@@ -186,8 +144,6 @@ class ParticleFilter {
   }
   /// A standard normal draw (table lookup: the filter draws millions per second).
   double normal() { return normals_[nextRandom() >> 48]; }
-  /// `p` relative to the particles' origin, single precision.
-  Eigen::Vector3f local(const Eigen::Vector3d& p) const { return (p - origin_).cast<float>(); }
   /// The cloud's weighted mean relative to the origin.
   Eigen::Vector3d localMean() const;
 
@@ -209,8 +165,7 @@ class ParticleFilter {
   Eigen::ArrayXXf noise_;
   std::vector<Eigen::Index> indices_;  ///< drawIndices()'s result
   Eigen::ArrayXf gathered_;
-  /// Per-particle work arrays of the likelihoods, kept to not allocate per measurement.
-  Eigen::ArrayXf inlier_, outlier_, lx_, ly_, lz_, rho2_, inv_rho_, pick_;
+  Workspace work_;
 };
 
 }  // namespace estimation

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "radio_follow/config/layout.hpp"
+#include "radio_follow/estimation/particle_filter.hpp"
 
 namespace radio_follow {
 namespace estimation {
@@ -52,6 +53,13 @@ struct RssDirectionLikelihood {
   /// l(d | theta) with `cos_offset` = cos(theta - theta_a).
   double operator()(double difference, double cos_offset) const;
 };
+
+/// Weighs `filter`'s particles by one pair's difference: `midpoint` of the pair and
+/// `axis_yaw` of its forward board in the tracking frame; each particle's direction is
+/// taken in the xy-plane.
+MeasurementFit weighRssDirection(ParticleFilter& filter, const Eigen::Vector3d& midpoint,
+                                 double axis_yaw, double difference,
+                                 const RssDirectionLikelihood& model);
 
 /// One pair's RSSI difference, formed from one reading of each board.
 struct RssDifference {

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "radio_follow/estimation/cost_functors.hpp"
-
+#include <ceres/ceres.h>
 #include <gtest/gtest.h>
 
 #include <random>
 
 #include "radio_follow/estimation/fisher.hpp"
+#include "radio_follow/estimation/measurement_models.hpp"
 
 namespace radio_follow {
 namespace estimation {

@@ -98,7 +98,7 @@ TEST(ParticleFilter, SystematicResamplingKeepsTheWeights) {
   // Three quarters of the weight on the particles near x = 10.
   filter.restrict([](const Eigen::Vector3d&) { return true; });
   const RangeLikelihood model{0.5, 1e-6, 1.0, true, 20.0};
-  const MeasurementFit fit = filter.weightRange({10, 0, 1}, 0.0, model);
+  const MeasurementFit fit = weighRange(filter, {10, 0, 1}, 0.0, model);
   EXPECT_GT(fit.inlier, 0.99);
   EXPECT_LT(filter.effectiveSampleSize(), 600.0);
   ASSERT_TRUE(filter.resampleIfNeeded());
@@ -115,7 +115,7 @@ TEST(ParticleFilter, AMeasurementNothingExplainsIsAnOutlier) {
   ParticleFilter::Config config;
   ParticleFilter filter(config);
   filter.initialize({{3, 0, 1}}, 0.1, 0.0);
-  const MeasurementFit fit = filter.weightRange({0, 0, 1}, 9.0, RangeLikelihood{});
+  const MeasurementFit fit = weighRange(filter, {0, 0, 1}, 9.0, RangeLikelihood{});
   EXPECT_GT(fit.likelihood, 0.0);
   EXPECT_LT(fit.inlier, 1e-6);
   EXPECT_NEAR(filter.mean().x(), 3.0, 0.05);  // and moved nothing
@@ -139,7 +139,7 @@ TEST(ParticleFilter, TracksKilometresFromTheFrameOriginAsPreciselyAsNearIt) {
       const Eigen::Vector3d target(3.0 + 0.5 * t, 1.0 + 0.2 * t, 1.0);
       filter.predict(t);
       for (const Eigen::Vector3d& m : modules) {
-        filter.weightRange(m + shift, (target - m).norm() + noise(rng), RangeLikelihood{});
+        weighRange(filter, m + shift, (target - m).norm() + noise(rng), RangeLikelihood{});
       }
       filter.resampleIfNeeded();
     }
@@ -180,7 +180,7 @@ TEST(ParticleFilter, AColdStartTestsTheFieldOfViewAtEachParticle) {
     ParticleFilter filter(config);
     filter.assign({at(80.0), at(40.0)}, {Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()}, 0.0);
     model.field_of_view_test = test;
-    filter.weightBearing(Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity(), reading, 0.0, model);
+    weighBearing(filter, Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity(), reading, 0.0, model);
     // The mean (60 deg) is inside: by the mean, both particles get the board's own sigma.
     const double outside_sigma = test == BearingLikelihood::FieldOfViewTest::kEachParticle
                                      ? model.azimuth_sigma * model.edge_sigma_factor
@@ -211,8 +211,8 @@ TEST(ParticleFilter, AShadowedElevationKeepsTheAzimuthsSay) {
                   {Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()}, 0.0);
     BearingLikelihood model;
     model.elevation_outlier_share = elevation_outlier_share;
-    filter.weightBearing(Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity(), 0.0,
-                         30.0 * M_PI / 180.0, model);
+    weighBearing(filter, Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity(), 0.0,
+                 30.0 * M_PI / 180.0, model);
     return filter.weight(0);
   };
   EXPECT_GT(weightOfA(BearingLikelihood().elevation_outlier_share), 0.55);

@@ -76,11 +76,11 @@ TEST(RssDirectionLikelihood, GaussianPartIsNormalisedAndTheFloorKeepsParticlesAl
     ring.emplace_back(3.0 * std::cos(a), 3.0 * std::sin(a), 1.0);
   }
   filter.initialize(ring, 0.0, 0.0);
-  const MeasurementFit wild = filter.weightRssDirection({0, 0, 0.25}, 0.0, 90.0, model);
+  const MeasurementFit wild = weighRssDirection(filter, {0, 0, 0.25}, 0.0, 90.0, model);
   EXPECT_LT(wild.inlier, 1e-6);
   EXPECT_GT(filter.effectiveSampleSize(), 399.0);
   // A plausible one favours the front half, symmetric about the axis, keeping the back.
-  const MeasurementFit fit = filter.weightRssDirection({0, 0, 0.25}, 0.0, 6.0, model);
+  const MeasurementFit fit = weighRssDirection(filter, {0, 0, 0.25}, 0.0, 6.0, model);
   EXPECT_GT(fit.inlier, 0.9);
   double front = 0.0;
   for (std::size_t i = 0; i < filter.size(); ++i) {

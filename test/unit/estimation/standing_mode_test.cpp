@@ -11,6 +11,7 @@
 #include "../../support/true_ranges.hpp"
 #include "radio_follow/estimation/locator.hpp"
 #include "radio_follow/estimation/particle_filter.hpp"
+#include "radio_follow/estimation/range_measurement.hpp"
 
 namespace radio_follow {
 namespace estimation {
@@ -81,7 +82,7 @@ StandThenWalk standThenWalk(double stand_time) {
       target.head<2>() += 0.1 * velocity;
       filter.predict(t);
       for (const Eigen::Vector3d& m : modules) {
-        filter.weightRange(m, (target - m).norm() + noise(rng), RangeLikelihood{});
+        weighRange(filter, m, (target - m).norm() + noise(rng), RangeLikelihood{});
       }
       filter.resampleIfNeeded();
     }

@@ -1,0 +1,151 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <ceres/sized_cost_function.h>
+
+#include <Eigen/Core>
+#include <cmath>
+
+#include "radio_follow/common/angles.hpp"
+#include "radio_follow/estimation/particle_filter.hpp"
+
+namespace radio_follow {
+namespace estimation {
+
+// An angle-of-arrival bearing (azimuth and elevation) measured by an AoA board: the
+// observation, its model, its Ceres cost, its autodiff reference and its particle
+// likelihood, in one place.
+
+/// An angle-of-arrival bearing measured by one board, in that board's frame.
+struct BearingObservation {
+  Eigen::Vector3d board = Eigen::Vector3d::Zero();  ///< board position, fixed frame, m
+  /// Rotation board -> fixed frame (columns are the board axes in the fixed frame).
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  double azimuth = 0.0;    ///< rad, CCW about board z, 0 = boresight
+  double elevation = 0.0;  ///< rad, towards board +z
+  double sigma_azimuth = 0.035;
+  double sigma_elevation = 0.087;
+  bool use_elevation = true;  ///< false: the elevation residual is always zero
+};
+
+/// Azimuth and elevation of p as seen from a board (board frame), radians.
+inline Eigen::Vector2d predictBearing(const Eigen::Vector3d& p, const Eigen::Vector3d& board,
+                                      const Eigen::Matrix3d& rotation) {
+  const Eigen::Vector3d v = rotation.transpose() * (p - board);
+  return {std::atan2(v.y(), v.x()), std::atan2(v.z(), std::hypot(v.x(), v.y()))};
+}
+
+/// Whitened, wrapped (azimuth, elevation) residual. Straight above or below the board the
+/// azimuth is undefined: its Jacobian row is zero there rather than infinite.
+inline Eigen::Vector2d bearingResidual(const BearingObservation& z, const Eigen::Vector3d& p,
+                                       Eigen::Matrix<double, 2, 3>* jacobian) {
+  const Eigen::Vector3d v = z.rotation.transpose() * (p - z.board);
+  const double rho2 = v.x() * v.x() + v.y() * v.y();
+  const double rho = std::sqrt(rho2);
+  const double n2 = rho2 + v.z() * v.z();
+  Eigen::Vector2d residual;
+  residual(0) = wrapAngleFast(std::atan2(v.y(), v.x()) - z.azimuth) / z.sigma_azimuth;
+  residual(1) = z.use_elevation
+                    ? wrapAngleFast(std::atan2(v.z(), rho) - z.elevation) / z.sigma_elevation
+                    : 0.0;
+  if (jacobian != nullptr) {
+    Eigen::Matrix<double, 2, 3> dv = Eigen::Matrix<double, 2, 3>::Zero();
+    if (rho2 > 1e-18) {
+      dv.row(0) << -v.y() / rho2, v.x() / rho2, 0.0;
+      if (z.use_elevation) {
+        dv.row(1) << -v.x() * v.z() / (rho * n2), -v.y() * v.z() / (rho * n2), rho / n2;
+      }
+    }
+    dv.row(0) /= z.sigma_azimuth;
+    dv.row(1) /= z.sigma_elevation;
+    *jacobian = dv * z.rotation.transpose();
+  }
+  return residual;
+}
+
+/// Analytic wrapped (azimuth, elevation) residual in the board frame.
+class BearingCost final : public ceres::SizedCostFunction<2, 3> {
+ public:
+  explicit BearingCost(const BearingObservation& z) : z_(z) {}
+  bool Evaluate(double const* const* parameters, double* residuals,
+                double** jacobians) const override {
+    const Eigen::Map<const Eigen::Vector3d> p(parameters[0]);
+    Eigen::Matrix<double, 2, 3> j;
+    Eigen::Map<Eigen::Vector2d> r(residuals);
+    r = bearingResidual(z_, p, jacobians != nullptr ? &j : nullptr);
+    if (jacobians != nullptr && jacobians[0] != nullptr) {
+      Eigen::Map<Eigen::Matrix<double, 2, 3, Eigen::RowMajor>> out(jacobians[0]);
+      out = j;
+    }
+    return true;
+  }
+
+ private:
+  BearingObservation z_;
+};
+
+/// Autodiff reference for BearingCost.
+struct BearingFunctor {
+  explicit BearingFunctor(const BearingObservation& z) : z_(z) {}
+  template <typename T>
+  bool operator()(const T* p, T* residual) const {
+    using std::atan2;
+    using std::sqrt;
+    T v[3];
+    for (int k = 0; k < 3; ++k) {
+      v[k] = T(0.0);
+      for (int i = 0; i < 3; ++i) {
+        v[k] += T(z_.rotation(i, k)) * (p[i] - T(z_.board[i]));
+      }
+    }
+    residual[0] = wrapAngle(atan2(v[1], v[0]) - T(z_.azimuth)) / T(z_.sigma_azimuth);
+    residual[1] = z_.use_elevation
+                      ? wrapAngle(atan2(v[2], sqrt(v[0] * v[0] + v[1] * v[1])) - T(z_.elevation)) /
+                            T(z_.sigma_elevation)
+                      : T(0.0);
+    return true;
+  }
+  BearingObservation z_;
+};
+
+/// A bearing likelihood for real boards (issue 35; doc/nodes/locator.md, "Bearings"): von
+/// Mises in azimuth (and elevation), concentration 1 / sigma^2, mixed with a uniform share
+/// for reflections, so an error of any size costs at most the floor (real boards: median
+/// 8 deg, p95 30 deg). A board cannot tell a tag in front from one behind its plane: a
+/// particle behind the board predicts the mirrored direction with the same likelihood,
+/// times `behind_weight` (the field of view's prior: the board faces where the tag is
+/// expected, and its ground plane hears less from behind). So the size of an error never
+/// decides the side; only a change of geometry does (the robot turning or driving), or
+/// that prior.
+struct BearingLikelihood {
+  /// Which angle decides whether the board sees the target (its sigma then grows by
+  /// `edge_sigma_factor`).
+  enum class FieldOfViewTest {
+    /// The cloud's mean, mirrored to the board's front, for every particle alike: a
+    /// tracked cloud's estimate.
+    kCloudMean,
+    /// Each particle's own angle, mirrored to the front: a cold start's cloud spread
+    /// around the robot, whose mean (near the robot) says nothing about where the
+    /// target is.
+    kEachParticle,
+  };
+  double azimuth_sigma = 0.087;   ///< rad
+  double elevation_sigma = 0.17;  ///< rad
+  bool use_elevation = true;
+  double outlier_share = 0.05;  ///< reflections, from any direction
+  /// Elevations alone off (shadowed: the wearer's body between tag and board), uniform.
+  double elevation_outlier_share = 0.1;
+  double field_of_view = 1.22;     ///< rad; beyond it the sigma grows
+  double edge_sigma_factor = 6.0;  ///< sigma factor of a bearing measured outside it
+  double behind_weight = 0.5;      ///< likelihood factor of a particle behind the board
+  FieldOfViewTest field_of_view_test = FieldOfViewTest::kCloudMean;
+};
+
+/// Weighs `filter`'s particles by a bearing of the board at `board` whose axes
+/// `rotation` turns into the tracking frame; azimuth and elevation in the board frame.
+MeasurementFit weighBearing(ParticleFilter& filter, const Eigen::Vector3d& board,
+                            const Eigen::Matrix3d& rotation, double azimuth, double elevation,
+                            const BearingLikelihood& model);
+
+}  // namespace estimation
+}  // namespace radio_follow

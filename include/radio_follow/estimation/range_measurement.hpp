@@ -1,0 +1,114 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <ceres/sized_cost_function.h>
+
+#include <Eigen/Core>
+
+#include "radio_follow/estimation/particle_filter.hpp"
+
+namespace radio_follow {
+namespace estimation {
+
+// A two-way range (TWR) from a module on the robot to the tag: the observation, its
+// model, its Ceres cost (the solver), its autodiff reference (the cost's test) and its
+// particle likelihood (the particle filter), in one place. The TDoA difference reuses the
+// model and the likelihood (tdoa_measurement.hpp).
+
+/// A two-way range from a module on the robot to the target, already calibrated.
+struct RangeObservation {
+  Eigen::Vector3d module = Eigen::Vector3d::Zero();  ///< module position, fixed frame, m
+  double range = 0.0;                                ///< measured range, m
+  double sigma = 0.03;                               ///< standard deviation, m
+};
+
+// The analytic models are shared by the Ceres cost functions (residual and Jacobian), the
+// Fisher information (Jacobian only) and the simulators (prediction). Residuals are
+// whitened; Jacobians are with respect to the target position p.
+
+/// Predicted range and its unit gradient; a zero-length difference gets a zero gradient
+/// (the range has no derivative there, and any unit vector would bias the step).
+inline double predictRange(const Eigen::Vector3d& p, const Eigen::Vector3d& module,
+                           Eigen::RowVector3d* gradient) {
+  const Eigen::Vector3d d = p - module;
+  const double r = d.norm();
+  if (gradient != nullptr) {
+    *gradient = r > 1e-12 ? Eigen::RowVector3d(d.transpose() / r) : Eigen::RowVector3d::Zero();
+  }
+  return r;
+}
+
+inline double rangeResidual(const RangeObservation& z, const Eigen::Vector3d& p,
+                            Eigen::RowVector3d* jacobian) {
+  const double r = predictRange(p, z.module, jacobian);
+  if (jacobian != nullptr) {
+    *jacobian /= z.sigma;
+  }
+  return (r - z.range) / z.sigma;
+}
+
+/// Analytic (||p - m|| - r) / sigma, one parameter block: the target position [x, y, z]
+/// in the fixed frame. About three times cheaper to evaluate than RangeFunctor.
+class RangeCost final : public ceres::SizedCostFunction<1, 3> {
+ public:
+  explicit RangeCost(const RangeObservation& z) : z_(z) {}
+  bool Evaluate(double const* const* parameters, double* residuals,
+                double** jacobians) const override {
+    const Eigen::Map<const Eigen::Vector3d> p(parameters[0]);
+    Eigen::RowVector3d j;
+    residuals[0] = rangeResidual(z_, p, jacobians != nullptr ? &j : nullptr);
+    if (jacobians != nullptr && jacobians[0] != nullptr) {
+      Eigen::Map<Eigen::RowVector3d> out(jacobians[0]);
+      out = j;
+    }
+    return true;
+  }
+
+ private:
+  RangeObservation z_;
+};
+
+/// Autodiff reference for RangeCost (ceres::AutoDiffCostFunction): what the analytic
+/// Jacobian is tested against.
+struct RangeFunctor {
+  explicit RangeFunctor(const RangeObservation& z) : z_(z) {}
+  template <typename T>
+  bool operator()(const T* p, T* residual) const {
+    using std::sqrt;
+    T sq = T(0.0);
+    for (int i = 0; i < 3; ++i) {
+      const T d = p[i] - T(z_.module[i]);
+      sq += d * d;
+    }
+    residual[0] = (sqrt(sq) - T(z_.range)) / T(z_.sigma);
+    return true;
+  }
+  RangeObservation z_;
+};
+
+/// A range or distance-difference likelihood with heavy tails (seed 001's robust
+/// measurement model; real UWB: doc/nodes/locator.md, "Particle estimator"):
+///   l(e) = (1 - eps) N(e; 0, sigma^2) + eps [0.9 (e > 0) exp(-e / L) / L + 0.1 / (2 W)],
+/// e = measured - predicted. A reflection only ever makes a range longer, so most of the
+/// outlier mass is on the long side; the small two-sided floor keeps every particle
+/// alive under any measurement (no zero weights, no underflow).
+struct RangeLikelihood {
+  double sigma = 0.07;          ///< m
+  double outlier_share = 0.02;  ///< eps
+  double outlier_length = 1.0;  ///< L, mean excess of a long outlier, m
+  bool one_sided = true;        ///< false (TDoA: either anchor's path may be long): symmetric
+  double floor_width = 20.0;    ///< W, m
+
+  /// l(e), not normalised over the outlier floor's support.
+  double operator()(double error) const;
+  /// The inlier (Gaussian) and outlier (tail and floor) parts of l(e) of every error in
+  /// `error`, in single precision, into the two buffers (`inlier` may alias `error`).
+  void evaluate(const Eigen::ArrayXf& error, Eigen::ArrayXf* inlier, Eigen::ArrayXf* outlier) const;
+};
+
+/// Weighs `filter`'s particles by a range from `module` (tracking frame).
+MeasurementFit weighRange(ParticleFilter& filter, const Eigen::Vector3d& module, double range,
+                          const RangeLikelihood& model);
+
+}  // namespace estimation
+}  // namespace radio_follow

@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <ceres/sized_cost_function.h>
+
+#include <Eigen/Core>
+
+#include "radio_follow/estimation/particle_filter.hpp"
+#include "radio_follow/estimation/range_measurement.hpp"
+
+namespace radio_follow {
+namespace estimation {
+
+// A TDoA distance difference between two anchors on the robot: the observation, its
+// model, its Ceres cost, its autodiff reference and its particle likelihood (the range's
+// heavy-tailed one, symmetric: either anchor's path may be long).
+
+/// A TDoA distance difference |p - a| - |p - b|.
+struct TdoaObservation {
+  Eigen::Vector3d anchor_a = Eigen::Vector3d::Zero();  ///< fixed frame, m
+  Eigen::Vector3d anchor_b = Eigen::Vector3d::Zero();  ///< fixed frame, m
+  double difference = 0.0;                             ///< m
+  double sigma = 0.1;                                  ///< m
+};
+
+/// Whitened residual and its Jacobian with respect to the target position p.
+inline double tdoaResidual(const TdoaObservation& z, const Eigen::Vector3d& p,
+                           Eigen::RowVector3d* jacobian) {
+  Eigen::RowVector3d ga;
+  Eigen::RowVector3d gb;
+  const double ra = predictRange(p, z.anchor_a, jacobian != nullptr ? &ga : nullptr);
+  const double rb = predictRange(p, z.anchor_b, jacobian != nullptr ? &gb : nullptr);
+  if (jacobian != nullptr) {
+    *jacobian = (ga - gb) / z.sigma;
+  }
+  return (ra - rb - z.difference) / z.sigma;
+}
+
+/// Analytic (||p - a|| - ||p - b|| - d) / sigma.
+class TdoaCost final : public ceres::SizedCostFunction<1, 3> {
+ public:
+  explicit TdoaCost(const TdoaObservation& z) : z_(z) {}
+  bool Evaluate(double const* const* parameters, double* residuals,
+                double** jacobians) const override {
+    const Eigen::Map<const Eigen::Vector3d> p(parameters[0]);
+    Eigen::RowVector3d j;
+    residuals[0] = tdoaResidual(z_, p, jacobians != nullptr ? &j : nullptr);
+    if (jacobians != nullptr && jacobians[0] != nullptr) {
+      Eigen::Map<Eigen::RowVector3d> out(jacobians[0]);
+      out = j;
+    }
+    return true;
+  }
+
+ private:
+  TdoaObservation z_;
+};
+
+/// Autodiff reference for TdoaCost.
+struct TdoaFunctor {
+  explicit TdoaFunctor(const TdoaObservation& z) : z_(z) {}
+  template <typename T>
+  bool operator()(const T* p, T* residual) const {
+    using std::sqrt;
+    T sa = T(0.0);
+    T sb = T(0.0);
+    for (int i = 0; i < 3; ++i) {
+      const T da = p[i] - T(z_.anchor_a[i]);
+      const T db = p[i] - T(z_.anchor_b[i]);
+      sa += da * da;
+      sb += db * db;
+    }
+    residual[0] = (sqrt(sa) - sqrt(sb) - T(z_.difference)) / T(z_.sigma);
+    return true;
+  }
+  TdoaObservation z_;
+};
+
+/// Weighs `filter`'s particles by the difference |p - a| - |p - b| of anchors `a` and `b`
+/// (tracking frame); `model` should be symmetric (one_sided false).
+MeasurementFit weighTdoa(ParticleFilter& filter, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                         double difference, const RangeLikelihood& model);
+
+}  // namespace estimation
+}  // namespace radio_follow

@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "radio_follow/estimation/range_measurement.hpp"
+
+#include <cmath>
+
+#include "radio_follow/common/angles.hpp"
+#include "radio_follow/estimation/fast_exp.hpp"
+
+namespace radio_follow {
+namespace estimation {
+namespace {
+
+/// The parts of a heavy-tailed range likelihood that do not depend on the error.
+struct RangeTerms {
+  double gauss;  ///< (1 - eps) / (sqrt(2 pi) sigma)
+  double tail;   ///< 0.9 eps / L  (one-sided) or 0.45 eps / L (symmetric)
+  double floor;  ///< 0.1 eps / (2 W)
+  double inv_sigma;
+  double inv_length;
+};
+
+RangeTerms rangeTerms(const RangeLikelihood& m) {
+  const double eps = m.outlier_share;
+  return {(1.0 - eps) / (std::sqrt(2.0 * kPi) * m.sigma),
+          (m.one_sided ? 0.9 : 0.45) * eps / m.outlier_length, 0.1 * eps / (2.0 * m.floor_width),
+          1.0 / m.sigma, 1.0 / m.outlier_length};
+}
+
+}  // namespace
+
+double RangeLikelihood::operator()(double error) const {
+  const RangeTerms k = rangeTerms(*this);
+  const double z = error * k.inv_sigma;
+  double tail = 0.0;
+  if (!one_sided) {
+    tail = k.tail * std::exp(-std::abs(error) * k.inv_length);
+  } else if (error > 0.0) {
+    tail = k.tail * std::exp(-error * k.inv_length);
+  }
+  return k.gauss * std::exp(-0.5 * z * z) + tail + k.floor;
+}
+
+void RangeLikelihood::evaluate(const Eigen::ArrayXf& error, Eigen::ArrayXf* inlier,
+                               Eigen::ArrayXf* outlier) const {
+  const RangeTerms k = rangeTerms(*this);
+  const auto tail = static_cast<float>(k.tail);
+  const auto inv_length = static_cast<float>(k.inv_length);
+  const auto floor = static_cast<float>(k.floor);
+  if (one_sided) {
+    *outlier = tail * positiveStep(error) * fastExp(-error.max(0.0f) * inv_length) + floor;
+  } else {
+    *outlier = tail * fastExp(-error.abs() * inv_length) + floor;
+  }
+  *inlier = static_cast<float>(k.gauss) *
+            fastExp(-0.5f * (error * static_cast<float>(k.inv_sigma)).square());
+}
+
+MeasurementFit weighRange(ParticleFilter& filter, const Eigen::Vector3d& module, double range,
+                          const RangeLikelihood& model) {
+  ParticleFilter::Workspace& w = filter.workspace();
+  const Eigen::Vector3f m = filter.local(module);
+  w.inlier = static_cast<float>(range) -
+             ((filter.localX() - m.x()).square() + (filter.localY() - m.y()).square() +
+              (filter.localZ() - m.z()).square())
+                 .sqrt();
+  model.evaluate(w.inlier, &w.inlier, &w.outlier);
+  return filter.applyLikelihood(w.inlier, w.outlier);
+}
+
+}  // namespace estimation
+}  // namespace radio_follow
