@@ -2,7 +2,6 @@
 #include "radio_follow/estimation/locator.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -25,7 +24,7 @@ const LocatorConfig& validated(const LocatorConfig& config) {
 Locator::Locator(const Layout& layout, const LocatorConfig& config)
     : layout_(layout),
       config_(validated(config)),
-      solver_(layout.aoa_boards.size(), config_),
+      solver_(layout.aoa_boards.size(), config_.solverEstimator()),
       particle_(layout, config_.tracker()),
       tdoa_calibration_(layout, config_.tdoa_calibration),
       ranges_(layout.twr_modules.size()),
@@ -46,17 +45,13 @@ bool Locator::setConfig(const LocatorConfig& config) {
   const bool estimator_changed = config.estimator != config_.estimator;
   // The solver estimator builds its new solver first and may throw; nothing after it does:
   // the new tuning is applied entirely or not at all.
-  const std::array<PositionEstimator*, 2> estimators{&solver_, &particle_};
-  bool kept = true;
-  for (PositionEstimator* estimator : estimators) {
-    kept = estimator->setConfig(config) && kept;
-  }
+  const bool kept = solver_.setConfig(config.solverEstimator());
+  particle_.setConfig(config.tracker());
   config_ = config;
   tdoa_calibration_.setConfig(config_.tdoa_calibration);
   if (estimator_changed) {
-    for (PositionEstimator* estimator : estimators) {
-      estimator->reset();
-    }
+    solver_.reset();
+    particle_.reset();
     return false;
   }
   return kept;

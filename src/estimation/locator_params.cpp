@@ -10,6 +10,7 @@
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/estimation/locator.hpp"
+#include "radio_follow/estimation/solver_estimator.hpp"
 
 namespace radio_follow {
 namespace estimation {
@@ -234,28 +235,34 @@ void LocatorConfig::validate() const {
           "a fraction of the distance in [0, 1)");
 }
 
-SolverConfig LocatorConfig::solver() const {
+SolverEstimatorConfig LocatorConfig::solverEstimator() const {
   const LocatorConfig& c = *this;
-  SolverConfig s;
-  s.planar = c.planar;
-  s.height = c.height;
-  s.range_loss = c.range_loss;
-  s.tdoa_loss = c.tdoa_loss;
-  s.bearing_loss = c.bearing_loss;
-  s.ceres_covariance = c.ceres_covariance;
-  s.prior_range = c.default_range;
-  return s;
-}
-
-KalmanConfig LocatorConfig::kalman() const {
-  const LocatorConfig& c = *this;
-  KalmanConfig k;
-  k.model = c.motion_model;
-  k.dims = c.planar ? 2 : 3;
-  k.process_noise = c.process_noise;
-  k.gate_probability = c.gate_probability;
-  k.max_consecutive_rejections = c.max_consecutive_rejections;
-  return k;
+  SolverEstimatorConfig e;
+  e.solver.planar = c.planar;
+  e.solver.height = c.height;
+  e.solver.range_loss = c.range_loss;
+  e.solver.tdoa_loss = c.tdoa_loss;
+  e.solver.bearing_loss = c.bearing_loss;
+  e.solver.ceres_covariance = c.ceres_covariance;
+  e.solver.prior_range = c.default_range;
+  e.kalman.model = c.motion_model;
+  e.kalman.dims = c.planar ? 2 : 3;
+  e.kalman.process_noise = c.process_noise;
+  e.kalman.gate_probability = c.gate_probability;
+  e.kalman.max_consecutive_rejections = c.max_consecutive_rejections;
+  e.initializer.planar = c.planar;
+  e.initializer.height = c.height;
+  e.initializer.default_range = c.default_range;
+  e.aoa = c.aoa;
+  e.azimuth_sigma = c.azimuth_sigma;
+  e.elevation_sigma = c.elevation_sigma;
+  e.use_elevation = c.use_elevation;
+  e.max_position_sigma = c.max_position_sigma;
+  e.max_relative_sigma = c.max_relative_sigma;
+  e.ambiguity_margin = c.ambiguity_margin;
+  e.filter_uses_solver_covariance = c.filter_uses_solver_covariance;
+  e.measurement_noise = c.measurement_noise;
+  return e;
 }
 
 ParticleTrackerConfig LocatorConfig::tracker() const {
@@ -296,14 +303,6 @@ ParticleTrackerConfig LocatorConfig::tracker() const {
   // A reflected reading's RSSI is as far off as its angle: the bearings' outlier share.
   t.rss.outlier_share = c.bearing_outlier_share;
   return t;
-}
-
-InitializerConfig LocatorConfig::initializer() const {
-  InitializerConfig i;
-  i.planar = planar;
-  i.height = height;
-  i.default_range = default_range;
-  return i;
 }
 
 }  // namespace estimation

@@ -32,10 +32,9 @@ void ParticleEstimator::reset() {
   tracker_.reset();
 }
 
-bool ParticleEstimator::setConfig(const LocatorConfig& config) {
-  config_ = config.tracker();
+void ParticleEstimator::setConfig(const ParticleTrackerConfig& config) {
+  config_ = config;
   tracker_.setConfig(config_);
-  return true;
 }
 
 LocatorEstimate ParticleEstimator::estimate(double now, const FreshMeasurements& /*fresh*/,

@@ -34,27 +34,25 @@ std::optional<Eigen::Vector3d> mirrorImage(const ObservationSet& obs, const Eige
 
 }  // namespace
 
-SolverEstimator::SolverEstimator(std::size_t board_count, const LocatorConfig& config)
+SolverEstimator::SolverEstimator(std::size_t board_count, const SolverEstimatorConfig& config)
     : board_count_(board_count),
       config_(config),
-      init_config_(config_.initializer()),
-      solver_(std::make_unique<PositionSolver>(config_.solver())),
+      solver_(std::make_unique<PositionSolver>(config_.solver)),
       selector_(board_count, config_.aoa),
-      filter_(config_.kalman()) {}
+      filter_(config_.kalman) {}
 
-bool SolverEstimator::setConfig(const LocatorConfig& config) {
+bool SolverEstimator::setConfig(const SolverEstimatorConfig& config) {
   const bool selection_changed = config.aoa.mode != config_.aoa.mode ||
                                  config.aoa.rssi_window != config_.aoa.rssi_window ||
                                  config.aoa.vote_window != config_.aoa.vote_window;
-  auto solver = std::make_unique<PositionSolver>(config.solver());
+  auto solver = std::make_unique<PositionSolver>(config.solver);
   // Nothing below throws: the new tuning is applied entirely or not at all.
   config_ = config;
   solver_ = std::move(solver);
   if (selection_changed) {
     selector_ = AoaSelector(board_count_, config_.aoa);
   }
-  init_config_ = config_.initializer();
-  return filter_.reconfigure(config_.kalman());
+  return filter_.reconfigure(config_.kalman);
 }
 
 void SolverEstimator::reset() {
@@ -80,7 +78,7 @@ void SolverEstimator::forgetSide() {
 
 bool SolverEstimator::mirrorAmbiguous(const ObservationSet& obs, const SolveResult& solution,
                                       double sigma) {
-  if (config_.ambiguity_margin <= 0.0 || !config_.planar) {
+  if (config_.ambiguity_margin <= 0.0 || !config_.solver.planar) {
     return false;
   }
   if (side_confirmed_ && (!obs.bearings.empty() || !obs.tdoas.empty())) {
@@ -128,7 +126,7 @@ LocatorEstimate SolverEstimator::estimate(double now, const FreshMeasurements& f
   if (warm_ && warm_ranged_) {
     believed = warm_;
   } else {
-    believed = trilaterate(obs.ranges, init_config_);
+    believed = trilaterate(obs.ranges, config_.initializer);
   }
   const std::vector<std::size_t> chosen = selector_.select(fresh.boards, believed);
   stats.bearings_rejected_fov += fresh.boards.size() - chosen.size();
@@ -152,7 +150,7 @@ LocatorEstimate SolverEstimator::estimate(double now, const FreshMeasurements& f
   // Is the position determined at all by what is fresh?
   const bool ranged = !obs.ranges.empty();
   const bool helpers = !obs.bearings.empty() || !obs.tdoas.empty();
-  const std::size_t full_ranges = config_.planar ? 3 : 4;
+  const std::size_t full_ranges = config_.solver.planar ? 3 : 4;
   const bool warm_usable = warm_.has_value() && warm_ranged_ == ranged;
   if (obs.empty() || (ranged && !helpers && obs.ranges.size() < full_ranges - 1) ||
       (ranged && !helpers && obs.ranges.size() < full_ranges && !warm_usable)) {
@@ -163,10 +161,10 @@ LocatorEstimate SolverEstimator::estimate(double now, const FreshMeasurements& f
   SolveResult result;
   if (warm_usable) {
     result = solver_->solve(obs, *warm_);
-  } else if (const auto guess = trilaterate(obs.ranges, init_config_)) {
+  } else if (const auto guess = trilaterate(obs.ranges, config_.initializer)) {
     result = solver_->solveCold(obs, *guess);
   } else {
-    result = solver_->solveMultiStart(obs, multiStartCandidates(obs, init_config_));
+    result = solver_->solveMultiStart(obs, multiStartCandidates(obs, config_.initializer));
   }
   stats.last_solve_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -205,7 +203,7 @@ LocatorEstimate SolverEstimator::estimate(double now, const FreshMeasurements& f
     ++stats.ambiguous;
   }
 
-  const int d = config_.planar ? 2 : 3;
+  const int d = config_.solver.planar ? 2 : 3;
   Eigen::MatrixXd r = config_.measurement_noise * Eigen::MatrixXd::Identity(d, d);
   if (config_.filter_uses_solver_covariance && result.covariance_valid) {
     r = result.covariance.topLeftCorner(d, d);
@@ -221,8 +219,8 @@ LocatorEstimate SolverEstimator::estimate(double now, const FreshMeasurements& f
   out.position.head(d) = filter_.position();
   out.velocity.head(d) = filter_.velocity();
   out.covariance.topLeftCorner(d, d) = filter_.positionCovariance();
-  if (config_.planar) {
-    out.position.z() = config_.height;
+  if (config_.solver.planar) {
+    out.position.z() = config_.solver.height;
   }
   if (!out.position.allFinite() || !out.velocity.allFinite() || !out.covariance.allFinite()) {
     ++stats.non_finite;  // never hand a NaN to a controller; the next epoch starts cold

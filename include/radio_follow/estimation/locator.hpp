@@ -52,8 +52,9 @@ class Locator {
 
   /// Applies new tuning without a restart (live tuning). Throws ParamError and keeps the
   /// old tuning when `config` is invalid or changes `mode` (2d/3d: the state's size).
-  /// The buffered measurements and statistics are kept. Every estimator gets the tuning
-  /// (PositionEstimator::setConfig): the filter keeps its track unless motion_model
+  /// The buffered measurements and statistics are kept. Every estimator gets its own part
+  /// of the tuning (LocatorConfig::solverEstimator(), tracker()): the solver's filter
+  /// keeps its track unless motion_model
   /// changes (then it restarts from the next solve); a change of the AoA selection
   /// settings restarts the board selection's RSSI history. A new `estimator` starts from
   /// no track. Returns false when an estimator was restarted.

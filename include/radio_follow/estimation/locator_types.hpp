@@ -35,7 +35,11 @@ enum class Estimator {
   kSolver,
 };
 
-/// The locator's tuning (the sensor positions come from the Layout).
+struct SolverEstimatorConfig;  // solver_estimator.hpp
+
+/// The locator's tuning, as its parameters name it (the sensor positions come from the
+/// Layout). Each estimator gets its own configuration from it (solverEstimator(),
+/// tracker()).
 struct LocatorConfig {
   Estimator estimator = Estimator::kParticle;
   bool planar = true;                               ///< 2D mode: target on the plane z = height
@@ -126,11 +130,10 @@ struct LocatorConfig {
   static const ParamTable<LocatorConfig>& table();
   /// Throws ParamError naming the first invalid field (names match the ROS parameters).
   void validate() const;
-  /// The estimators' and the initial guess's own configurations from these fields.
-  SolverConfig solver() const;
-  KalmanConfig kalman() const;
+  /// Each estimator's own configuration from these fields: the only place the
+  /// parameters are mapped onto them.
+  SolverEstimatorConfig solverEstimator() const;
   ParticleTrackerConfig tracker() const;
-  InitializerConfig initializer() const;
   /// One line per parameter that is set away from its default but that `estimator` never
   /// reads (the solver's robust losses and Kalman filter under the particle estimator,
   /// the particle filter's settings under the solver), naming it, its value and the

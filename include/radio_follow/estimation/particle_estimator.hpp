@@ -14,7 +14,7 @@ namespace estimation {
 
 /// Estimator::kParticle: every measurement at its stamp into a ParticleTracker (odometry
 /// frame when the measurements carry poses), with the opposed boards' RSSI differences
-/// when rss_direction is on. Reads LocatorConfig only through LocatorConfig::tracker().
+/// when rss_direction is on.
 class ParticleEstimator : public PositionEstimator {
  public:
   ParticleEstimator(const Layout& layout, const ParticleTrackerConfig& config);
@@ -24,9 +24,9 @@ class ParticleEstimator : public PositionEstimator {
   LocatorEstimate estimate(double now, const FreshMeasurements& fresh, LocatorEstimate partial,
                            LocatorStats& stats) override;
   void reset() override;
-  /// Always true: a new particle count restarts the tracker inside
-  /// ParticleTracker::setConfig, which does not report it.
-  bool setConfig(const LocatorConfig& config) override;
+  /// New validated tuning of the same mode; keeps the track unless the particle count or
+  /// the motion model changes (ParticleTracker::setConfig, which does not report it).
+  void setConfig(const ParticleTrackerConfig& config);
 
   const ParticleTracker& tracker() const { return tracker_; }
 

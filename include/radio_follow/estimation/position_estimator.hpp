@@ -32,11 +32,10 @@ struct FreshMeasurements {
 /// Locator keeps the measurements (slots, freshness, plausibility, calibration, the
 /// statistics of refused inputs) and hands each estimator what it needs.
 ///
-/// The Locator holds one estimator of each kind and uses the configured one; all of them
-/// get every setConfig, and reset() when the clock jumps back or the estimator changes.
-/// Each keeps what it reads of LocatorConfig in its own form (the particle estimator its
-/// ParticleTrackerConfig, the solver estimator the whole LocatorConfig, whose fields it
-/// reads throughout).
+/// The Locator holds one estimator of each kind and uses the configured one; each has
+/// its own configuration (ParticleTrackerConfig, SolverEstimatorConfig), which the
+/// Locator makes from LocatorConfig and hands to every estimator on each change of
+/// tuning, and reset() when the clock jumps back or the estimator changes.
 class PositionEstimator {
  public:
   virtual ~PositionEstimator() = default;
@@ -54,9 +53,6 @@ class PositionEstimator {
                                    LocatorEstimate partial, LocatorStats& stats) = 0;
   /// Forgets the track (keeps the tuning and the counters of its parts).
   virtual void reset() = 0;
-  /// Applies new, validated tuning of the same mode (2d/3d); keeps the track where it
-  /// can. Returns false when the track restarted.
-  virtual bool setConfig(const LocatorConfig& config) = 0;
 };
 
 }  // namespace estimation

@@ -15,14 +15,35 @@
 namespace radio_follow {
 namespace estimation {
 
+/// The solver estimator's tuning. Made by LocatorConfig::solverEstimator() from the
+/// locator's parameters, which hold every default (the zeros below are none).
+struct SolverEstimatorConfig {
+  SolverConfig solver;  ///< also the mode (planar) and the planar height
+  KalmanConfig kalman;
+  InitializerConfig initializer;
+  AoaSelectorConfig aoa;
+  /// The bearings' sigmas, rad, and whether their elevations count.
+  double azimuth_sigma = 0.0;
+  double elevation_sigma = 0.0;
+  bool use_elevation = true;
+  /// OK while the worst axis's sigma is within the larger of these: m, and a fraction of
+  /// the distance.
+  double max_position_sigma = 0.0;
+  double max_relative_sigma = 0.0;
+  /// The mirror test's margin, 0.5 chi-square units; 0: no test.
+  double ambiguity_margin = 0.0;
+  /// The filter's measurement noise: the solver's covariance, else measurement_noise * I
+  /// (m^2).
+  bool filter_uses_solver_covariance = true;
+  double measurement_noise = 0.0;
+};
+
 /// Estimator::kSolver: per update, the boards that may speak (AoaSelector), a Ceres solve
 /// of the newest measurement of each sensor (warm, cold or multi-start), the mirror test,
-/// and a Kalman filter in the robot frame. Keeps the whole LocatorConfig: it reads the
-/// sigmas, the status thresholds and the filter's settings from it, and builds its parts
-/// with LocatorConfig::solver(), kalman() and initializer().
+/// and a Kalman filter in the robot frame.
 class SolverEstimator : public PositionEstimator {
  public:
-  SolverEstimator(std::size_t board_count, const LocatorConfig& config);
+  SolverEstimator(std::size_t board_count, const SolverEstimatorConfig& config);
 
   /// Measurements are read from the Locator's fresh lists at each update: nothing to do.
   void add(const TrackedMeasurement& /*m*/, double /*rssi*/) override {}
@@ -32,9 +53,11 @@ class SolverEstimator : public PositionEstimator {
   /// Forgets the filter's track, the warm start and the mirror test's side; keeps the
   /// board selection's RSSI history and votes.
   void reset() override;
-  /// Rebuilds the solver (it owns the losses); a change of the AoA selection settings
-  /// restarts the selection's RSSI history. False when the filter restarted (motion_model).
-  bool setConfig(const LocatorConfig& config) override;
+  /// New validated tuning of the same mode. Rebuilds the solver (it owns the losses); a
+  /// change of the AoA selection settings restarts the selection's RSSI history. False
+  /// when the filter restarted (motion_model). May throw (the solver's losses) before
+  /// changing anything.
+  bool setConfig(const SolverEstimatorConfig& config);
 
   const KalmanFilter& filter() const { return filter_; }
 
@@ -46,8 +69,7 @@ class SolverEstimator : public PositionEstimator {
   void forgetSide();
 
   std::size_t board_count_;
-  LocatorConfig config_;
-  InitializerConfig init_config_;
+  SolverEstimatorConfig config_;
   std::unique_ptr<PositionSolver> solver_;  // rebuilt by setConfig (it owns the losses)
   AoaSelector selector_;
   KalmanFilter filter_;
