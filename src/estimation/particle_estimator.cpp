@@ -45,7 +45,7 @@ LocatorEstimate ParticleEstimator::estimate(double now, const FreshMeasurements&
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   ++stats.solves;
   // The filter weighs every bearing; those of boards whose field of view does not contain
-  // the estimate count at a sixth of their weight (particle_filter.hpp): "not used" for the
+  // the estimate count at a sixth of their weight (bearing_measurement.hpp): "not used" for the
   // markers and diagnostics, as the solver's selection would say.
   out.bearings_used.clear();
   out.sources = track.sources;
