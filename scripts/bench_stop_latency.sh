@@ -2,9 +2,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # Stop latency of velocity_controller with the shipped parameter files: a range below
 # safe_distance in -> the first zero cmd_vel out, while estimates arrive at 50 Hz and 10 Hz
-# and every estimate asks TF for an odometry transform that does not exist (the default
-# odom_frame on a robot without odometry: the review's worst case). Baseline in the same
-# run: the round trip through a trivial roscpp relay. Usage: bash scripts/bench_stop_latency.sh [trials]
+# on the main queue. Baseline in the same run: the round trip through a trivial roscpp
+# relay. Usage: bash scripts/bench_stop_latency.sh [trials]
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 export PATH="/usr/bin:$PATH"

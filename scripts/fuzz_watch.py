@@ -26,8 +26,9 @@ SKIPPED_TOPICS = {"/clock"}
 
 # Output fields where a non-finite value is a documented meaning, by message type:
 ALLOWED_NON_FINITE = {
-    # msg/TargetEstimate.msg: solver_cost "NaN when no solve ran" (particle estimator).
-    "radio_follow/TargetEstimate": {"solver_cost"},
+    # msg/TargetEstimate.msg: solver_cost "NaN when no solve ran" (particle estimator),
+    # odom_velocity "NaN when the estimator does not track it" (solver estimator).
+    "radio_follow/TargetEstimate": {"solver_cost", "odom_velocity"},
     # msg/AoaBearing.msg: rssi_second "NaN when not reported".
     "radio_follow/AoaBearing": {"rssi_second"},
     # msg/UwbRange.msg: anchor_position "NaN when the line did not report it".

@@ -16,25 +16,5 @@ const ParamTable<ControllerWiring>& ControllerWiring::table() {
   return t;
 }
 
-const ParamTable<TrackParams>& TrackParams::table() {
-  using P = TrackParams;
-  static const ParamTable<P> t =
-      ParamTable<P>()
-          .add("odom_frame", &P::odom_frame, "",
-               "Where estimates are placed to track the target; empty = no track.")
-          .add("tf_timeout", &P::tf_timeout, "s",
-               "The newest transform serves an estimate's stamp within this.",
-               Range{0.0, 1.0, false, true});
-  return t;
-}
-
-void TrackParams::load(const ParamSource& source) {
-  table().load(source, *this);
-}
-
-void TrackParams::validate() const {
-  table().check(*this);
-}
-
 }  // namespace control
 }  // namespace radio_follow

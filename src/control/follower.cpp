@@ -17,10 +17,8 @@ EstimateUse Follower::onEstimate(double stamp, double now, TargetStatus status, 
   return gate_.accept(status) ? EstimateUse::kTrackPoint : EstimateUse::kHeard;
 }
 
-bool Follower::addTrackPoint(double stamp, const Eigen::Vector2d& robot,
-                             const Eigen::Vector2d& target) {
-  track_.add(stamp, robot, target);
-  return law_ != nullptr && law_->addTrackPoint(target);
+bool Follower::addTrackPoint(double stamp, const TrackPoint& point) {
+  return track_.add(stamp, point) && law_ != nullptr && law_->addTrackPoint(point.target);
 }
 
 PipelineResult Follower::tick(double now, double dt, const std::optional<Pose2>& robot) {

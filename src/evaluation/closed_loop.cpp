@@ -8,6 +8,7 @@
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/common/yaml_params.hpp"
+#include "radio_follow/estimation/odometry_estimate.hpp"
 #include "radio_follow/evaluation/calibration_run.hpp"
 #include "radio_follow/evaluation/simulated_scan.hpp"
 #include "radio_follow/evaluation/simulated_tdoa.hpp"
@@ -42,8 +43,8 @@ void ClosedLoopConfig::validate() const {
   require(rateOk(controller_rate), "controller rate", controller_rate, "a rate in (0, 1000] Hz");
   law.validate();
   path.validate();
-  require(std::isfinite(tf_timeout) && tf_timeout >= 0.0 && tf_timeout < 1.0, "~tf_timeout",
-          tf_timeout, "a timeout in [0, 1) seconds");
+  require(std::isfinite(tf_tolerance) && tf_tolerance >= 0.0 && tf_tolerance <= 1.0,
+          "~tf_tolerance", tf_tolerance, "a tolerance in [0, 1] seconds");
   require(rateOk(evaluator_rate), "evaluator rate", evaluator_rate, "a rate in (0, 1000] Hz");
   if (locator_layout) {
     // The locator hears the world's sensors by ID: a calibrated layout of the same robot.
@@ -124,6 +125,7 @@ ClosedLoopConfig loadClosedLoopConfig(const std::string& dir, const std::string&
   c.locator = locator_node.locator;
   c.locator_rate = locator_node.rate;
   c.locator_odometry = !locator_node.odom_frame.empty();
+  c.tf_tolerance = locator_node.tf_tolerance;
   locator.requireAllKnown();
 
   // follower.launch: the controller's files in the same order.
@@ -141,13 +143,11 @@ ClosedLoopConfig loadClosedLoopConfig(const std::string& dir, const std::string&
   control::ControllerWiring::table().load(p, wiring);
   c.controller_rate = wiring.rate;
   c.law = control::loadVelocityLawParams(p, c.pipeline);
-  control::TrackParams track;
-  track.load(p);
-  c.track_in_odometry = !track.odom_frame.empty();
-  c.tf_timeout = track.tf_timeout;
   if (controller == FollowController::kPathFollower) {
     c.path.load(p);
+    // The node's frames: the lockstep loop has one odometry frame and one robot.
     p.allow("base_frame");
+    p.allow("odom_frame");
   }
   for (const char* key : {"range_topics", "law"}) {  // the node's topics and live tuning
     p.allow(key);
@@ -313,9 +313,9 @@ std::optional<Pose2> ClosedLoop::poseAt(double t) const {
     return std::nullopt;
   }
   if (t >= poses_.back().t) {
-    // TF has nothing newer: the newest transform, when it is within tf_timeout.
-    return t - poses_.back().t <= config_.tf_timeout ? std::optional<Pose2>(poses_.back().pose)
-                                                     : std::nullopt;
+    // TF has nothing newer: the newest transform, when it is within tf_tolerance.
+    return t - poses_.back().t <= config_.tf_tolerance ? std::optional<Pose2>(poses_.back().pose)
+                                                       : std::nullopt;
   }
   if (t < poses_.front().t) {
     return std::nullopt;
@@ -341,19 +341,23 @@ void ClosedLoop::runLocator(double now) {
   estimate_stamp_ = estimate.status == TargetStatus::kLost ? now : std::max(0.0, estimate.stamp);
   const double range = estimate.position.head<2>().norm();
   const double bearing = std::atan2(estimate.position.y(), estimate.position.x());
-  // The controller's estimate callback: the follower core, then the odometry frame.
+  // The controller's estimate callback: the follower core, then the estimate's own
+  // odometry-frame part (TargetEstimate's odom_* fields, filled as locator_node fills them).
   const control::EstimateUse use = follower_.onEstimate(
       estimate_stamp_, now, estimate.status, range, bearing,
       polarSpread(estimate.position.head<2>(), estimate.covariance.topLeftCorner<2, 2>()),
       estimate.hypotheses);
-  if (use == control::EstimateUse::kTrackPoint && config_.track_in_odometry) {
-    if (const std::optional<Pose2> robot = poseAt(estimate_stamp_)) {
-      const double c = std::cos(robot->yaw);
-      const double s = std::sin(robot->yaw);
-      const Eigen::Vector2d local = estimate.position.head<2>();
-      const Eigen::Vector2d in_odom(robot->x + c * local.x() - s * local.y(),
-                                    robot->y + s * local.x() + c * local.y());
-      follower_.addTrackPoint(estimate_stamp_, robot->position(), in_odom);
+  if (use == control::EstimateUse::kTrackPoint) {
+    const std::optional<estimation::OdometryEstimate> odom =
+        estimation::inOdometry(estimate, [this](double t) { return odometryAt(t); });
+    if (odom) {
+      std::optional<Eigen::Vector2d> velocity;
+      if (odom->velocity) {
+        velocity = odom->velocity->head<2>();
+      }
+      if (const auto point = control::trackPoint(odom->robot, odom->position.head<2>(), velocity)) {
+        follower_.addTrackPoint(estimate_stamp_, *point);
+      }
     }
   }
   estimate_ = std::move(estimate);

@@ -187,6 +187,7 @@ TEST(Locator, EstimatesTheTargetAndIgnoresTheBoardBehind) {
     EXPECT_NEAR(msg->bearing, std::atan2(p.y(), p.x()), 1e-9);
     EXPECT_EQ(msg->sources,
               radio_follow::TargetEstimate::SOURCE_TWR | radio_follow::TargetEstimate::SOURCE_AOA);
+    EXPECT_EQ(msg->odom_frame, "") << "no odometry TF yet: no odometry-frame part";
   }
   const Eigen::Vector3d mean = sum / static_cast<double>(estimates.size());
   EXPECT_NEAR(mean.x(), kTruth.x(), kTolerance);
@@ -374,6 +375,29 @@ TEST(Locator, ARangeStampedAtTheEndOfTimeIsDroppedAndTrackingGoesOn) {
   ros::WallDuration(1.0).sleep();
   // Alive and still tracking: OK estimates keep coming.
   EXPECT_TRUE(waitForStatus(radio_follow::TargetEstimate::STATUS_OK, 10.0));
+
+  // With odometry each estimate carries its odometry-frame part, the particle filter's own
+  // state (odom = base_link here): the same position, a standing person's ground velocity.
+  const EstimateLog log;
+  ASSERT_TRUE(radio_follow_test::waitFor(
+      [&] {
+        const auto l = log.get();
+        return std::any_of(l.begin(), l.end(), [](const auto& m) {
+          return m->status == radio_follow::TargetEstimate::STATUS_OK && m->odom_frame == "odom";
+        });
+      },
+      15.0));
+  for (const auto& m : log.get()) {
+    if (m->odom_frame.empty()) {
+      continue;  // the track restarted in the odometry frame: no estimate from it yet
+    }
+    EXPECT_EQ(m->odom_frame, "odom");
+    EXPECT_NEAR(m->odom_position.x, m->position.x, 1e-6);
+    EXPECT_NEAR(m->odom_position.y, m->position.y, 1e-6);
+    EXPECT_NEAR(m->odom_robot.x, 0.0, 1e-9);
+    EXPECT_NEAR(m->odom_robot.y, 0.0, 1e-9);
+    EXPECT_LT(std::hypot(m->odom_velocity.x, m->odom_velocity.y), 1.0);
+  }
 }
 
 TEST(Locator, ReportsLostWhenTheDriversStop) {

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Feeds the running path_follower a person walking ahead and to the left (after half a
 // second of a DEGRADED estimate behind the robot, as a cold start may give), checks the
-// stored path (nav_msgs/Path in odom, without the DEGRADED start), the forward command
-// and status, then an estimate in an unknown frame (no odometry transform) for the
-// straight fallback.
+// stored path (nav_msgs/Path in odom, from the estimates' own odometry-frame part, without
+// the DEGRADED start), the forward command and status, then estimates tracked in another
+// odometry frame and estimates without one for the straight fallback.
 #include <gtest/gtest.h>
 #include <nav_msgs/Path.h>
 #include <ros/ros.h>
@@ -30,9 +30,10 @@ class Feeder {
         range_pub_(nh.advertise<radio_follow::UwbRanges>("uwb_ranges", 10)),
         timer_(nh.createTimer(ros::Duration(0.05), &Feeder::tick, this)) {}
 
-  void setFrame(const std::string& frame) {
+  /// The locator's odometry frame the estimates carry ("": none).
+  void setOdomFrame(const std::string& frame) {
     std::lock_guard<std::mutex> lock(mutex_);
-    frame_ = frame;
+    odom_frame_ = frame;
   }
   std::atomic<double> range{3.0};
 
@@ -43,10 +44,7 @@ class Feeder {
     const double s = step_ / 40.0;
     radio_follow::TargetEstimate e;
     e.header.stamp = ros::Time::now();
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      e.header.frame_id = frame_;
-    }
+    e.header.frame_id = "base_link";
     e.position.x = 2.0 + s;
     e.position.y = s;
     e.range = std::hypot(e.position.x, e.position.y);
@@ -61,6 +59,14 @@ class Feeder {
       e.bearing = std::atan2(e.position.y, e.position.x);
       e.status = radio_follow::TargetEstimate::STATUS_DEGRADED;
     }
+    {
+      // The robot stands at the odom origin (the static TF below): the estimate as it is.
+      std::lock_guard<std::mutex> lock(mutex_);
+      e.odom_frame = odom_frame_;
+    }
+    e.odom_position = e.position;
+    e.odom_velocity.x = step_ < 40 ? 0.5 : 0.0;
+    e.odom_velocity.y = step_ < 40 ? 0.5 : 0.0;
     estimate_pub_.publish(e);
     radio_follow::UwbRanges r;
     r.header.stamp = e.header.stamp;
@@ -71,7 +77,7 @@ class Feeder {
   }
 
   std::mutex mutex_;
-  std::string frame_ = "base_link";
+  std::string odom_frame_ = "odom";
   int step_ = 0;
   ros::Publisher estimate_pub_;
   ros::Publisher range_pub_;
@@ -129,12 +135,19 @@ TEST(PathFollower, StoresPathFollowsAndFallsBack) {
   EXPECT_TRUE(isZero(rec.lastCmd()));
   feeder.range = 3.0;
 
-  // No transform from the estimate's frame: straight-line fallback, said in the status.
-  feeder.setFrame("frame_without_tf");
-  ASSERT_TRUE(waitFor(
-      [&] { return rec.lastStatus().text == "No odometry, driving straight to the target."; },
-      10.0))
+  // Estimates tracked in another frame than the path's: straight-line fallback, said in
+  // the status; back on the path with the path's frame again.
+  const auto straight = [&] {
+    return rec.lastStatus().text == "No odometry, driving straight to the target.";
+  };
+  feeder.setOdomFrame("map");
+  ASSERT_TRUE(waitFor(straight, 10.0)) << "last status: " << rec.lastStatus().text;
+  feeder.setOdomFrame("odom");
+  ASSERT_TRUE(waitFor([&] { return rec.lastStatus().text == "Following the path."; }, 10.0))
       << "last status: " << rec.lastStatus().text;
+  // The locator has no odometry (no odometry-frame part): the same fallback.
+  feeder.setOdomFrame("");
+  ASSERT_TRUE(waitFor(straight, 10.0)) << "last status: " << rec.lastStatus().text;
   EXPECT_TRUE(
       waitFor([&] { return rec.lastStatus().state == FollowerStatus::STATE_FOLLOWING; }, 2.0))
       << "status " << int(rec.lastStatus().state);  // announced once settled (kStatusSettleTime)

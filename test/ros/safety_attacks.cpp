@@ -5,6 +5,7 @@
 #include <ros/ros.h>
 
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <mutex>
@@ -32,8 +33,9 @@ class Feeder {
   std::atomic<bool> send_estimates{true};
   /// What the range timer sends, m.
   std::atomic<double> range_value{4.0};
-  /// What the timer sends: a far OK target, an AMBIGUOUS one, or an all-zero message.
-  enum class Kind { kFarOk, kAmbiguous, kAllZero };
+  /// What the timer sends: a far OK target, an AMBIGUOUS one, an all-zero message, a far
+  /// OK target whose odometry-frame part is non-finite, or one without a ground velocity.
+  enum class Kind { kFarOk, kAmbiguous, kAllZero, kNonFiniteOdometry, kUnknownVelocity };
   std::atomic<Kind> kind{Kind::kFarOk};
 
   void publishEstimate(const ros::Time& stamp) {
@@ -46,6 +48,14 @@ class Feeder {
       e.bearing = 0.0;
       e.status = kind == Kind::kAmbiguous ? radio_follow::TargetEstimate::STATUS_AMBIGUOUS
                                           : radio_follow::TargetEstimate::STATUS_OK;
+    }
+    if (kind == Kind::kNonFiniteOdometry || kind == Kind::kUnknownVelocity) {
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      e.odom_frame = "odom";
+      e.odom_position.x = kind == Kind::kNonFiniteOdometry ? nan : 4.0;
+      e.odom_velocity.x = nan;  // the solver estimator's: not tracked
+      e.odom_velocity.y = nan;
+      e.odom_velocity.z = nan;
     }
     estimate_pub_.publish(e);
   }
@@ -198,6 +208,34 @@ TEST_F(SafetyAttacks, AmbiguousEstimatesStopAndSaySo) {
       << recorder_->lastStatus().text;
 }
 
+// An estimate whose odometry-frame part no odometry can hold (NaN target position) cannot
+// be trusted: the robot stops, and the node lives on to follow good estimates again.
+TEST_F(SafetyAttacks, NonFiniteOdometryStops) {
+  feeder_->kind = Feeder::Kind::kNonFiniteOdometry;
+  ASSERT_TRUE(waitFor([&] { return isZero(recorder_->lastCmd()); }, 1.0))
+      << "still driving on estimates with a NaN odometry position";
+  EXPECT_TRUE(staysStopped(*recorder_, 1.0));
+  EXPECT_TRUE(waitFor(
+      [&] { return recorder_->lastStatus().state == FollowerStatus::STATE_TARGET_LOST; }, 2.0))
+      << "status " << int(recorder_->lastStatus().state);
+  feeder_->kind = Feeder::Kind::kFarOk;
+  EXPECT_TRUE(waitFor([&] { return recorder_->lastCmd().linear.x > 0.2; }, 10.0));
+}
+
+// The solver estimator's odometry-frame part has no ground velocity (NaN): the robot
+// follows without a feed-forward, and no NaN reaches cmd_vel.
+TEST_F(SafetyAttacks, UnknownGroundVelocityFollowsWithoutNaN) {
+  feeder_->kind = Feeder::Kind::kUnknownVelocity;
+  const int mark = recorder_->cmdCount();
+  ros::WallDuration(1.0).sleep();
+  const auto cmds = recorder_->cmdsSince(mark);
+  ASSERT_FALSE(cmds.empty());
+  for (const auto& c : cmds) {
+    ASSERT_TRUE(std::isfinite(c.linear.x) && std::isfinite(c.angular.z));
+  }
+  EXPECT_GT(recorder_->lastCmd().linear.x, 0.2);
+}
+
 // A range below safe_distance that arrives late (stamped 2 s ago, older than
 // range_timeout): before the fix the robot stopped one tick in three and the status
 // flapped "Too close" / "Following".
@@ -221,10 +259,10 @@ TEST_F(SafetyAttacks, NanRangeStops) {
   EXPECT_TRUE(staysStopped(*recorder_, 0.8));
 }
 
-// The immediate stop from the range callback while estimates arrive at 50 Hz and every
-// one of them asks TF for an odometry transform that does not exist: the stop must not
-// queue behind them. Functional check only (the zero arrives, the robot stays stopped);
-// the latency itself is measured by scripts/bench_stop_latency.sh, not asserted here.
+// The immediate stop from the range callback while estimates arrive at 50 Hz on the main
+// queue: the stop must not queue behind them. Functional check only (the zero arrives,
+// the robot stays stopped); the latency itself is measured by
+// scripts/bench_stop_latency.sh, not asserted here.
 TEST_F(SafetyAttacks, ShortRangeStopsUnderEstimateLoad) {
   feeder_->publishRange(ros::Time::now(), 1.0);
   ASSERT_TRUE(waitFor([&] { return isZero(recorder_->lastCmd()); }, 0.5));

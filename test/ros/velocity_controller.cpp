@@ -1,13 +1,18 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Drives the running velocity_controller through enable -> follow -> too close ->
-// resume -> target lost -> disable, checking cmd_vel and status at each step.
+// resume -> target lost -> disable, checking cmd_vel and status at each step; then the
+// speed feed-forward from the estimate's own odometry-frame velocity (no TF runs here).
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 #include <std_msgs/Bool.h>
 #include <std_srvs/SetBool.h>
 
 #include <atomic>
+#include <cmath>
+#include <limits>
 #include <mutex>
+#include <numeric>
+#include <vector>
 
 #include "controller_test_utils.hpp"
 #include "radio_follow/TargetEstimate.h"
@@ -36,6 +41,12 @@ class Feeder {
   Feeder& operator=(const Feeder&) = delete;
 
   std::atomic<double> range{4.0};
+  /// Where the estimate puts the target, m ahead.
+  std::atomic<double> estimate_range{4.0};
+  /// The estimate's odometry-frame part: the person walks straight away at this speed
+  /// (m/s); NaN: the locator tracks no ground velocity (the solver estimator).
+  std::atomic<bool> with_odometry{false};
+  std::atomic<double> walking_speed{0.0};
   std::atomic<bool> send_estimates{true};
   std::atomic<bool> send_ranges{true};
 
@@ -50,10 +61,16 @@ class Feeder {
       radio_follow::TargetEstimate e;
       e.header.stamp = now;
       e.header.frame_id = "base_link";
-      e.position.x = 4.0;
-      e.range = 4.0;  // the estimate always claims the target is far away
+      e.position.x = estimate_range;
+      e.range = estimate_range;  // far away, unless a test moves it
       e.bearing = 0.0;
       e.status = radio_follow::TargetEstimate::STATUS_OK;
+      if (with_odometry) {
+        e.odom_frame = "odom";
+        e.odom_robot.x = 10.0;  // odom is base_link shifted by 10 m
+        e.odom_position.x = 10.0 + estimate_range;
+        e.odom_velocity.x = walking_speed;
+      }
       estimate_pub_.publish(e);
     }
     if (send_ranges) {
@@ -140,6 +157,44 @@ TEST(VelocityController, SafetyLayerAroundFollowing) {
       waitFor([&] { return rec.lastStatus().state == FollowerStatus::STATE_DISABLED; }, 5.0));
   ros::WallDuration(0.2).sleep();
   EXPECT_TRUE(isZero(rec.lastCmd()));
+}
+
+// The person is 0.1 m beyond the follow distance and walks away: the feed-forward is the
+// locator's ground velocity as the estimate carries it. Without one (NaN: the solver
+// estimator) there is none, and nothing non-finite reaches cmd_vel.
+TEST(VelocityController, FeedForwardIsTheEstimatesGroundVelocity) {
+  ros::NodeHandle nh;
+  radio_follow_test::ControllerRecorder rec(nh, "velocity_controller/status");
+  Feeder feeder(nh);
+  ros::ServiceClient enable =
+      nh.serviceClient<std_srvs::SetBool>("velocity_controller/set_enabled");
+  ASSERT_TRUE(enable.waitForExistence(ros::Duration(10.0)));
+  std_srvs::SetBool on;
+  on.request.data = true;
+  ASSERT_TRUE(enable.call(on));
+  feeder.estimate_range = 1.7;  // follow_distance 1.6
+  feeder.with_odometry = true;
+  const auto mean_linear = [&](double seconds) {
+    ros::WallDuration(1.0).sleep();  // the rate limits settle
+    const int mark = rec.cmdCount();
+    ros::WallDuration(seconds).sleep();
+    double sum = 0.0;
+    const auto cmds = rec.cmdsSince(mark);
+    for (const auto& c : cmds) {
+      EXPECT_TRUE(std::isfinite(c.linear.x) && std::isfinite(c.angular.z));
+      sum += c.linear.x;
+    }
+    return cmds.empty() ? std::numeric_limits<double>::quiet_NaN() : sum / cmds.size();
+  };
+  feeder.walking_speed = 0.0;
+  const double standing = mean_linear(1.0);
+  feeder.walking_speed = 0.8;
+  const double walking = mean_linear(1.0);
+  feeder.walking_speed = std::numeric_limits<double>::quiet_NaN();
+  const double unknown = mean_linear(1.0);
+  EXPECT_LT(standing, 0.3);
+  EXPECT_GT(walking, standing + 0.4) << "standing " << standing;
+  EXPECT_LT(unknown, walking - 0.4) << "walking " << walking;
 }
 
 }  // namespace

@@ -66,6 +66,15 @@ inline bool plausibleOdometryCoordinate(double c) {
   return std::isfinite(c) && std::abs(c) <= kMaxOdometryCoordinate;
 }
 
+/// Largest ground speed of a followed person, m/s: a sprinter's; a tracked velocity
+/// beyond it is no person's.
+constexpr double kMaxTargetSpeed = 12.0;
+
+/// A target's ground speed, m/s: finite, >= 0 and <= kMaxTargetSpeed.
+inline bool plausibleTargetSpeed(double speed) {
+  return std::isfinite(speed) && speed >= 0.0 && speed <= kMaxTargetSpeed;
+}
+
 /// A received signal strength, dBm: finite and in [kMinRssi, kMaxRssi].
 inline bool plausibleRssi(double dbm) {
   return std::isfinite(dbm) && dbm >= kMinRssi && dbm <= kMaxRssi;

@@ -3,7 +3,6 @@
 
 #include <string>
 
-#include "radio_follow/common/param_source.hpp"
 #include "radio_follow/common/param_table.hpp"
 
 namespace radio_follow {
@@ -20,19 +19,6 @@ struct ControllerWiring {
   std::string layout_file;
 
   static const ParamTable<ControllerWiring>& table();
-};
-
-/// Where the velocity and path controllers place the locator's estimates to track the
-/// target's motion (the speed feed-forward, the path follower's path).
-struct TrackParams {
-  std::string odom_frame = "odom";  ///< empty: no track (no feed-forward), no TF needed
-  /// An estimate newer than the newest odometry pose uses that pose when it is at most
-  /// this much newer, s.
-  double tf_timeout = 0.05;
-
-  static const ParamTable<TrackParams>& table();
-  void load(const ParamSource& source);
-  void validate() const;
 };
 
 }  // namespace control

@@ -30,7 +30,7 @@ struct TargetPolar {
   /// The locator holds a second hypothesis: the person may be at the mirror image.
   bool mirror = false;
   /// The target's ground speed away from the robot along the line of sight, m/s
-  /// (negative: walking towards it); 0 when unknown (no odometry).
+  /// (negative: walking towards it); 0 when unknown (no odometry, the solver estimator).
   double receding_speed = 0.0;
   /// Smallest fresh (calibrated) module range minus safe_distance, m; +inf when no
   /// range is watched.
@@ -45,8 +45,8 @@ struct FollowInput {
   std::optional<TargetPolar> target;
   /// The robot in the odometry frame; nullopt when the controller does not know it.
   std::optional<Pose2> robot;
-  /// The target's ground speed from its track in the odometry frame (TargetTrack), m/s;
-  /// nullopt without enough track points.
+  /// The target's ground speed, the locator's in the odometry frame (TargetTrack), m/s;
+  /// nullopt when unknown (no odometry, the solver estimator, no recent track point).
   std::optional<double> walking_speed;
 };
 

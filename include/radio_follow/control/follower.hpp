@@ -11,7 +11,7 @@
 #include "radio_follow/control/follow_inputs.hpp"
 #include "radio_follow/control/follow_law.hpp"
 #include "radio_follow/control/follower_state.hpp"
-#include "radio_follow/control/target_motion.hpp"
+#include "radio_follow/control/target_track.hpp"
 #include "radio_follow/control/velocity_law.hpp"
 
 namespace radio_follow {
@@ -21,14 +21,15 @@ namespace control {
 enum class EstimateUse {
   kRefused,     ///< stamped in the future: the robot stops, nothing else is kept
   kHeard,       ///< the newest estimate, not a track point
-  kTrackPoint,  ///< also a track point: place it in odometry and call addTrackPoint()
+  kTrackPoint,  ///< also a track point: hand its odometry-frame part to addTrackPoint()
 };
 
 /// The follower core that every controller node and the lockstep closed loop run: the
 /// command pipeline (safety stop, scan gate, limits), the newest estimate, the target's
-/// track in the odometry frame and the tick (the verdict, the law, the verdict again at
-/// sending, the limits). Clock-free: every call carries its times (s, one clock).
-/// Not thread-safe: a node with a separate safety thread holds one lock around it.
+/// track in the odometry frame (the locator's own, TargetTrack) and the tick (the verdict,
+/// the law, the verdict again at sending, the limits). Clock-free: every call carries its
+/// times (s, one clock). Not thread-safe: a node with a separate safety thread holds one
+/// lock around it.
 class Follower {
  public:
   /// `params` validated by the caller. The law is set before the first tick.
@@ -46,9 +47,11 @@ class Follower {
   bool onEstimate(double stamp, double now, EstimateQuality quality) {
     return pipeline_.onEstimate(stamp, now, quality);
   }
-  /// The track point of the newest estimate: the target at `target` seen by the robot at
-  /// `robot` (odometry frame, m) at `stamp`. True when the law kept it.
-  bool addTrackPoint(double stamp, const Eigen::Vector2d& robot, const Eigen::Vector2d& target);
+  /// The track point of the newest estimate, stamped `stamp`: the locator's estimate in the
+  /// odometry frame (trackPoint()). Its velocity is the speed feed-forward's, its position
+  /// goes to the law. True when the law kept it; false, and nothing kept, for a point
+  /// older than the track's newest.
+  bool addTrackPoint(double stamp, const TrackPoint& point);
 
   /// One controller tick at `now`, `dt` s after the previous: the safety verdict, the law
   /// (only when the robot may move) and the pipeline. `robot` is the robot's odometry

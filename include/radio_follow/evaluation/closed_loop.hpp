@@ -15,7 +15,6 @@
 #include "radio_follow/control/follow_metrics.hpp"
 #include "radio_follow/control/follower.hpp"
 #include "radio_follow/control/path_follower.hpp"
-#include "radio_follow/control/target_motion.hpp"
 #include "radio_follow/control/velocity_law.hpp"
 #include "radio_follow/estimation/locator.hpp"
 #include "radio_follow/estimation/locator_node_params.hpp"
@@ -66,17 +65,14 @@ struct ClosedLoopConfig {
   /// The locator node's odom_frame is set: measurements carry the robot's odometry pose
   /// (the loop's TF), the particle estimator tracks in the odometry frame.
   bool locator_odometry = true;
+  /// The locator node's tf_tolerance: a stamp newer than the newest odometry pose is
+  /// placed with that pose when it is at most this much newer, s.
+  double tf_tolerance = estimation::LocatorNodeParams().tf_tolerance;
   FollowController controller = FollowController::kVelocity;
   control::CommandPipelineParams pipeline;
   double controller_rate = control::ControllerWiring().rate;  ///< Hz
   control::VelocityLawParams law;
   control::PathFollowParams path;
-  /// The controller's `odom_frame` is set: it places the estimates in the odometry frame
-  /// (the target's track: the speed feed-forward, the path follower's path).
-  bool track_in_odometry = true;
-  /// The controller's tf_timeout: an estimate newer than the newest odometry pose is
-  /// placed with that pose when it is at most this much newer, s.
-  double tf_timeout = control::TrackParams().tf_timeout;
   control::FollowSettings metrics;
   double evaluator_rate = control::FollowEvaluatorParams().rate;  ///< Hz, as the evaluator samples
   std::vector<SensorOutage> outages;

@@ -35,6 +35,20 @@ control::EstimateQuality estimateQuality(const TargetEstimate& estimate) {
                                plausibleCoordinate(p.z))) {
     return control::EstimateQuality::kLost;
   }
+  // The odometry-frame part, when there is one: positions a robot's odometry can hold, a
+  // velocity unknown (NaN, the solver estimator) or a person's.
+  if (!estimate.odom_frame.empty()) {
+    const auto odometry = [](const geometry_msgs::Point& q) {
+      return plausibleOdometryCoordinate(q.x) && plausibleOdometryCoordinate(q.y) &&
+             plausibleOdometryCoordinate(q.z);
+    };
+    const auto& v = estimate.odom_velocity;
+    const bool unknown = std::isnan(v.x) || std::isnan(v.y) || std::isnan(v.z);
+    if (!odometry(estimate.odom_position) || !odometry(estimate.odom_robot) ||
+        !(unknown || plausibleTargetSpeed(std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z)))) {
+      return control::EstimateQuality::kLost;
+    }
+  }
   return control::estimateQuality(status, estimate.range, estimate.bearing);
 }
 

@@ -242,10 +242,10 @@ void ControllerBase::warnFutureEstimate(const ros::Time& stamp, const ros::Time&
                     ros::this_node::getName().c_str(), stamp.toSec() - now.toSec());
 }
 
-bool ControllerBase::addTrackPoint(const ros::Time& stamp, const Eigen::Vector2d& robot,
-                                   const Eigen::Vector2d& target) {
+bool ControllerBase::addTrackPoint(const ros::Time& stamp, const control::TrackPoint& point) {
+  const double t = (stamp.isZero() ? ros::Time::now() : stamp).toSec();  // as noteEstimate()
   const std::lock_guard<std::mutex> lock(safety_mutex_);
-  return follower_.addTrackPoint(stamp.toSec(), robot, target);
+  return follower_.addTrackPoint(t, point);
 }
 
 void ControllerBase::onRanges(const std::string& topic, const UwbRanges::ConstPtr& msg) {

@@ -11,8 +11,12 @@
 namespace radio_follow {
 
 const ParamTable<PathFollowerNode::Params>& PathFollowerNode::Params::table() {
-  static const ParamTable<Params> t = ParamTable<Params>().add(
-      "base_frame", &Params::base_frame, "", "The robot's frame (the path's pose lookup).");
+  static const ParamTable<Params> t =
+      ParamTable<Params>()
+          .add("odom_frame", &Params::odom_frame, "",
+               "The path's frame: the locator's odom_frame (other estimates are not stored).")
+          .add("base_frame", &Params::base_frame, "",
+               "The robot's frame (the path's pose lookup).");
   return t;
 }
 
@@ -22,6 +26,7 @@ void PathFollowerNode::Params::load(const ParamReader& pnh) {
 }
 
 void PathFollowerNode::Params::validate() const {
+  require(!odom_frame.empty(), "~odom_frame", odom_frame, "a frame id");
   require(!base_frame.empty(), "~base_frame", base_frame, "a frame id");
   path.validate();
 }
@@ -29,10 +34,8 @@ void PathFollowerNode::Params::validate() const {
 PathFollowerNode::PathFollowerNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
     : EstimateFollowerNode(nh, private_nh),
       params_(loadValidated<Params>(params())),
-      law_(params_.path, control::loadVelocityLawParams(params(), common())) {
-  // The path lives in the odometry frame: without one there is no path to follow.
-  require(!followParams().odom_frame.empty(), "~odom_frame", followParams().odom_frame,
-          "a frame id");
+      law_(params_.path, control::loadVelocityLawParams(params(), common())),
+      tf_listener_(tf_buffer_) {
   requireKnownParams();
   path_pub_ = private_nh_.advertise<nav_msgs::Path>("path", 1, true);
   debugAdvertised(path_pub_);
@@ -53,13 +56,23 @@ void PathFollowerNode::onTrackPoint(bool placed, bool kept, const ros::Time& sta
   }
 }
 
+bool PathFollowerNode::acceptsOdomFrame(const std::string& frame) {
+  if (frame == params_.odom_frame) {
+    return true;
+  }
+  ROS_WARN_THROTTLE(5.0,
+                    "%s: the locator tracks in '%s', the path is stored in odom_frame '%s': "
+                    "no path point from it",
+                    ros::this_node::getName().c_str(), frame.c_str(), params_.odom_frame.c_str());
+  return false;
+}
+
 std::optional<Pose2> PathFollowerNode::robotPose() {
   if (!path_mode_) {
     return std::nullopt;  // the law drives straight to the target and says why
   }
   try {
-    const auto t =
-        tf_buffer_.lookupTransform(followParams().odom_frame, params_.base_frame, ros::Time(0));
+    const auto t = tf_buffer_.lookupTransform(params_.odom_frame, params_.base_frame, ros::Time(0));
     Pose2 pose;
     pose.x = t.transform.translation.x;
     pose.y = t.transform.translation.y;
@@ -67,7 +80,7 @@ std::optional<Pose2> PathFollowerNode::robotPose() {
     return pose;
   } catch (const tf2::TransformException& e) {
     ROS_WARN_THROTTLE(5.0, "%s: no robot pose %s <- %s (%s)", ros::this_node::getName().c_str(),
-                      followParams().odom_frame.c_str(), params_.base_frame.c_str(), e.what());
+                      params_.odom_frame.c_str(), params_.base_frame.c_str(), e.what());
     return std::nullopt;
   }
 }
@@ -81,7 +94,7 @@ void PathFollowerNode::afterTick(const ros::Time& now) {
 void PathFollowerNode::publishPath(const ros::Time& stamp) {
   nav_msgs::Path msg;
   msg.header.stamp = stamp;
-  msg.header.frame_id = followParams().odom_frame;
+  msg.header.frame_id = params_.odom_frame;
   for (const auto& p : law_.path().points()) {
     geometry_msgs::PoseStamped pose;
     pose.header = msg.header;

@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/ros/locator/locator_node.hpp"
 
-#include "radio_follow/common/geometry.hpp"
-
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <geometry_msgs/TransformStamped.h>
 
@@ -10,7 +8,9 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 
+#include "radio_follow/common/geometry.hpp"
 #include "radio_follow/ros/common/wiring_debug.hpp"
 #include "radio_follow/ros/locator/odometry_lookup.hpp"
 
@@ -60,6 +60,20 @@ TargetEstimate toMessage(const estimation::LocatorEstimate& estimate, const std:
   return msg;
 }
 
+void setOdometry(TargetEstimate& msg, const estimation::OdometryEstimate& odom,
+                 const std::string& odom_frame) {
+  msg.odom_frame = odom_frame;
+  msg.odom_position.x = odom.position.x();
+  msg.odom_position.y = odom.position.y();
+  msg.odom_position.z = odom.position.z();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  msg.odom_velocity.x = odom.velocity ? odom.velocity->x() : nan;
+  msg.odom_velocity.y = odom.velocity ? odom.velocity->y() : nan;
+  msg.odom_velocity.z = odom.velocity ? odom.velocity->z() : nan;
+  msg.odom_robot.x = odom.robot.x();
+  msg.odom_robot.y = odom.robot.y();
+}
+
 LocatorNode::LocatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
     : diagnostics_(nh, private_nh) {
   {
@@ -79,7 +93,6 @@ LocatorNode::LocatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
     tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_);
     inputs_ = std::make_unique<LocatorInputs>(
         *locator_, [this](const ros::Time& stamp) { return odometryPose(stamp); });
-    target_odom_pub_ = nh.advertise<TargetEstimate>("target_odom", 10);
   }
   if (params_.uwb_topics.empty() && params_.aoa_topics.empty() && params_.tdoa_topics.empty()) {
     const SensorTopics topics = conventionalTopics(layout_);
@@ -272,21 +285,18 @@ void LocatorNode::publish(const estimation::LocatorEstimate& estimate, const ros
   const bool representable = estimate.stamp >= 0.0 && estimate.stamp < 4294967295.0;
   const ros::Time stamp =
       estimate.status == TargetStatus::kLost || !representable ? now : ros::Time(estimate.stamp);
-  // Always published, LOST included: a controller must hear that the target is gone.
-  target_pub_.publish(toMessage(estimate, layout_.fixed_frame, stamp));
-  if (target_odom_pub_ && estimate.in_odom && estimate.status != TargetStatus::kLost) {
-    // The same estimate in the odometry frame, where the particle estimator tracks.
-    estimation::LocatorEstimate in_odom = estimate;
-    in_odom.position = estimate.tracking_position;
-    in_odom.velocity = estimate.tracking_velocity;
-    in_odom.covariance = estimate.tracking_covariance;
-    in_odom.alternative = estimate.robot_pose.toFixed(estimate.alternative);
-    TargetEstimate msg = toMessage(in_odom, params_.odom_frame, stamp);
-    // range and bearing stay relative to the robot, as the message defines them.
-    msg.range = estimate.position.head<2>().norm();
-    msg.bearing = std::atan2(estimate.position.y(), estimate.position.x());
-    target_odom_pub_.publish(msg);
+  TargetEstimate msg = toMessage(estimate, layout_.fixed_frame, stamp);
+  if (tf_buffer_) {
+    // The controllers track the target in the odometry frame: the particle estimator's
+    // own state, else the solver's position placed with the odometry pose at its stamp.
+    const std::optional<estimation::OdometryEstimate> odom =
+        estimation::inOdometry(estimate, [&](double /*t*/) { return odometryPose(stamp); });
+    if (odom) {
+      setOdometry(msg, *odom, params_.odom_frame);
+    }
   }
+  // Always published, LOST included: a controller must hear that the target is gone.
+  target_pub_.publish(msg);
   target_diagnostic_->tick(stamp);
 
   if (hasPosition(estimate.status)) {

@@ -117,18 +117,44 @@ TEST_F(FollowerTest, TracksConfirmedPositionsAndGivesTheLawTheWalkingSpeed) {
   // A young track's DEGRADED estimate is no track point (TrackGate); HEADING_ONLY neither.
   EXPECT_EQ(hear(follower, 0.9, 3.0, 0.0, TargetStatus::kDegraded), EstimateUse::kHeard);
   EXPECT_EQ(hear(follower, 0.95, 3.0, 0.0, TargetStatus::kHeadingOnly), EstimateUse::kHeard);
-  // The person walks along +x at 1 m/s, the robot stands at the origin.
+  // The person walks along +x at about 1 m/s, the robot stands at the origin: the
+  // locator's ground velocity is taken, nothing is differentiated.
   for (int i = 0; i <= 10; ++i) {
     const double t = 1.0 + 0.1 * i;
     ASSERT_EQ(hear(follower, t, 3.0 + 0.1 * i, 0.0), EstimateUse::kTrackPoint);
-    EXPECT_TRUE(
-        follower.addTrackPoint(t, Eigen::Vector2d::Zero(), Eigen::Vector2d(3.0 + 0.1 * i, 0.0)));
+    const auto point = trackPoint(Eigen::Vector2d::Zero(), Eigen::Vector2d(3.0 + 0.1 * i, 0.0),
+                                  Eigen::Vector2d(1.0 + 0.01 * i, 0.0));
+    ASSERT_TRUE(point.has_value());
+    EXPECT_TRUE(follower.addTrackPoint(t, *point));
   }
   EXPECT_EQ(law.points, 11);
   follower.tick(2.0, 0.05);
   ASSERT_TRUE(law.last.walking_speed.has_value());
-  EXPECT_NEAR(*law.last.walking_speed, 1.0, 1e-9);
-  EXPECT_NEAR(law.last.target->receding_speed, 1.0, 1e-9);
+  // The mean of the last second's velocities (TargetTrack::kWindow).
+  EXPECT_NEAR(*law.last.walking_speed, 1.05, 1e-9);
+  EXPECT_NEAR(law.last.target->receding_speed, 1.05, 1e-9);
+  // A point older than the newest reaches neither the track nor the law.
+  EXPECT_FALSE(follower.addTrackPoint(
+      1.5,
+      *trackPoint(Eigen::Vector2d::Zero(), Eigen::Vector2d(9.0, 0.0), Eigen::Vector2d(5.0, 0.0))));
+  EXPECT_EQ(law.points, 11);
+}
+
+TEST_F(FollowerTest, NoFeedForwardWithoutTheLocatorsGroundVelocity) {
+  // The solver estimator: a position in odometry, no ground velocity (NaN in the message).
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (int i = 0; i <= 10; ++i) {
+    const double t = 1.0 + 0.1 * i;
+    ASSERT_EQ(hear(follower, t, 3.0 + 0.1 * i, 0.0), EstimateUse::kTrackPoint);
+    const auto point = trackPoint(Eigen::Vector2d::Zero(), Eigen::Vector2d(3.0 + 0.1 * i, 0.0),
+                                  Eigen::Vector2d(nan, nan));
+    ASSERT_TRUE(point.has_value());
+    EXPECT_TRUE(follower.addTrackPoint(t, *point));  // the path still grows
+  }
+  const PipelineResult r = follower.tick(2.0, 0.05);
+  EXPECT_TRUE(r.moving);
+  EXPECT_FALSE(law.last.walking_speed.has_value());
+  EXPECT_EQ(law.last.target->receding_speed, 0.0);
 }
 
 TEST_F(FollowerTest, ALawRefusesCommonParametersBeforeThePipelineTakesThem) {

@@ -59,13 +59,6 @@ TEST(NodeParamTables, ControllersWiringIsInTheirYamlAndDoc) {
                 "nodes/velocity_controller.md", {"layout_file"});
 }
 
-TEST(NodeParamTables, EstimateFollowersTrackingIsInTheirYamlAndDoc) {
-  expectCovered(EstimateFollowerNode::Params::table(), {"velocity_controller.yaml"},
-                "nodes/velocity_controller.md");
-  expectCovered(EstimateFollowerNode::Params::table(), {"path_follower.yaml"},
-                "nodes/path_follower.md");
-}
-
 TEST(NodeParamTables, PathFollowerWiringIsInItsYamlAndDoc) {
   expectCovered(PathFollowerNode::Params::table(), {"path_follower.yaml"},
                 "nodes/path_follower.md");

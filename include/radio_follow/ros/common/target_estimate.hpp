@@ -12,7 +12,9 @@ bool hasPosition(const TargetEstimate& estimate);
 
 /// What the safety layer makes of an estimate: usable (OK, DEGRADED, HEADING_ONLY, with a
 /// finite range and bearing), ambiguous (AMBIGUOUS), else lost (LOST, UNSET, any unknown
-/// status, or a non-finite range or bearing).
+/// status, a non-finite range or bearing, an implausible position, or with `odom_frame`
+/// set an implausible `odom_position`, `odom_robot` or `odom_velocity`; NaN velocity is
+/// the documented "not tracked").
 control::EstimateQuality estimateQuality(const TargetEstimate& estimate);
 
 }  // namespace radio_follow

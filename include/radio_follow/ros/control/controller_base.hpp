@@ -97,10 +97,9 @@ class ControllerBase {
   /// The locator's estimate (robot frame) into the core (control::Follower::onEstimate).
   control::EstimateUse noteEstimate(const ros::Time& stamp, TargetStatus status, double range,
                                     double bearing, const PolarSpread& spread, int hypotheses);
-  /// A track point of the newest estimate placed in the odometry frame
+  /// The newest estimate's odometry-frame part, a track point
   /// (control::Follower::addTrackPoint); true when the law kept it.
-  bool addTrackPoint(const ros::Time& stamp, const Eigen::Vector2d& robot,
-                     const Eigen::Vector2d& target);
+  bool addTrackPoint(const ros::Time& stamp, const control::TrackPoint& point);
 
   const ControllerCommonParams& common() const { return common_; }
 

@@ -22,6 +22,7 @@
 #include "radio_follow/common/input_watch.hpp"
 #include "radio_follow/estimation/locator.hpp"
 #include "radio_follow/estimation/locator_node_params.hpp"
+#include "radio_follow/estimation/odometry_estimate.hpp"
 #include "radio_follow/ros/common/callback_barrier.hpp"
 #include "radio_follow/ros/common/output_diagnostic.hpp"
 #include "radio_follow/ros/common/params.hpp"
@@ -68,7 +69,6 @@ class LocatorNode {
   CallbackBarrier barrier_;
   std::vector<ros::Subscriber> subscribers_;
   ros::Publisher target_pub_;
-  ros::Publisher target_odom_pub_;
   std::unique_ptr<tf2_ros::Buffer> tf_buffer_;
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
   ros::Publisher pose_pub_;
@@ -104,5 +104,8 @@ visualization_msgs::MarkerArray locatorMarkers(const Layout& layout,
 /// Converts the core's estimate to the message (frame = the layout's fixed frame).
 TargetEstimate toMessage(const estimation::LocatorEstimate& estimate, const std::string& frame,
                          const ros::Time& stamp);
+/// Fills the message's odometry-frame part (`odom_*`; NaN velocity when not tracked).
+void setOdometry(TargetEstimate& msg, const estimation::OdometryEstimate& odom,
+                 const std::string& odom_frame);
 
 }  // namespace radio_follow
