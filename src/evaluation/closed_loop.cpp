@@ -347,17 +347,16 @@ void ClosedLoop::runLocator(double now) {
       estimate_stamp_, now, estimate.status, range, bearing,
       polarSpread(estimate.position.head<2>(), estimate.covariance.topLeftCorner<2, 2>()),
       estimate.hypotheses);
-  if (use == control::EstimateUse::kTrackPoint) {
-    const std::optional<estimation::OdometryEstimate> odom =
-        estimation::inOdometry(estimate, [this](double t) { return odometryAt(t); });
-    if (odom) {
-      std::optional<Eigen::Vector2d> velocity;
-      if (odom->velocity) {
-        velocity = odom->velocity->head<2>();
-      }
-      if (const auto point = control::trackPoint(odom->robot, odom->position.head<2>(), velocity)) {
-        follower_.addTrackPoint(estimate_stamp_, *point);
-      }
+  // Every estimate, as locator_node fills every message's odometry part.
+  const std::optional<estimation::OdometryEstimate> odom =
+      odometry_track_.update(estimate, [this](double t) { return odometryAt(t); });
+  if (use == control::EstimateUse::kTrackPoint && odom) {
+    std::optional<Eigen::Vector2d> velocity;
+    if (odom->velocity) {
+      velocity = odom->velocity->head<2>();
+    }
+    if (const auto point = control::trackPoint(odom->robot, odom->position.head<2>(), velocity)) {
+      follower_.addTrackPoint(estimate_stamp_, *point);
     }
   }
   estimate_ = std::move(estimate);

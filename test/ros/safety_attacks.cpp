@@ -53,7 +53,7 @@ class Feeder {
       const double nan = std::numeric_limits<double>::quiet_NaN();
       e.odom_frame = "odom";
       e.odom_position.x = kind == Kind::kNonFiniteOdometry ? nan : 4.0;
-      e.odom_velocity.x = nan;  // the solver estimator's: not tracked
+      e.odom_velocity.x = nan;  // unknown (the solver estimator before its fit)
       e.odom_velocity.y = nan;
       e.odom_velocity.z = nan;
     }

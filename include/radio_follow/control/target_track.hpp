@@ -13,8 +13,8 @@ namespace control {
 struct TrackPoint {
   Eigen::Vector2d robot = Eigen::Vector2d::Zero();   ///< the robot at the estimate's stamp, m
   Eigen::Vector2d target = Eigen::Vector2d::Zero();  ///< the target, m
-  /// The target's velocity over ground, m/s; nullopt when the locator does not track it
-  /// (the solver estimator).
+  /// The target's velocity over ground, m/s; nullopt while the locator has none (the
+  /// solver estimator's first positions).
   std::optional<Eigen::Vector2d> velocity;
 };
 

@@ -18,6 +18,7 @@
 #include "radio_follow/control/velocity_law.hpp"
 #include "radio_follow/estimation/locator.hpp"
 #include "radio_follow/estimation/locator_node_params.hpp"
+#include "radio_follow/estimation/odometry_estimate.hpp"
 #include "radio_follow/sim/obstacles.hpp"
 #include "radio_follow/sim/simulator_params.hpp"
 #include "radio_follow/sim/target_path.hpp"
@@ -159,6 +160,7 @@ class ClosedLoop {
   ClosedLoopConfig config_;
   sim::World world_;
   estimation::Locator locator_;
+  estimation::OdometryTrack odometry_track_;  ///< as locator_node's
   /// The controller node's law and core (the same classes the nodes run).
   std::unique_ptr<control::FollowLaw> law_;
   control::Follower follower_;

@@ -288,9 +288,10 @@ void LocatorNode::publish(const estimation::LocatorEstimate& estimate, const ros
   TargetEstimate msg = toMessage(estimate, layout_.fixed_frame, stamp);
   if (tf_buffer_) {
     // The controllers track the target in the odometry frame: the particle estimator's
-    // own state, else the solver's position placed with the odometry pose at its stamp.
+    // own state, else the solver's position placed with the odometry pose at its stamp
+    // and a velocity fitted to those positions.
     const std::optional<estimation::OdometryEstimate> odom =
-        estimation::inOdometry(estimate, [&](double /*t*/) { return odometryPose(stamp); });
+        odometry_track_.update(estimate, [&](double /*t*/) { return odometryPose(stamp); });
     if (odom) {
       setOdometry(msg, *odom, params_.odom_frame);
     }

@@ -77,6 +77,61 @@ TEST(OdometryEstimate, NothingWhenLostWithoutAPoseOrNotFinite) {
   EXPECT_FALSE(o->velocity.has_value());
 }
 
+/// A solver estimate (robot frame, no ground velocity) at `t` of a target walking at
+/// 1 m/s along odometry x from (3, 1), seen by a robot that drives and turns.
+LocatorEstimate walkingTarget(double t, Pose2* robot) {
+  *robot = pose(0.5 * t, 0.2 * t, 0.3 * t);
+  LocatorEstimate e;
+  e.status = TargetStatus::kOk;
+  e.stamp = t;
+  e.position = robot->fromFixed(Eigen::Vector3d(3.0 + t, 1.0, 0.0));
+  e.velocity = Eigen::Vector3d(5.0, 5.0, 0.0);  // relative to the robot: never used
+  return e;
+}
+
+TEST(OdometryTrack, FitsTheSolversGroundVelocityFromItsOdometryPositions) {
+  OdometryTrack track;
+  Pose2 robot;
+  const PoseAt at = [&robot](double) { return std::optional<Pose2>(robot); };
+  std::optional<OdometryEstimate> o;
+  for (int k = 0; k < 4; ++k) {
+    o = track.update(walkingTarget(0.1 * k, &robot), at);
+    ASSERT_TRUE(o.has_value());
+    EXPECT_FALSE(o->velocity.has_value()) << "fewer than five positions: no velocity";
+  }
+  for (int k = 4; k <= 20; ++k) {
+    const LocatorEstimate e = walkingTarget(0.1 * k, &robot);
+    o = track.update(e, at);
+    // The same stamp again (no new measurement) adds nothing.
+    o = track.update(e, at);
+  }
+  ASSERT_TRUE(o.has_value() && o->velocity.has_value());
+  EXPECT_NEAR(o->velocity->x(), 1.0, 1e-9);
+  EXPECT_NEAR(o->velocity->y(), 0.0, 1e-9);
+  EXPECT_NEAR(o->position.x(), 5.0, 1e-9);
+}
+
+TEST(OdometryTrack, TheParticleEstimatorsVelocityAsItIsAndAClockJumpStartsAnew) {
+  OdometryTrack track;
+  Pose2 robot;
+  const PoseAt at = [&robot](double) { return std::optional<Pose2>(robot); };
+  for (int k = 0; k <= 10; ++k) {
+    track.update(walkingTarget(100.0 + 0.1 * k, &robot), at);
+  }
+  ASSERT_TRUE(track.update(walkingTarget(101.1, &robot), at)->velocity.has_value());
+  // The clock went back: the old positions say nothing about the new ones.
+  EXPECT_FALSE(track.update(walkingTarget(1.0, &robot), at)->velocity.has_value());
+
+  LocatorEstimate e;
+  e.status = TargetStatus::kOk;
+  e.stamp = 1.2;
+  e.in_odom = true;
+  e.tracking_velocity = Eigen::Vector3d(0.4, 0.1, 0.0);
+  const auto o = track.update(e, at);
+  ASSERT_TRUE(o.has_value() && o->velocity.has_value());
+  EXPECT_EQ(*o->velocity, e.tracking_velocity);
+}
+
 }  // namespace
 }  // namespace estimation
 }  // namespace radio_follow

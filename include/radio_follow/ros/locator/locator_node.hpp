@@ -62,6 +62,8 @@ class LocatorNode {
   Params params_;
   Layout layout_;
   std::unique_ptr<estimation::Locator> locator_;
+  /// The estimates in the odometry frame (the message's odom_* part).
+  estimation::OdometryTrack odometry_track_;
   std::unique_ptr<LocatorInputs> inputs_;
   std::unique_ptr<LocatorReconfigure> reconfigure_;  ///< live tuning, after the params load
   /// Every subscriber and the update timer run inside it: a message that makes a
