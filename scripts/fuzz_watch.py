@@ -27,7 +27,7 @@ SKIPPED_TOPICS = {"/clock"}
 # Output fields where a non-finite value is a documented meaning, by message type:
 ALLOWED_NON_FINITE = {
     # msg/TargetEstimate.msg: solver_cost "NaN when no solve ran" (particle estimator),
-    # odom_velocity "NaN when the estimator does not track it" (solver estimator).
+    # odom_velocity "NaN while unknown".
     "radio_follow/TargetEstimate": {"solver_cost", "odom_velocity"},
     # msg/AoaBearing.msg: rssi_second "NaN when not reported".
     "radio_follow/AoaBearing": {"rssi_second"},

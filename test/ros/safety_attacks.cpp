@@ -222,8 +222,8 @@ TEST_F(SafetyAttacks, NonFiniteOdometryStops) {
   EXPECT_TRUE(waitFor([&] { return recorder_->lastCmd().linear.x > 0.2; }, 10.0));
 }
 
-// The solver estimator's odometry-frame part has no ground velocity (NaN): the robot
-// follows without a feed-forward, and no NaN reaches cmd_vel.
+// An odometry-frame part without a ground velocity (NaN: the solver estimator's first
+// positions): the robot follows without a feed-forward, and no NaN reaches cmd_vel.
 TEST_F(SafetyAttacks, UnknownGroundVelocityFollowsWithoutNaN) {
   feeder_->kind = Feeder::Kind::kUnknownVelocity;
   const int mark = recorder_->cmdCount();

@@ -44,7 +44,7 @@ class Feeder {
   /// Where the estimate puts the target, m ahead.
   std::atomic<double> estimate_range{4.0};
   /// The estimate's odometry-frame part: the person walks straight away at this speed
-  /// (m/s); NaN: the locator tracks no ground velocity (the solver estimator).
+  /// (m/s); NaN: the locator has no ground velocity yet.
   std::atomic<bool> with_odometry{false};
   std::atomic<double> walking_speed{0.0};
   std::atomic<bool> send_estimates{true};

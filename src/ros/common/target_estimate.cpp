@@ -36,7 +36,7 @@ control::EstimateQuality estimateQuality(const TargetEstimate& estimate) {
     return control::EstimateQuality::kLost;
   }
   // The odometry-frame part, when there is one: positions a robot's odometry can hold, a
-  // velocity unknown (NaN, the solver estimator) or a person's.
+  // velocity unknown (NaN) or a person's.
   if (!estimate.odom_frame.empty()) {
     const auto odometry = [](const geometry_msgs::Point& q) {
       return plausibleOdometryCoordinate(q.x) && plausibleOdometryCoordinate(q.y) &&
