@@ -29,9 +29,9 @@ struct MeasurementFit {
 /// A standing target seen from a moving robot is then averaged over the robot's path
 /// (the range errors of real modules are correlated over seconds, which a walking model
 /// cannot average), and a walking one loses nothing but the particles that stopped.
-/// Weights are kept normalised; every `weight*` call multiplies them by one measurement's
-/// likelihood and returns the measurement's marginal likelihood sum_i w_i l_i (the
-/// evidence the hypothesis bank compares). Deterministic for a seed.
+/// Weights are kept normalised; a measurement kind's `weigh*` function (weighRange(), ...)
+/// multiplies them by the measurement's likelihood and returns its marginal likelihood
+/// sum_i w_i l_i (the evidence the hypothesis bank compares). Deterministic for a seed.
 class ParticleFilter {
  public:
   struct Config {
