@@ -160,8 +160,8 @@ TEST(VelocityController, SafetyLayerAroundFollowing) {
 }
 
 // The person is 0.1 m beyond the follow distance and walks away: the feed-forward is the
-// locator's ground velocity as the estimate carries it. Without one (NaN: the solver
-// estimator) there is none, and nothing non-finite reaches cmd_vel.
+// locator's ground velocity as the estimate carries it. Without one (NaN: not known yet)
+// there is none, and nothing non-finite reaches cmd_vel.
 TEST(VelocityController, FeedForwardIsTheEstimatesGroundVelocity) {
   ros::NodeHandle nh;
   radio_follow_test::ControllerRecorder rec(nh, "velocity_controller/status");

@@ -30,7 +30,7 @@ struct TargetPolar {
   /// The locator holds a second hypothesis: the person may be at the mirror image.
   bool mirror = false;
   /// The target's ground speed away from the robot along the line of sight, m/s
-  /// (negative: walking towards it); 0 when unknown (no odometry, the solver estimator).
+  /// (negative: walking towards it); 0 when unknown (no odometry, no velocity yet).
   double receding_speed = 0.0;
   /// Smallest fresh (calibrated) module range minus safe_distance, m; +inf when no
   /// range is watched.
@@ -46,7 +46,7 @@ struct FollowInput {
   /// The robot in the odometry frame; nullopt when the controller does not know it.
   std::optional<Pose2> robot;
   /// The target's ground speed, the locator's in the odometry frame (TargetTrack), m/s;
-  /// nullopt when unknown (no odometry, the solver estimator, no recent track point).
+  /// nullopt when unknown (no odometry, no velocity in the last second's track points).
   std::optional<double> walking_speed;
 };
 

@@ -141,7 +141,7 @@ TEST_F(FollowerTest, TracksConfirmedPositionsAndGivesTheLawTheWalkingSpeed) {
 }
 
 TEST_F(FollowerTest, NoFeedForwardWithoutTheLocatorsGroundVelocity) {
-  // The solver estimator: a position in odometry, no ground velocity (NaN in the message).
+  // A position in odometry without a ground velocity yet (NaN in the message).
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (int i = 0; i <= 10; ++i) {
     const double t = 1.0 + 0.1 * i;

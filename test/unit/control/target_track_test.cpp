@@ -41,7 +41,7 @@ TEST(TargetTrack, TakesTheLocatorsGroundVelocityAveragedOverTheWindow) {
 
 TEST(TargetTrack, NoSpeedWithoutAVelocityOrFromOldPoints) {
   TargetTrack track;
-  // The solver estimator tracks no ground velocity: NaN in the message.
+  // No ground velocity yet (the solver estimator's first positions): NaN in the message.
   ASSERT_TRUE(track.add(1.0, point({0.0, 0.0}, {3.0, 0.0}, {kNaN, kNaN})));
   EXPECT_FALSE(track.speed(1.0).has_value());
   EXPECT_FALSE(track.recedingSpeed(1.0).has_value());
