@@ -8,6 +8,7 @@
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/param_error.hpp"
 #include "radio_follow/common/yaml_params.hpp"
+#include "radio_follow/control/target_track.hpp"
 #include "radio_follow/estimation/odometry_estimate.hpp"
 #include "radio_follow/evaluation/calibration_run.hpp"
 #include "radio_follow/evaluation/simulated_scan.hpp"
@@ -341,15 +342,20 @@ void ClosedLoop::runLocator(double now) {
   estimate_stamp_ = estimate.status == TargetStatus::kLost ? now : std::max(0.0, estimate.stamp);
   const double range = estimate.position.head<2>().norm();
   const double bearing = std::atan2(estimate.position.y(), estimate.position.x());
-  // The controller's estimate callback: the follower core, then the estimate's own
-  // odometry-frame part (TargetEstimate's odom_* fields, filled as locator_node fills them).
-  const control::EstimateUse use = follower_.onEstimate(
-      estimate_stamp_, now, estimate.status, range, bearing,
-      polarSpread(estimate.position.head<2>(), estimate.covariance.topLeftCorner<2, 2>()),
-      estimate.hypotheses);
-  // Every estimate, as locator_node fills every message's odometry part.
+  // Every estimate gets its odometry-frame part, as locator_node fills every message's;
+  // one no robot can act on makes the estimate LOST for the controller (estimateQuality).
   const std::optional<estimation::OdometryEstimate> odom =
       odometry_track_.update(estimate, [this](double t) { return odometryAt(t); });
+  const Eigen::Vector3d unknown = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+  const bool acted_on =
+      !odom || control::plausibleOdometryPart(Eigen::Vector3d(odom->robot.x(), odom->robot.y(), 0.0),
+                                              odom->position, odom->velocity.value_or(unknown));
+  // The controller's estimate callback: the follower core, then the estimate's own
+  // odometry-frame part.
+  const control::EstimateUse use = follower_.onEstimate(
+      estimate_stamp_, now, acted_on ? estimate.status : TargetStatus::kLost, range, bearing,
+      polarSpread(estimate.position.head<2>(), estimate.covariance.topLeftCorner<2, 2>()),
+      estimate.hypotheses);
   if (use == control::EstimateUse::kTrackPoint && odom) {
     std::optional<Eigen::Vector2d> velocity;
     if (odom->velocity) {

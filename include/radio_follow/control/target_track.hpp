@@ -5,6 +5,8 @@
 #include <deque>
 #include <optional>
 
+#include "radio_follow/common/plausibility.hpp"
+
 namespace radio_follow {
 namespace control {
 
@@ -24,6 +26,21 @@ struct TrackPoint {
 /// (plausibleTargetSpeed) is unknown.
 std::optional<TrackPoint> trackPoint(const Eigen::Vector2d& robot, const Eigen::Vector2d& target,
                                      const std::optional<Eigen::Vector2d>& velocity);
+
+/// Whether an estimate's odometry-frame part is one to act on: the robot and the target at
+/// plausible odometry positions, the velocity unknown (NaN on any axis) or a person's
+/// (plausibleTargetSpeed). An estimate whose part is not counts as LOST, and the robot
+/// stops: the nodes (estimateQuality) and the lockstep loop decide it here alike. Inline:
+/// the ROS layer's common library checks messages with it without linking the control law.
+inline bool plausibleOdometryPart(const Eigen::Vector3d& robot, const Eigen::Vector3d& target,
+                                  const Eigen::Vector3d& velocity) {
+  const auto plausible = [](const Eigen::Vector3d& p) {
+    return plausibleOdometryCoordinate(p.x()) && plausibleOdometryCoordinate(p.y()) &&
+           plausibleOdometryCoordinate(p.z());
+  };
+  return plausible(robot) && plausible(target) &&
+         (velocity.hasNaN() || plausibleTargetSpeed(velocity.norm()));
+}
 
 /// The target as the speed feed-forward needs it: the locator's ground velocity, averaged
 /// over the track points of the last second, and the line of sight from the robot to the

@@ -6,6 +6,7 @@
 
 #include "radio_follow/common/target_status.hpp"
 #include "radio_follow/control/follow_inputs.hpp"
+#include "radio_follow/control/target_track.hpp"
 
 namespace radio_follow {
 namespace {
@@ -37,17 +38,11 @@ control::EstimateQuality estimateQuality(const TargetEstimate& estimate) {
   }
   // The odometry-frame part, when there is one: positions a robot's odometry can hold, a
   // velocity unknown (NaN) or a person's.
-  if (!estimate.odom_frame.empty()) {
-    const auto odometry = [](const geometry_msgs::Point& q) {
-      return plausibleOdometryCoordinate(q.x) && plausibleOdometryCoordinate(q.y) &&
-             plausibleOdometryCoordinate(q.z);
-    };
-    const auto& v = estimate.odom_velocity;
-    const bool unknown = std::isnan(v.x) || std::isnan(v.y) || std::isnan(v.z);
-    if (!odometry(estimate.odom_position) || !odometry(estimate.odom_robot) ||
-        !(unknown || plausibleTargetSpeed(std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z)))) {
-      return control::EstimateQuality::kLost;
-    }
+  const auto vector = [](const auto& q) { return Eigen::Vector3d(q.x, q.y, q.z); };
+  if (!estimate.odom_frame.empty() &&
+      !control::plausibleOdometryPart(vector(estimate.odom_robot), vector(estimate.odom_position),
+                                      vector(estimate.odom_velocity))) {
+    return control::EstimateQuality::kLost;
   }
   return control::estimateQuality(status, estimate.range, estimate.bearing);
 }

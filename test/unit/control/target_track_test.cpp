@@ -86,6 +86,22 @@ TEST(TrackPoint, RefusesImplausiblePositionsAndForgetsImplausibleVelocities) {
   EXPECT_EQ(*p->velocity, Eigen::Vector2d(1.5, 0.0));
 }
 
+// The one verdict the nodes (estimateQuality) and the lockstep loop use: an odometry part
+// no robot can act on makes the estimate LOST; an unknown velocity does not.
+TEST(TrackPoint, OdometryPartNoRobotCanActOnIsRefused) {
+  const Eigen::Vector3d robot(10.0, 0.0, 0.0);
+  const Eigen::Vector3d target(13.0, 0.0, 0.0);
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_TRUE(plausibleOdometryPart(robot, target, {1.0, 0.0, 0.0}));
+  EXPECT_TRUE(plausibleOdometryPart(robot, target, {kNaN, kNaN, kNaN}));
+  EXPECT_TRUE(plausibleOdometryPart(robot, target, {kNaN, 0.0, 0.0})) << "unknown on one axis";
+  EXPECT_FALSE(plausibleOdometryPart(robot, target, {13.0, 0.0, 0.0})) << "faster than a sprinter";
+  EXPECT_FALSE(plausibleOdometryPart(robot, target, {0.0, inf, 0.0}));
+  EXPECT_FALSE(plausibleOdometryPart(robot, {1e300, 0.0, 0.0}, {1.0, 0.0, 0.0}));
+  EXPECT_FALSE(plausibleOdometryPart({kNaN, 0.0, 0.0}, target, {1.0, 0.0, 0.0}));
+  EXPECT_FALSE(plausibleOdometryPart(robot, {13.0, 0.0, inf}, {1.0, 0.0, 0.0}));
+}
+
 }  // namespace
 }  // namespace control
 }  // namespace radio_follow
