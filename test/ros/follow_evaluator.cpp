@@ -67,12 +67,28 @@ TEST(FollowEvaluator, ReportsAPerfectEstimateAndTheDrivenDistance) {
   const std::string json = readFile(report_dir + "/metrics.json");
   ASSERT_FALSE(json.empty()) << "no metrics.json in " << report_dir;
   EXPECT_LT(jsonNumber(json, "estimate_error_median_m"), 0.15);
-  EXPECT_GT(jsonNumber(json, "estimate_availability"), 0.8);
   const double driven = jsonNumber(json, "robot_distance_m");
   EXPECT_GT(driven, 3.0);
   EXPECT_LT(driven, 6.0);
   const std::string csv = readFile(report_dir + "/trajectory.csv");
   EXPECT_GT(std::count(csv.begin(), csv.end(), '\n'), 100);
+  // The report's availability counts from the evaluator's start, before this node (the
+  // stand-in locator) may have connected on a loaded machine: judge the samples taken
+  // once it published, from the trajectory (t, ..., estimate_x, estimate_y).
+  std::istringstream rows(csv);
+  std::string row;
+  std::getline(rows, row);  // header
+  int samples = 0;
+  int with_estimate = 0;
+  while (std::getline(rows, row)) {
+    if (std::stod(row.substr(0, row.find(','))) < start.toSec() + 0.5) {
+      continue;
+    }
+    ++samples;
+    with_estimate += row.back() != ',';  // an empty estimate_y ends the row with its comma
+  }
+  ASSERT_GT(samples, 50);
+  EXPECT_GT(static_cast<double>(with_estimate) / samples, 0.8);
 }
 
 TEST(FollowEvaluator, PublishesTheFinalReportWhenTheScenarioEnds) {

@@ -167,12 +167,25 @@ TEST(Locator, EstimatesTheTargetAndIgnoresTheBoardBehind) {
   ASSERT_TRUE(waitForStatus(radio_follow::TargetEstimate::STATUS_OK, 30.0));
   ros::Duration(1.0).sleep();
   const EstimateLog log;
-  ros::WallDuration(1.5).sleep();
-  const auto estimates = log.get();
-  ASSERT_GE(estimates.size(), 15u);  // 20 Hz
+  // 15 OK estimates (0.75 s at 20 Hz), however long a loaded machine takes to deliver
+  // them. One that is not OK (this node's feed stalled beyond max_age) is not judged.
+  const auto ok_estimates = [&] {
+    std::vector<radio_follow::TargetEstimateConstPtr> ok;
+    for (const auto& msg : log.get()) {
+      if (msg->status == radio_follow::TargetEstimate::STATUS_OK) {
+        ok.push_back(msg);
+      }
+    }
+    return ok;
+  };
+  const ros::WallTime give_up = ros::WallTime::now() + ros::WallDuration(20.0);
+  while (ok_estimates().size() < 15 && ros::WallTime::now() < give_up) {
+    ros::WallDuration(0.05).sleep();
+  }
+  const auto estimates = ok_estimates();
+  ASSERT_GE(estimates.size(), 15u);
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   for (const auto& msg : estimates) {
-    ASSERT_EQ(msg->status, radio_follow::TargetEstimate::STATUS_OK);
     EXPECT_EQ(msg->header.frame_id, "base_link");
     const Eigen::Vector3d p(msg->position.x, msg->position.y, msg->position.z);
     sum += p;
@@ -318,14 +331,23 @@ TEST(Locator, DiagnosticsNameTheSilentInputAndTheHardware) {
             target = s;
           }
         }
-        done = !locator.name.empty() && !target.name.empty();
+        // The newest statuses, until they say what is expected: the first ones may come
+        // from a stall of this node's feed (an input silent for a moment).
+        std::string silent;
+        for (const auto& kv : locator.values) {
+          silent = kv.key == "silent inputs" ? kv.value : silent;
+        }
+        done = !locator.name.empty() && !target.name.empty() &&
+               silent == "/aoa/left/bearing" &&
+               target.level == diagnostic_msgs::DiagnosticStatus::OK;
       });
-  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(10.0);
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(20.0);
   while (!done && ros::WallTime::now() < deadline) {
     ros::WallDuration(0.1).sleep();
   }
   const std::lock_guard<std::mutex> lock(mutex);
-  ASSERT_TRUE(done) << "no locator status and /target topic status within 10 s";
+  ASSERT_FALSE(locator.name.empty() || target.name.empty())
+      << "no locator status and /target topic status within 20 s";
   EXPECT_EQ(locator.level, diagnostic_msgs::DiagnosticStatus::WARN);
   EXPECT_NE(locator.message.find("/aoa/left/bearing"), std::string::npos) << locator.message;
   EXPECT_EQ(locator.hardware_id, "layout spot, frame base_link");

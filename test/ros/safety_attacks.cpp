@@ -242,21 +242,23 @@ TEST_F(SafetyAttacks, UnknownGroundVelocityFollowsWithoutNaN) {
 TEST_F(SafetyAttacks, StaleShortRangeHoldsWithoutFlapping) {
   feeder_->publishRange(ros::Time::now() - ros::Duration(2.0), 0.8);
   ASSERT_TRUE(waitFor([&] { return isZero(recorder_->lastCmd()); }, 0.5));
-  EXPECT_TRUE(staysStopped(*recorder_, 0.8));  // hold_time 1.0 s from its receive time
+  // hold_time (1.0 s) from its receive time; the window leaves 0.6 s of it for a loaded
+  // machine's delays, and still spans 8 controller ticks.
+  EXPECT_TRUE(staysStopped(*recorder_, 0.4));
 }
 
 // A range stamped in the future cannot be placed in time: stop.
 TEST_F(SafetyAttacks, RangeFromTheFutureStops) {
   feeder_->publishRange(ros::Time::now() + ros::Duration(10.0), 4.0);
   ASSERT_TRUE(waitFor([&] { return isZero(recorder_->lastCmd()); }, 0.5));
-  EXPECT_TRUE(staysStopped(*recorder_, 0.8));
+  EXPECT_TRUE(staysStopped(*recorder_, 0.4));  // within hold_time, as above
 }
 
 // NaN range: nothing proves the person is far away.
 TEST_F(SafetyAttacks, NanRangeStops) {
   feeder_->publishRange(ros::Time::now(), std::numeric_limits<double>::quiet_NaN());
   ASSERT_TRUE(waitFor([&] { return isZero(recorder_->lastCmd()); }, 0.5));
-  EXPECT_TRUE(staysStopped(*recorder_, 0.8));
+  EXPECT_TRUE(staysStopped(*recorder_, 0.4));  // within hold_time, as above
 }
 
 // The immediate stop from the range callback while estimates arrive at 50 Hz on the main
@@ -266,7 +268,7 @@ TEST_F(SafetyAttacks, NanRangeStops) {
 TEST_F(SafetyAttacks, ShortRangeStopsUnderEstimateLoad) {
   feeder_->publishRange(ros::Time::now(), 1.0);
   ASSERT_TRUE(waitFor([&] { return isZero(recorder_->lastCmd()); }, 0.5));
-  EXPECT_TRUE(staysStopped(*recorder_, 0.5));
+  EXPECT_TRUE(staysStopped(*recorder_, 0.4));  // within hold_time, as above
   EXPECT_TRUE(waitFor(
       [&] { return recorder_->lastStatus().state == FollowerStatus::STATE_TOO_CLOSE; }, 2.0))
       << "status "

@@ -79,8 +79,10 @@ struct CommandLog {
     double linear;
   };
   std::vector<Entry> entries;
-  void onCommand(const geometry_msgs::TwistConstPtr& msg) {
-    entries.push_back({ros::Time::now().toSec(), msg->linear.x});
+  /// Stamped when roscpp received it, not when this callback ran: a stalled checker must
+  /// not move a command from before a stop into the stop's window.
+  void onCommand(const ros::MessageEvent<geometry_msgs::Twist const>& event) {
+    entries.push_back({event.getReceiptTime().toSec(), event.getMessage()->linear.x});
   }
 };
 
