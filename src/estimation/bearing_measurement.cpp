@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/estimation/bearing_measurement.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 
 #include "radio_follow/estimation/fast_exp.hpp"
+#include "radio_follow/estimation/particle_tracker.hpp"
 
 namespace radio_follow {
 namespace estimation {
@@ -93,6 +95,79 @@ MeasurementFit weighBearing(ParticleFilter& filter, const Eigen::Vector3d& board
   w.inlier *= 1.0f + static_cast<float>(m.behind_weight - 1.0) * positiveStep(-w.lx);
   const double uniform = 1.0 / (2.0 * kPi) / (m.use_elevation ? kPi : 1.0);
   return filter.applyLikelihood(w.inlier, m.outlier_share * uniform);
+}
+
+namespace {
+
+/// Without a range the distance is the elevation's alone, and a real board's elevation is
+/// biased (the floor's bounce, a body's shadow): its sigma grows by this factor.
+constexpr double kUnrangedElevationFactor = 3.0;
+/// Without a range, a board's bearings closer in time than this count as one: an
+/// advertising interval's readings, one per channel, share the geometry's multipath, s.
+constexpr double kUnrangedBearingDecorrelation = 0.1;
+/// The most a bearing's sigma grows for its decorrelation: wider, a reflection tens of
+/// degrees off would fit as well as the board's own error (at 20 Hz and 0.5 s, 16 deg).
+constexpr double kMaxBearingSigmaScale = 2.0;
+
+}  // namespace
+
+MeasurementFit weigh(const BearingReading& r, ParticleFilter& filter, const TrackerContext& c) {
+  const AoaBoard& board = c.layout.aoa_boards[r.board];
+  BearingLikelihood model = c.config.bearing;
+  model.field_of_view = board.field_of_view;
+  // A cold start's cloud is spread around the robot: its mean says nothing about where
+  // the target is, so each particle asks whether the board sees it.
+  model.field_of_view_test = c.cold_start ? BearingLikelihood::FieldOfViewTest::kEachParticle
+                                          : BearingLikelihood::FieldOfViewTest::kCloudMean;
+  if (!c.boards_one_way) {
+    // Boards that face several ways see the side themselves: no prior needed.
+    model.behind_weight = 1.0;
+  }
+  model.azimuth_sigma *= c.sigma_scale;
+  model.elevation_sigma *= c.sigma_scale;
+  if (!c.ranged) {
+    model.elevation_sigma *= kUnrangedElevationFactor;
+  }
+  const Eigen::Matrix3d yaw =
+      Eigen::AngleAxisd(c.pose.yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  return weighBearing(filter, c.pose.toFixed(board.position),
+                      yaw * board.orientation.toRotationMatrix(), r.azimuth, r.elevation, model);
+}
+
+std::optional<InformingSensor> informing(const BearingReading& r, const Eigen::Vector3d& position,
+                                         const TrackerContext& c) {
+  const AoaBoard& board = c.layout.aoa_boards[r.board];
+  const Eigen::Vector3d local =
+      board.orientation.conjugate() * (c.pose.fromFixed(position) - board.position);
+  if (!(local.x() > std::cos(board.field_of_view) * local.head<2>().norm())) {
+    return std::nullopt;
+  }
+  InformingSensor s;
+  s.gradient = azimuthGradient(c.pose.toFixed(board.position), position);
+  s.white_sigma = c.config.bearing.azimuth_sigma;
+  s.bias_sigma = c.config.azimuth_bias_sigma;
+  return s;
+}
+
+Decorrelation decorrelation(const BearingReading& /*r*/, const TrackerContext& c) {
+  // A board's slowly varying error counted as independent readings would outweigh the
+  // ranges; with no range the bearings are all the direction there is, and only one
+  // advertising interval's readings (one per channel) count as one.
+  Decorrelation d;
+  d.time = c.ranged ? c.config.bearing_decorrelation_time
+                    : std::min(c.config.bearing_decorrelation_time, kUnrangedBearingDecorrelation);
+  d.max_scale = kMaxBearingSigmaScale;
+  return d;
+}
+
+SeedRay seedRay(const BearingReading& r, const TrackerContext& c) {
+  const AoaBoard& board = c.layout.aoa_boards[r.board];
+  SeedRay ray;
+  ray.origin = board.position;
+  ray.orientation = board.orientation;
+  ray.azimuth = r.azimuth;
+  ray.elevation = r.elevation;
+  return ray;
 }
 
 }  // namespace estimation

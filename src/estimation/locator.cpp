@@ -70,7 +70,7 @@ bool Locator::addRange(std::size_t module, double raw_range, double t,
   slot.t = t;
   slot.valid = slot.range > 0.0;
   if (slot.valid) {
-    active().add({TrackedMeasurement::Kind::kRange, t, pose, module, 0, slot.range}, 0.0);
+    active().add({t, pose, RangeReading{module, slot.range}}, 0.0);
   }
   return slot.valid;
 }
@@ -94,7 +94,7 @@ bool Locator::addBearing(std::size_t index, double azimuth, double elevation, do
   slot.valid = true;
   // The solver's board selection keeps its RSSI history whichever estimator is active.
   solver_.recordRssi(index, rssi);
-  active().add({TrackedMeasurement::Kind::kBearing, t, pose, index, 0, azimuth, elevation}, rssi);
+  active().add({t, pose, BearingReading{index, azimuth, elevation}}, rssi);
   return true;
 }
 
@@ -142,8 +142,7 @@ bool Locator::addTdoa(std::size_t ia, std::size_t ib, double difference, double 
       variance > 0.0 && std::isfinite(variance) ? std::sqrt(variance) : config_.tdoa_sigma;
   slot->t = t;
   slot->valid = true;
-  active().add({TrackedMeasurement::Kind::kTdoa, t, pose, ia, ib, difference, 0.0, slot->sigma},
-               0.0);
+  active().add({t, pose, TdoaReading{ia, ib, difference, slot->sigma}}, 0.0);
   return true;
 }
 

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <optional>
+#include <variant>
 
 namespace radio_follow {
 namespace estimation {
@@ -14,17 +15,13 @@ ParticleEstimator::ParticleEstimator(const Layout& layout, const ParticleTracker
 
 void ParticleEstimator::add(const TrackedMeasurement& m, double rssi) {
   tracker_.add(m);
-  if (m.kind != TrackedMeasurement::Kind::kBearing || !config_.rss_direction) {
+  const auto* bearing = std::get_if<BearingReading>(&m.reading);
+  if (bearing == nullptr || !config_.rss_direction) {
     return;
   }
-  if (const std::optional<RssDifference> d = rss_.add(m.sensor, rssi, m.t)) {
-    TrackedMeasurement r;
-    r.kind = TrackedMeasurement::Kind::kRssDirection;
-    r.t = d->t;
-    r.pose = m.pose;  // the pair's readings are within 0.1 s of this one
-    r.sensor = d->pair;
-    r.value = d->difference;
-    tracker_.add(r);
+  if (const std::optional<RssDifference> d = rss_.add(bearing->board, rssi, m.t)) {
+    // The pair's readings are within 0.1 s of this one: its pose.
+    tracker_.add({d->t, m.pose, RssDirectionReading{d->pair, d->difference}});
   }
 }
 

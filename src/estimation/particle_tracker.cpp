@@ -8,6 +8,7 @@
 #include <set>
 #include <tuple>
 #include <utility>
+#include <variant>
 
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/common/time_policy.hpp"
@@ -36,23 +37,11 @@ constexpr double kFitRate = 0.02;
 constexpr double kDivergedFit = 0.6;
 /// Boards within this of one another's heading face "the same way" (one mirror plane), rad.
 constexpr double kParallelBoards = 0.2;
-/// Without a range the distance is the elevation's alone, and a real board's elevation is
-/// biased (the floor's bounce, a body's shadow): its sigma grows by this factor.
-constexpr double kUnrangedElevationFactor = 3.0;
-/// Without a range, a board's bearings closer in time than this count as one: an
-/// advertising interval's readings, one per channel, share the geometry's multipath, s.
-constexpr double kUnrangedBearingDecorrelation = 0.1;
-/// The most a bearing's sigma grows for its decorrelation (sigmaScale).
-constexpr double kMaxBearingSigmaScale = 2.0;
 /// A hypothesis with more of its weight than this across the boards' plane is folded back.
 constexpr double kAstrayShare = 0.01;
 /// The robot moved between two measurements when its pose changed by more than this (m or
 /// rad): below it, a board's bearings cannot tell front from back.
 constexpr double kStill = 1e-4;
-
-Eigen::Matrix3d yawRotation(double yaw) {
-  return Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-}
 
 double worstSigma(const Eigen::Matrix3d& covariance) {
   return std::sqrt(std::max(
@@ -112,23 +101,19 @@ void ParticleTracker::reset() {
   evidence_ = 0.0;
   last_main_mean_.reset();
   last_position_fix_ = -1.0;
-  std::fill(std::begin(last_kind_), std::end(last_kind_), -1.0);
-  last_range_.clear();
-  last_bearing_.clear();
+  last_source_.clear();
+  last_reading_.clear();
 }
 
 void ParticleTracker::setConfig(const ParticleTrackerConfig& config) {
   const bool restart = config.filter.particles != config_.filter.particles ||
                        config.filter.planar != config_.filter.planar;
   config_ = config;
-  if (!config_.rss_direction) {
-    // Switched off: what is queued or kept for cold starts must not count any more.
-    const auto rss = [](const TrackedMeasurement& m) {
-      return m.kind == TrackedMeasurement::Kind::kRssDirection;
-    };
-    queue_.erase(std::remove_if(queue_.begin(), queue_.end(), rss), queue_.end());
-    recent_.erase(std::remove_if(recent_.begin(), recent_.end(), rss), recent_.end());
-  }
+  // An optional input switched off: what is queued or kept for cold starts must not count
+  // any more.
+  const auto off = [this](const TrackedMeasurement& m) { return !usable(m); };
+  queue_.erase(std::remove_if(queue_.begin(), queue_.end(), off), queue_.end());
+  recent_.erase(std::remove_if(recent_.begin(), recent_.end(), off), recent_.end());
   if (restart) {
     main_ = ParticleFilter(config.filter);
     mirror_ = ParticleFilter(mirrorConfig(config.filter));
@@ -137,11 +122,18 @@ void ParticleTracker::setConfig(const ParticleTrackerConfig& config) {
 }
 
 void ParticleTracker::add(const TrackedMeasurement& measurement) {
-  if (measurement.kind == TrackedMeasurement::Kind::kRssDirection &&
-      (!config_.rss_direction || measurement.sensor >= rss_pairs_.size())) {
-    return;  // an optional input, off
+  if (usable(measurement)) {
+    queue_.push_back(measurement);
   }
-  queue_.push_back(measurement);
+}
+
+TrackerContext ParticleTracker::context(const Pose2& pose, double t) const {
+  return {layout_, config_, rss_pairs_, boards_one_way_, pose, rangedAt(t)};
+}
+
+bool ParticleTracker::usable(const TrackedMeasurement& m) const {
+  const TrackerContext c = context(Pose2{}, m.t);
+  return std::visit([&c](const auto& r) { return estimation::usable(r, c); }, m.reading);
 }
 
 Eigen::Vector3d ParticleTracker::mirrored(const Eigen::Vector3d& p, const Pose2& pose) const {
@@ -159,47 +151,12 @@ bool ParticleTracker::onMainSide(const Eigen::Vector3d& p, const Pose2& pose) co
 }
 
 MeasurementFit ParticleTracker::weigh(ParticleFilter& filter, const TrackedMeasurement& m,
-                                      const Pose2& pose,
-                                      BearingLikelihood::FieldOfViewTest field_of_view,
+                                      const Pose2& pose, bool cold_start,
                                       double sigma_scale) const {
-  switch (m.kind) {
-    case TrackedMeasurement::Kind::kRange: {
-      RangeLikelihood model = config_.range;
-      model.sigma *= sigma_scale;
-      return weighRange(filter, pose.toFixed(layout_.twr_modules[m.sensor].position), m.value,
-                        model);
-    }
-    case TrackedMeasurement::Kind::kTdoa: {
-      RangeLikelihood model = config_.tdoa;
-      model.sigma = m.sigma;
-      return weighTdoa(filter, pose.toFixed(layout_.tdoa_anchors[m.sensor].position),
-                       pose.toFixed(layout_.tdoa_anchors[m.sensor_b].position), m.value, model);
-    }
-    case TrackedMeasurement::Kind::kBearing: {
-      const AoaBoard& board = layout_.aoa_boards[m.sensor];
-      BearingLikelihood model = config_.bearing;
-      model.field_of_view = board.field_of_view;
-      model.field_of_view_test = field_of_view;
-      if (!boards_one_way_) {
-        // Boards that face several ways see the side themselves: no prior needed.
-        model.behind_weight = 1.0;
-      }
-      model.azimuth_sigma *= sigma_scale;
-      model.elevation_sigma *= sigma_scale;
-      if (!rangedAt(m.t)) {
-        model.elevation_sigma *= kUnrangedElevationFactor;
-      }
-      return weighBearing(filter, pose.toFixed(board.position),
-                          yawRotation(pose.yaw) * board.orientation.toRotationMatrix(), m.value,
-                          m.elevation, model);
-    }
-    case TrackedMeasurement::Kind::kRssDirection: {
-      const RssPair& pair = rss_pairs_[m.sensor];
-      return weighRssDirection(filter, pose.toFixed(pair.midpoint), pose.yaw + pair.axis_yaw,
-                               m.value, config_.rss);
-    }
-  }
-  return {};
+  TrackerContext c = context(pose, m.t);
+  c.cold_start = cold_start;
+  c.sigma_scale = sigma_scale;
+  return std::visit([&](const auto& r) { return estimation::weigh(r, filter, c); }, m.reading);
 }
 
 bool ParticleTracker::rangedAt(double t) const {
@@ -207,30 +164,18 @@ bool ParticleTracker::rangedAt(double t) const {
 }
 
 double ParticleTracker::sigmaScale(const TrackedMeasurement& m) {
-  const bool range = m.kind == TrackedMeasurement::Kind::kRange;
-  if (!range && m.kind != TrackedMeasurement::Kind::kBearing) {
-    return 1.0;
-  }
-  std::vector<double>& stamps = range ? last_range_ : last_bearing_;
-  stamps.resize(range ? layout_.twr_modules.size() : layout_.aoa_boards.size(), -1e300);
-  double& last = stamps[m.sensor];
+  const TrackerContext c = context(Pose2{}, m.t);
+  const Decorrelation d =
+      std::visit([&c](const auto& r) { return estimation::decorrelation(r, c); }, m.reading);
+  double& last = last_reading_.try_emplace(sensorKey(m), -1e300).first->second;
   const double dt = m.t - last;
   last = std::max(last, m.t);
-  // A board's slowly varying error counted as independent readings would outweigh the
-  // ranges; with no range the bearings are all the direction there is, and only one
-  // advertising interval's readings (one per channel) count as one.
-  const double tau =
-      range           ? config_.range_decorrelation_time
-      : rangedAt(m.t) ? config_.bearing_decorrelation_time
-                      : std::min(config_.bearing_decorrelation_time, kUnrangedBearingDecorrelation);
-  if (!(dt < tau)) {
+  if (!(d.time > 0.0) || !(dt < d.time)) {
     return 1.0;
   }
-  // dt / tau of a measurement; a repeated stamp (dt 0) counts as a hundredth. A bearing's
-  // sigma grows at most kMaxBearingSigmaScale-fold: wider, a reflection tens of degrees
-  // off would fit as well as the board's own error (at 20 Hz and 0.5 s, 16 deg).
-  const double scale = std::sqrt(tau / std::max(dt, 0.01 * tau));
-  return range ? scale : std::min(scale, kMaxBearingSigmaScale);
+  // dt / time of a reading; a repeated stamp (dt 0) counts as a hundredth.
+  const double scale = std::sqrt(d.time / std::max(dt, 0.01 * d.time));
+  return std::min(scale, d.max_scale);
 }
 
 void ParticleTracker::apply(const TrackedMeasurement& m) {
@@ -240,15 +185,13 @@ void ParticleTracker::apply(const TrackedMeasurement& m) {
   }
   const double sigma_scale = sigmaScale(m);
   main_.predict(m.t);
-  const MeasurementFit main_fit =
-      weigh(main_, m, pose, BearingLikelihood::FieldOfViewTest::kCloudMean, sigma_scale);
+  const MeasurementFit main_fit = weigh(main_, m, pose, /*cold_start=*/false, sigma_scale);
   // A track whose particles are all in the wrong place explains every input as an
   // outlier, and the outlier floor then moves nothing: watch the inlier probability.
   fit_ += kFitRate * (main_fit.inlier - fit_);
   if (mirror_active_) {
     mirror_.predict(m.t);
-    const MeasurementFit mirror_fit =
-        weigh(mirror_, m, pose, BearingLikelihood::FieldOfViewTest::kCloudMean, sigma_scale);
+    const MeasurementFit mirror_fit = weigh(mirror_, m, pose, /*cold_start=*/false, sigma_scale);
     if (main_fit.likelihood > 0.0 && mirror_fit.likelihood > 0.0) {
       // Fading memory: the side is decided by about the last `mirror_memory` seconds of
       // data. It bounds the evidence by the rate at which the sensors deliver it, so one
@@ -274,9 +217,9 @@ void ParticleTracker::apply(const TrackedMeasurement& m) {
   if (m.t >= main_.time()) {
     pose_ = pose;
   }
-  const auto kind = static_cast<std::size_t>(m.kind);
-  last_kind_[kind] = std::max(last_kind_[kind], m.t);
-  if (m.kind == TrackedMeasurement::Kind::kRange || m.kind == TrackedMeasurement::Kind::kTdoa) {
+  double& source = last_source_.try_emplace(sourceOf(m), -1.0).first->second;
+  source = std::max(source, m.t);
+  if (fixesDistance(m)) {
     last_position_fix_ = std::max(last_position_fix_, m.t);
   }
   ++stats_.processed;
@@ -284,44 +227,17 @@ void ParticleTracker::apply(const TrackedMeasurement& m) {
 
 Eigen::Matrix3d ParticleTracker::correlatedFloor(const Eigen::Vector3d& position) const {
   std::vector<InformingSensor> sensors;
-  std::set<std::tuple<int, std::size_t, std::size_t>> seen;
+  std::set<SensorKey> seen;
+  const TrackerContext c = context(pose_, main_.time());
   for (const TrackedMeasurement& m : recent_) {
-    if (!seen.insert(std::make_tuple(static_cast<int>(m.kind), m.sensor, m.sensor_b)).second) {
+    if (!seen.insert(sensorKey(m)).second) {
       continue;
     }
-    InformingSensor s;
-    switch (m.kind) {
-      case TrackedMeasurement::Kind::kRange:
-        s.gradient = rangeGradient(pose_.toFixed(layout_.twr_modules[m.sensor].position), position,
-                                   config_.filter.planar);
-        s.white_sigma = config_.range.sigma;
-        s.bias_sigma = config_.range_bias_sigma;
-        break;
-      case TrackedMeasurement::Kind::kTdoa:
-        s.gradient = rangeGradient(pose_.toFixed(layout_.tdoa_anchors[m.sensor].position), position,
-                                   config_.filter.planar) -
-                     rangeGradient(pose_.toFixed(layout_.tdoa_anchors[m.sensor_b].position),
-                                   position, config_.filter.planar);
-        s.white_sigma = m.sigma;
-        s.bias_sigma = config_.tdoa_bias_sigma;
-        break;
-      case TrackedMeasurement::Kind::kBearing: {
-        const AoaBoard& board = layout_.aoa_boards[m.sensor];
-        const Eigen::Vector3d local =
-            board.orientation.conjugate() * (pose_.fromFixed(position) - board.position);
-        if (!(local.x() > std::cos(board.field_of_view) * local.head<2>().norm())) {
-          continue;  // the filter all but ignores a board that does not see the target
-        }
-        s.gradient = azimuthGradient(pose_.toFixed(board.position), position);
-        s.white_sigma = config_.bearing.azimuth_sigma;
-        s.bias_sigma = config_.azimuth_bias_sigma;
-        break;
-      }
-      case TrackedMeasurement::Kind::kRssDirection:
-        // Which side, not where: it only weighs hypotheses the other sensors place.
-        continue;
+    const std::optional<InformingSensor> s =
+        std::visit([&](const auto& r) { return estimation::informing(r, position, c); }, m.reading);
+    if (s) {
+      sensors.push_back(*s);
     }
-    sensors.push_back(s);
   }
   return correlatedErrorCovariance(sensors);
 }
@@ -490,9 +406,9 @@ TrackerOutput ParticleTracker::update(double now) {
     }
     return out;
   }
-  for (std::size_t k = 0; k < 4; ++k) {
-    if (last_kind_[k] >= 0.0 && now - last_kind_[k] <= config_.max_age) {
-      out.sources |= k == 0 ? kSourceTwr : k == 2 ? kSourceTdoa : kSourceAoa;
+  for (const auto& [bit, stamp] : last_source_) {
+    if (stamp >= 0.0 && now - stamp <= config_.max_age) {
+      out.sources |= bit;
     }
   }
   out.position = position;

@@ -5,7 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <tuple>
+#include <type_traits>
+#include <utility>
+#include <variant>
 #include <vector>
 
 #include "radio_follow/estimation/particle_tracker.hpp"
@@ -28,43 +32,61 @@ constexpr double kColdVelocitySigma = 0.7;
 /// Bearing-only cold starts spread particles over this distance interval, m.
 constexpr double kRayMin = 0.3;
 constexpr double kRayMax = 12.0;
-/// TDoA-only cold starts spread particles over a disc of this radius, m.
-constexpr double kTdoaDisc = 15.0;
+/// Disc cold starts (distance differences only) spread particles over this radius, m.
+constexpr double kDiscRadius = 15.0;
 
 }  // namespace
 
 bool ParticleTracker::coldStart(double now) {
-  // The newest measurement of every sensor (the deque is in processing order).
-  std::map<std::tuple<int, std::size_t, std::size_t>, const TrackedMeasurement*> newest;
+  // The newest reading of every sensor (the deque is in processing order).
+  std::map<SensorKey, const TrackedMeasurement*> newest;
   for (const auto& m : recent_) {
-    const auto key = std::make_tuple(static_cast<int>(m.kind), m.sensor, m.sensor_b);
+    const SensorKey key = sensorKey(m);
     const auto it = newest.find(key);
     if (it == newest.end() || it->second->t <= m.t) {
       newest[key] = &m;
     }
   }
-  const std::size_t sensors = layout_.twr_modules.size() + layout_.aoa_boards.size() +
-                              (layout_.tdoa_anchors.empty() ? 0 : 1);
+  const std::size_t sensors = expectedSensors(layout_);
   if (newest.size() < std::min<std::size_t>(2, sensors) || newest.empty()) {
     return false;
   }
+  // The tightest shape the readings allow (tracked_reading.hpp's ColdSeed): the smallest
+  // ring, else a disc, else rays.
   const TrackedMeasurement* ring = nullptr;
+  SeedRing ring_seed;
   const TrackedMeasurement* latest = nullptr;
-  bool any_tdoa = false;
+  bool any_disc = false;
+  bool any_fix = false;
+  std::set<SensorKey> heard;
   for (const auto& [key, m] : newest) {
-    if (m->kind == TrackedMeasurement::Kind::kRange &&
-        (ring == nullptr || m->value < ring->value)) {
-      ring = m;  // the shortest range: the smallest ring to sample
+    if (coldSeedOf(*m) == ColdSeed::kRing) {
+      const SeedRing r = std::visit(
+          [this, m = m](const auto& reading) {
+            if constexpr (std::decay_t<decltype(reading)>::kColdSeed == ColdSeed::kRing) {
+              return seedRing(reading, context(Pose2{}, m->t));
+            } else {
+              return SeedRing{};
+            }
+          },
+          m->reading);
+      if (ring == nullptr || r.radius < ring_seed.radius) {
+        ring = m;
+        ring_seed = r;
+      }
     }
-    any_tdoa = any_tdoa || m->kind == TrackedMeasurement::Kind::kTdoa;
+    any_disc = any_disc || coldSeedOf(*m) == ColdSeed::kDisc;
+    any_fix = any_fix || fixesDistance(*m);
     if (latest == nullptr || m->t > latest->t) {
       latest = m;
+    }
+    if (const std::optional<SensorKey> h = heardKey(*m)) {
+      heard.insert(*h);
     }
   }
   // Bearings alone place the target only along rays, some of them from a board's edge;
   // a layout that ranges waits for a range (for max_age, then starts heading-only).
-  const bool ranging = !layout_.twr_modules.empty() || !layout_.tdoa_anchors.empty();
-  if (ring == nullptr && !any_tdoa && ranging &&
+  if (!any_fix && rangingLayout(layout_) &&
       (recent_.empty() || now - recent_.front().t < config_.max_age)) {
     return false;
   }
@@ -72,12 +94,7 @@ bool ParticleTracker::coldStart(double now) {
   // board's reflection, or the edge-biased reading of a board that cannot see the target,
   // as the direction whenever the board that sees it has not spoken yet
   // (doc/locator_accuracy.md, "What the locks are").
-  std::size_t heard = any_tdoa ? 1 : 0;
-  for (const auto& [key, m] : newest) {
-    heard += m->kind == TrackedMeasurement::Kind::kRange ||
-             m->kind == TrackedMeasurement::Kind::kBearing;
-  }
-  if (heard < sensors && !recent_.empty() && now - recent_.front().t < kColdStartWait) {
+  if (heard.size() < sensors && !recent_.empty() && now - recent_.front().t < kColdStartWait) {
     return false;
   }
   const Pose2 pose = latest->pose.value_or(Pose2{});
@@ -91,43 +108,46 @@ bool ParticleTracker::coldStart(double now) {
   const double height = config_.filter.height;
   const double golden = 2.39996322972865332;  // rad: evenly spread angles, no RNG needed
   if (ring != nullptr) {
-    const Eigen::Vector3d module =
-        ring->pose.value_or(Pose2{}).toFixed(layout_.twr_modules[ring->sensor].position);
+    const Eigen::Vector3d module = ring->pose.value_or(Pose2{}).toFixed(ring_seed.centre);
     const double dz = config_.filter.planar ? height - module.z() : 0.0;
-    const double radius = std::sqrt(std::max(0.01, ring->value * ring->value - dz * dz));
+    const double radius = std::sqrt(std::max(0.01, ring_seed.radius * ring_seed.radius - dz * dz));
     for (std::size_t k = 0; k < count; ++k) {
       const double angle = golden * static_cast<double>(k);
       positions.emplace_back(module.x() + radius * std::cos(angle),
                              module.y() + radius * std::sin(angle), height);
     }
-  } else if (any_tdoa) {
+  } else if (any_disc) {
     for (std::size_t k = 0; k < count; ++k) {
-      const double r = kTdoaDisc * std::sqrt((static_cast<double>(k) + 0.5) / count);
+      const double r = kDiscRadius * std::sqrt((static_cast<double>(k) + 0.5) / count);
       const double angle = golden * static_cast<double>(k);
       positions.push_back(pose.toFixed({r * std::cos(angle), r * std::sin(angle), height}));
     }
   } else {
-    std::vector<const TrackedMeasurement*> bearings;
+    std::vector<std::pair<const TrackedMeasurement*, SeedRay>> rays;
     for (const auto& [key, m] : newest) {
-      if (m->kind == TrackedMeasurement::Kind::kBearing) {
-        bearings.push_back(m);  // an RSS difference weighs the rays, it places none
-      }
+      std::visit(
+          [&, m = m](const auto& reading) {
+            if constexpr (std::decay_t<decltype(reading)>::kColdSeed == ColdSeed::kRay) {
+              rays.emplace_back(m, seedRay(reading, context(Pose2{}, m->t)));
+            }
+          },
+          m->reading);
     }
-    if (bearings.empty()) {
+    if (rays.empty()) {
       return false;
     }
     for (std::size_t k = 0; k < count; ++k) {
-      const TrackedMeasurement& b = *bearings[k % bearings.size()];
-      const AoaBoard& board = layout_.aoa_boards[b.sensor];
-      const Pose2 at = b.pose.value_or(Pose2{});
-      Eigen::Vector3d direction(std::cos(b.elevation) * std::cos(b.value),
-                                std::cos(b.elevation) * std::sin(b.value), std::sin(b.elevation));
-      if ((k / bearings.size()) % 2 == 1) {
+      const auto& [b, ray] = rays[k % rays.size()];
+      const Pose2 at = b->pose.value_or(Pose2{});
+      Eigen::Vector3d direction(std::cos(ray.elevation) * std::cos(ray.azimuth),
+                                std::cos(ray.elevation) * std::sin(ray.azimuth),
+                                std::sin(ray.elevation));
+      if ((k / rays.size()) % 2 == 1) {
         direction.x() = -direction.x();  // the array's other side
       }
       const double fraction = static_cast<double>((k * 7919) % count) / static_cast<double>(count);
       const double distance = kRayMin + (kRayMax - kRayMin) * fraction;
-      Eigen::Vector3d p = at.toFixed(board.position + board.orientation * (distance * direction));
+      Eigen::Vector3d p = at.toFixed(ray.origin + ray.orientation * (distance * direction));
       if (config_.filter.planar) {
         p.z() = height;
       }
@@ -138,8 +158,7 @@ bool ParticleTracker::coldStart(double now) {
   for (const auto& [key, m] : newest) {
     // The cloud's mean is a point near the robot here: whether a board sees the target
     // is each particle's own question.
-    weigh(sampler, *m, m->pose.value_or(Pose2{}),
-          BearingLikelihood::FieldOfViewTest::kEachParticle);
+    weigh(sampler, *m, m->pose.value_or(Pose2{}), /*cold_start=*/true);
   }
   evidence_ = 0.0;
   evidence_time_ = latest->t;
@@ -163,9 +182,9 @@ bool ParticleTracker::coldStart(double now) {
   main_.assign(kept, velocities, latest->t);
   pose_ = pose;
   for (const auto& [key, m] : newest) {
-    const auto kind = static_cast<std::size_t>(m->kind);
-    last_kind_[kind] = std::max(last_kind_[kind], m->t);
-    if (m->kind == TrackedMeasurement::Kind::kRange || m->kind == TrackedMeasurement::Kind::kTdoa) {
+    double& source = last_source_.try_emplace(sourceOf(*m), -1.0).first->second;
+    source = std::max(source, m->t);
+    if (fixesDistance(*m)) {
       last_position_fix_ = std::max(last_position_fix_, m->t);
     }
   }

@@ -5,6 +5,7 @@
 
 #include "radio_follow/common/angles.hpp"
 #include "radio_follow/estimation/fast_exp.hpp"
+#include "radio_follow/estimation/particle_tracker.hpp"
 
 namespace radio_follow {
 namespace estimation {
@@ -65,6 +66,36 @@ MeasurementFit weighRange(ParticleFilter& filter, const Eigen::Vector3d& module,
                  .sqrt();
   model.evaluate(w.inlier, &w.inlier, &w.outlier);
   return filter.applyLikelihood(w.inlier, w.outlier);
+}
+
+MeasurementFit weigh(const RangeReading& r, ParticleFilter& filter, const TrackerContext& c) {
+  RangeLikelihood model = c.config.range;
+  model.sigma *= c.sigma_scale;
+  return weighRange(filter, c.pose.toFixed(c.layout.twr_modules[r.module].position), r.range,
+                    model);
+}
+
+std::optional<InformingSensor> informing(const RangeReading& r, const Eigen::Vector3d& position,
+                                         const TrackerContext& c) {
+  InformingSensor s;
+  s.gradient = rangeGradient(c.pose.toFixed(c.layout.twr_modules[r.module].position), position,
+                             c.config.filter.planar);
+  s.white_sigma = c.config.range.sigma;
+  s.bias_sigma = c.config.range_bias_sigma;
+  return s;
+}
+
+Decorrelation decorrelation(const RangeReading& /*r*/, const TrackerContext& c) {
+  Decorrelation d;
+  d.time = c.config.range_decorrelation_time;
+  return d;
+}
+
+SeedRing seedRing(const RangeReading& r, const TrackerContext& c) {
+  SeedRing ring;
+  ring.centre = c.layout.twr_modules[r.module].position;
+  ring.radius = r.range;
+  return ring;
 }
 
 }  // namespace estimation

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "radio_follow/common/angles.hpp"
+#include "radio_follow/estimation/particle_tracker.hpp"
 
 namespace radio_follow {
 namespace estimation {
@@ -116,6 +117,17 @@ MeasurementFit weighRssDirection(ParticleFilter& filter, const Eigen::Vector3d& 
   inlier = ((1.0 - m.outlier_share) / (std::sqrt(2.0 * kPi) * m.sigma) * (-0.5 * z.square()).exp())
                .cast<float>();
   return filter.applyLikelihood(inlier, m.outlier_share / m.floor_width);
+}
+
+MeasurementFit weigh(const RssDirectionReading& r, ParticleFilter& filter,
+                     const TrackerContext& c) {
+  const RssPair& pair = c.rss_pairs[r.pair];
+  return weighRssDirection(filter, c.pose.toFixed(pair.midpoint), c.pose.yaw + pair.axis_yaw,
+                           r.difference, c.config.rss);
+}
+
+bool usable(const RssDirectionReading& r, const TrackerContext& c) {
+  return c.config.rss_direction && r.pair < c.rss_pairs.size();
 }
 
 }  // namespace estimation

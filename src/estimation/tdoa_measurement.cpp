@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/estimation/tdoa_measurement.hpp"
 
+#include "radio_follow/estimation/particle_tracker.hpp"
+
 namespace radio_follow {
 namespace estimation {
 
@@ -17,6 +19,25 @@ MeasurementFit weighTdoa(ParticleFilter& filter, const Eigen::Vector3d& a, const
   w.inlier = static_cast<float>(difference) - (w.lx - w.ly);
   model.evaluate(w.inlier, &w.inlier, &w.outlier);
   return filter.applyLikelihood(w.inlier, w.outlier);
+}
+
+MeasurementFit weigh(const TdoaReading& r, ParticleFilter& filter, const TrackerContext& c) {
+  RangeLikelihood model = c.config.tdoa;
+  model.sigma = r.sigma;
+  return weighTdoa(filter, c.pose.toFixed(c.layout.tdoa_anchors[r.anchor_a].position),
+                   c.pose.toFixed(c.layout.tdoa_anchors[r.anchor_b].position), r.difference, model);
+}
+
+std::optional<InformingSensor> informing(const TdoaReading& r, const Eigen::Vector3d& position,
+                                         const TrackerContext& c) {
+  InformingSensor s;
+  s.gradient = rangeGradient(c.pose.toFixed(c.layout.tdoa_anchors[r.anchor_a].position), position,
+                             c.config.filter.planar) -
+               rangeGradient(c.pose.toFixed(c.layout.tdoa_anchors[r.anchor_b].position), position,
+                             c.config.filter.planar);
+  s.white_sigma = r.sigma;
+  s.bias_sigma = c.config.tdoa_bias_sigma;
+  return s;
 }
 
 }  // namespace estimation

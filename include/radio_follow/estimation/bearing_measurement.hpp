@@ -5,16 +5,23 @@
 
 #include <Eigen/Core>
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
 
 #include "radio_follow/common/angles.hpp"
+#include "radio_follow/common/target_status.hpp"
+#include "radio_follow/config/layout.hpp"
+#include "radio_follow/estimation/correlated_error.hpp"
 #include "radio_follow/estimation/particle_filter.hpp"
+#include "radio_follow/estimation/tracked_reading.hpp"
 
 namespace radio_follow {
 namespace estimation {
 
 // An angle-of-arrival bearing (azimuth and elevation) measured by an AoA board: the
-// observation, its model, its Ceres cost, its autodiff reference and its particle
-// likelihood, in one place.
+// observation, its model, its Ceres cost, its autodiff reference, its particle likelihood
+// and its answers to the particle tracker (tracked_reading.hpp), in one place.
 
 /// An angle-of-arrival bearing measured by one board, in that board's frame.
 struct BearingObservation {
@@ -146,6 +153,40 @@ struct BearingLikelihood {
 MeasurementFit weighBearing(ParticleFilter& filter, const Eigen::Vector3d& board,
                             const Eigen::Matrix3d& rotation, double azimuth, double elevation,
                             const BearingLikelihood& model);
+
+/// A bearing of AoA board `board` (layout index) in the board's frame, elevation offset
+/// removed, as the particle tracker takes it: a direction only, and a cold start samples
+/// rays along it when nothing fixes the distance.
+struct BearingReading {
+  static constexpr std::uint8_t kSource = kSourceAoa;
+  static constexpr bool kFixesDistance = false;
+  static constexpr ColdSeed kColdSeed = ColdSeed::kRay;
+  static std::size_t expectedSensors(const Layout& layout) { return layout.aoa_boards.size(); }
+  SensorPair sensors() const { return {board, 0}; }
+  std::optional<SensorPair> heardAs() const { return sensors(); }
+
+  std::size_t board = 0;
+  double azimuth = 0.0;    ///< rad
+  double elevation = 0.0;  ///< rad
+};
+
+/// The bearing likelihood with the board's field of view (tested on the cloud's mean, or
+/// on each particle during a cold start), the field of view's prior only when every board
+/// faces the same way, the decorrelation factor, and a wider elevation when no range
+/// fixes the distance.
+MeasurementFit weigh(const BearingReading& r, ParticleFilter& filter, const TrackerContext& c);
+/// The azimuth's gradient at `position`; nothing when the board does not see it there (the
+/// filter all but ignores such a board).
+std::optional<InformingSensor> informing(const BearingReading& r, const Eigen::Vector3d& position,
+                                         const TrackerContext& c);
+/// bearing_decorrelation_time while a range fixes the distance; without one, at most one
+/// advertising interval (the bearings are then all the direction there is).
+Decorrelation decorrelation(const BearingReading& r, const TrackerContext& c);
+inline bool usable(const BearingReading& /*r*/, const TrackerContext& /*c*/) {
+  return true;
+}
+/// The board's position and orientation and the angles.
+SeedRay seedRay(const BearingReading& r, const TrackerContext& c);
 
 }  // namespace estimation
 }  // namespace radio_follow

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <deque>
+#include <map>
 #include <optional>
 #include <vector>
 
@@ -19,21 +20,6 @@
 
 namespace radio_follow {
 namespace estimation {
-
-/// One calibrated measurement at its own stamp, with the robot's pose in the tracking
-/// frame at that stamp (none: the robot's own frame is the tracking frame).
-struct TrackedMeasurement {
-  /// kRssDirection: an opposed pair's RSSI difference (rss_direction.hpp).
-  enum class Kind { kRange, kBearing, kTdoa, kRssDirection };
-  Kind kind = Kind::kRange;
-  double t = 0.0;
-  std::optional<Pose2> pose;
-  std::size_t sensor = 0;    ///< layout index: module, board, or anchor a; RSS: pair index
-  std::size_t sensor_b = 0;  ///< TDoA: anchor b
-  double value = 0.0;        ///< range, azimuth, distance difference or RSSI difference (dB)
-  double elevation = 0.0;    ///< bearings
-  double sigma = 0.0;        ///< TDoA sigma, m
-};
 
 /// The particle backend's tuning (filled from LocatorConfig).
 struct ParticleTrackerConfig {
@@ -70,6 +56,23 @@ struct ParticleTrackerConfig {
   double range_bias_sigma = 0.05;
   double tdoa_bias_sigma = 0.05;
   double azimuth_bias_sigma = deg2rad(2.0);
+};
+
+/// What a reading needs from the tracker to answer its questions (tracked_reading.hpp):
+/// the layout, the tuning, and where the robot was.
+struct TrackerContext {
+  const Layout& layout;
+  const ParticleTrackerConfig& config;
+  const std::vector<RssPair>& rss_pairs;  ///< the layout's opposed board pairs
+  /// Every AoA board faces the same way: the field of view's prior
+  /// (BearingLikelihood::behind_weight) decides the side until the data do.
+  bool boards_one_way = false;
+  Pose2 pose;           ///< the robot in the tracking frame at the reading's stamp
+  bool ranged = false;  ///< a reading fixed the distance within max_age before this one
+  /// Weighing a cold start's sampler: a cloud spread around the robot, whose mean says
+  /// nothing about where the target is.
+  bool cold_start = false;
+  double sigma_scale = 1.0;  ///< the reading's decorrelation factor (its sigma grows by it)
 };
 
 /// What the tracker reports, in the tracking frame and in the robot frame at `stamp`.
@@ -144,15 +147,17 @@ class ParticleTracker {
 
  private:
   void apply(const TrackedMeasurement& m);
-  /// `sigma_scale`: a range's or bearing's sigma factor (the decorrelation times).
+  /// The context of a reading stamped `t` taken at `pose` (tracked_reading.hpp).
+  TrackerContext context(const Pose2& pose, double t) const;
+  /// `filter`'s particles weighed by `m`'s likelihood (its kind's weigh()).
   MeasurementFit weigh(ParticleFilter& filter, const TrackedMeasurement& m, const Pose2& pose,
-                       BearingLikelihood::FieldOfViewTest field_of_view =
-                           BearingLikelihood::FieldOfViewTest::kCloudMean,
-                       double sigma_scale = 1.0) const;
-  /// A range's or bearing's sigma factor by the time since its sensor's previous one
-  /// (range_ and bearing_decorrelation_time); records it. 1 for other kinds.
+                       bool cold_start = false, double sigma_scale = 1.0) const;
+  /// Whether `m` is an input the tuning uses (an optional one may be off).
+  bool usable(const TrackedMeasurement& m) const;
+  /// `m`'s sigma factor by the time since its sensor's previous reading (its kind's
+  /// decorrelation()); records the reading's stamp.
   double sigmaScale(const TrackedMeasurement& m);
-  /// A range or TDoA fixed the distance within max_age before `t`.
+  /// A reading that fixes the distance came within max_age before `t`.
   bool rangedAt(double t) const;
   bool coldStart(double now);
   void seedMirror();
@@ -198,18 +203,17 @@ class ParticleTracker {
   /// is kept converging (reported LOST) instead of restarting from the newest epoch,
   /// which would throw the evidence away each time.
   bool accumulates_ = false;
-  /// The layout's opposed board pairs (kRssDirection's `sensor` indexes them).
+  /// The layout's opposed board pairs (RssDirectionReading::pair indexes them).
   std::vector<RssPair> rss_pairs_;
   std::vector<TrackedMeasurement> queue_;
   std::deque<TrackedMeasurement> recent_;  ///< processed within max_age (cold starts)
   bool in_odom_ = false;
   Pose2 pose_;                                      ///< of the newest processed measurement
-  double last_position_fix_ = -1.0;                 ///< newest range or TDoA applied
-  double last_kind_[4] = {-1.0, -1.0, -1.0, -1.0};  ///< by Kind
-  /// Stamp of each module's newest applied range and each board's newest bearing (the
-  /// decorrelation times).
-  std::vector<double> last_range_;
-  std::vector<double> last_bearing_;
+  double last_position_fix_ = -1.0;  ///< newest reading that fixes the distance, applied
+  /// Stamp of the newest reading applied, by source bit (TargetEstimate.sources).
+  std::map<std::uint8_t, double> last_source_;
+  /// Stamp of each sensor's newest reading (the decorrelation times).
+  std::map<SensorKey, double> last_reading_;
   /// Running mean of the inlier probability of the applied measurements (see apply()).
   double fit_ = 1.0;
   TrackerStats stats_;

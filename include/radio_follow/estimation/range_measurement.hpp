@@ -4,16 +4,24 @@
 #include <ceres/sized_cost_function.h>
 
 #include <Eigen/Core>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
 
+#include "radio_follow/common/target_status.hpp"
+#include "radio_follow/config/layout.hpp"
+#include "radio_follow/estimation/correlated_error.hpp"
 #include "radio_follow/estimation/particle_filter.hpp"
+#include "radio_follow/estimation/tracked_reading.hpp"
 
 namespace radio_follow {
 namespace estimation {
 
 // A two-way range (TWR) from a module on the robot to the tag: the observation, its
-// model, its Ceres cost (the solver), its autodiff reference (the cost's test) and its
-// particle likelihood (the particle filter), in one place. The TDoA difference reuses the
-// model and the likelihood (tdoa_measurement.hpp).
+// model, its Ceres cost (the solver), its autodiff reference (the cost's test), its
+// particle likelihood and its answers to the particle tracker (tracked_reading.hpp), in
+// one place. The TDoA difference reuses the model and the likelihood
+// (tdoa_measurement.hpp).
 
 /// A two-way range from a module on the robot to the target, already calibrated.
 struct RangeObservation {
@@ -109,6 +117,33 @@ struct RangeLikelihood {
 /// Weighs `filter`'s particles by a range from `module` (tracking frame).
 MeasurementFit weighRange(ParticleFilter& filter, const Eigen::Vector3d& module, double range,
                           const RangeLikelihood& model);
+
+/// A calibrated range of TWR module `module` (layout index), as the particle tracker
+/// takes it: it fixes the distance, and a cold start samples a ring around the module.
+struct RangeReading {
+  static constexpr std::uint8_t kSource = kSourceTwr;
+  static constexpr bool kFixesDistance = true;
+  static constexpr ColdSeed kColdSeed = ColdSeed::kRing;
+  static std::size_t expectedSensors(const Layout& layout) { return layout.twr_modules.size(); }
+  SensorPair sensors() const { return {module, 0}; }
+  std::optional<SensorPair> heardAs() const { return sensors(); }
+
+  std::size_t module = 0;
+  double range = 0.0;  ///< m
+};
+
+/// The range likelihood (range_sigma, grown by the context's decorrelation factor).
+MeasurementFit weigh(const RangeReading& r, ParticleFilter& filter, const TrackerContext& c);
+/// The range's gradient at `position` with its white and slowly varying sigmas.
+std::optional<InformingSensor> informing(const RangeReading& r, const Eigen::Vector3d& position,
+                                         const TrackerContext& c);
+/// range_decorrelation_time.
+Decorrelation decorrelation(const RangeReading& r, const TrackerContext& c);
+inline bool usable(const RangeReading& /*r*/, const TrackerContext& /*c*/) {
+  return true;
+}
+/// The module's position and the range.
+SeedRing seedRing(const RangeReading& r, const TrackerContext& c);
 
 }  // namespace estimation
 }  // namespace radio_follow

@@ -3,11 +3,15 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
+#include "radio_follow/common/target_status.hpp"
 #include "radio_follow/config/layout.hpp"
+#include "radio_follow/estimation/correlated_error.hpp"
 #include "radio_follow/estimation/particle_filter.hpp"
+#include "radio_follow/estimation/tracked_reading.hpp"
 
 namespace radio_follow {
 namespace estimation {
@@ -60,6 +64,34 @@ struct RssDirectionLikelihood {
 MeasurementFit weighRssDirection(ParticleFilter& filter, const Eigen::Vector3d& midpoint,
                                  double axis_yaw, double difference,
                                  const RssDirectionLikelihood& model);
+
+/// One opposed pair's RSSI difference (`pair` indexes opposedBoardPairs()), as the
+/// particle tracker takes it: which side, not where. It weighs the hypotheses the other
+/// readings place, places none itself, and counts with the bearings' source bit.
+struct RssDirectionReading {
+  static constexpr std::uint8_t kSource = kSourceAoa;
+  static constexpr bool kFixesDistance = false;
+  static constexpr ColdSeed kColdSeed = ColdSeed::kNone;
+  static std::size_t expectedSensors(const Layout& /*layout*/) { return 0; }
+  SensorPair sensors() const { return {pair, 0}; }
+  std::optional<SensorPair> heardAs() const { return std::nullopt; }
+
+  std::size_t pair = 0;
+  double difference = 0.0;  ///< rssi_a - rssi_b, dB
+};
+
+MeasurementFit weigh(const RssDirectionReading& r, ParticleFilter& filter, const TrackerContext& c);
+/// Nothing: a side is no position error.
+inline std::optional<InformingSensor> informing(const RssDirectionReading& /*r*/,
+                                                const Eigen::Vector3d& /*position*/,
+                                                const TrackerContext& /*c*/) {
+  return std::nullopt;
+}
+inline Decorrelation decorrelation(const RssDirectionReading& /*r*/, const TrackerContext& /*c*/) {
+  return {};
+}
+/// An optional input (rss_direction), and only of a pair the layout has.
+bool usable(const RssDirectionReading& r, const TrackerContext& c);
 
 /// One pair's RSSI difference, formed from one reading of each board.
 struct RssDifference {

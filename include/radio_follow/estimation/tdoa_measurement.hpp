@@ -12,8 +12,9 @@ namespace radio_follow {
 namespace estimation {
 
 // A TDoA distance difference between two anchors on the robot: the observation, its
-// model, its Ceres cost, its autodiff reference and its particle likelihood (the range's
-// heavy-tailed one, symmetric: either anchor's path may be long).
+// model, its Ceres cost, its autodiff reference, its particle likelihood (the range's
+// heavy-tailed one, symmetric: either anchor's path may be long) and its answers to the
+// particle tracker (tracked_reading.hpp).
 
 /// A TDoA distance difference |p - a| - |p - b|.
 struct TdoaObservation {
@@ -80,6 +81,38 @@ struct TdoaFunctor {
 /// (tracking frame); `model` should be symmetric (one_sided false).
 MeasurementFit weighTdoa(ParticleFilter& filter, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                          double difference, const RangeLikelihood& model);
+
+/// A distance difference |p - a| - |p - b| of TDoA anchors `anchor_a` and `anchor_b`
+/// (layout indices), offset-corrected, as the particle tracker takes it: it fixes the
+/// distance once several pairs cross, and a cold start samples a disc around the robot
+/// (one pair's hyperbola gives a direction only). All pairs count as one sensor heard.
+struct TdoaReading {
+  static constexpr std::uint8_t kSource = kSourceTdoa;
+  static constexpr bool kFixesDistance = true;
+  static constexpr ColdSeed kColdSeed = ColdSeed::kDisc;
+  static std::size_t expectedSensors(const Layout& layout) {
+    return layout.tdoa_anchors.empty() ? 0 : 1;
+  }
+  SensorPair sensors() const { return {anchor_a, anchor_b}; }
+  std::optional<SensorPair> heardAs() const { return SensorPair{0, 0}; }
+
+  std::size_t anchor_a = 0;
+  std::size_t anchor_b = 0;
+  double difference = 0.0;  ///< m
+  double sigma = 0.0;       ///< m, the message's or tdoa_sigma
+};
+
+/// The symmetric heavy-tailed likelihood with the reading's own sigma.
+MeasurementFit weigh(const TdoaReading& r, ParticleFilter& filter, const TrackerContext& c);
+std::optional<InformingSensor> informing(const TdoaReading& r, const Eigen::Vector3d& position,
+                                         const TrackerContext& c);
+/// None: a blink's differences come from different anchor pairs.
+inline Decorrelation decorrelation(const TdoaReading& /*r*/, const TrackerContext& /*c*/) {
+  return {};
+}
+inline bool usable(const TdoaReading& /*r*/, const TrackerContext& /*c*/) {
+  return true;
+}
 
 }  // namespace estimation
 }  // namespace radio_follow

@@ -410,22 +410,16 @@ TrackerOutput collinearRangesWithRss(const Eigen::Vector3d& truth, bool rss, uns
   for (int k = 0; k < 40; ++k) {
     const double t = 0.1 * k;
     for (std::size_t i = 0; i < 3; ++i) {
-      TrackedMeasurement m;
-      m.kind = TrackedMeasurement::Kind::kRange;
-      m.t = t + 0.01 * static_cast<double>(i);
-      m.sensor = i;
-      m.value = (truth - layout.twr_modules[i].position).norm() + range_noise(rng);
-      tracker.add(m);
+      const double range = (truth - layout.twr_modules[i].position).norm() + range_noise(rng);
+      tracker.add({t + 0.01 * static_cast<double>(i), std::nullopt, RangeReading{i, range}});
     }
     for (std::size_t p = 0; p < pairs.size(); ++p) {
       const AoaBoard& a = layout.aoa_boards[pairs[p].a];
       const bool ahead_of_a = (a.orientation.conjugate() * (truth - a.position)).x() > 0.0;
-      TrackedMeasurement m;
-      m.kind = TrackedMeasurement::Kind::kRssDirection;
-      m.t = t + 0.05 + 0.01 * static_cast<double>(p);
-      m.sensor = p;
-      m.value = (ahead_of_a ? 6.0 : -6.0) + rssi_noise(rng);
-      tracker.add(m);  // fed in both runs: without rss_direction the tracker skips them
+      const double difference = (ahead_of_a ? 6.0 : -6.0) + rssi_noise(rng);
+      // Fed in both runs: without rss_direction the tracker skips them.
+      tracker.add({t + 0.05 + 0.01 * static_cast<double>(p), std::nullopt,
+                   RssDirectionReading{p, difference}});
     }
     out = tracker.update(t + 0.1);
   }
