@@ -346,10 +346,11 @@ void ClosedLoop::runLocator(double now) {
   // one no robot can act on makes the estimate LOST for the controller (estimateQuality).
   const std::optional<estimation::OdometryEstimate> odom =
       odometry_track_.update(estimate, [this](double t) { return odometryAt(t); });
-  const Eigen::Vector3d unknown = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
-  const bool acted_on =
-      !odom || control::plausibleOdometryPart(Eigen::Vector3d(odom->robot.x(), odom->robot.y(), 0.0),
-                                              odom->position, odom->velocity.value_or(unknown));
+  const Eigen::Vector3d unknown =
+      Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+  const bool acted_on = !odom || control::plausibleOdometryPart(
+                                     Eigen::Vector3d(odom->robot.x(), odom->robot.y(), 0.0),
+                                     odom->position, odom->velocity.value_or(unknown));
   // The controller's estimate callback: the follower core, then the estimate's own
   // odometry-frame part.
   const control::EstimateUse use = follower_.onEstimate(

@@ -337,8 +337,7 @@ TEST(Locator, DiagnosticsNameTheSilentInputAndTheHardware) {
         for (const auto& kv : locator.values) {
           silent = kv.key == "silent inputs" ? kv.value : silent;
         }
-        done = !locator.name.empty() && !target.name.empty() &&
-               silent == "/aoa/left/bearing" &&
+        done = !locator.name.empty() && !target.name.empty() && silent == "/aoa/left/bearing" &&
                target.level == diagnostic_msgs::DiagnosticStatus::OK;
       });
   const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(20.0);
