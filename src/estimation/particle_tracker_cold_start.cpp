@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 #include <tuple>
 #include <type_traits>
@@ -60,20 +61,17 @@ bool ParticleTracker::coldStart(double now) {
   bool any_fix = false;
   std::set<SensorKey> heard;
   for (const auto& [key, m] : newest) {
-    if (coldSeedOf(*m) == ColdSeed::kRing) {
-      const SeedRing r = std::visit(
-          [this, m = m](const auto& reading) {
-            if constexpr (std::decay_t<decltype(reading)>::kColdSeed == ColdSeed::kRing) {
-              return seedRing(reading, context(Pose2{}, m->t));
-            } else {
-              return SeedRing{};
-            }
-          },
-          m->reading);
-      if (ring == nullptr || r.radius < ring_seed.radius) {
-        ring = m;
-        ring_seed = r;
-      }
+    const std::optional<SeedRing> r = std::visit(
+        [this, m = m](const auto& reading) -> std::optional<SeedRing> {
+          if constexpr (std::decay_t<decltype(reading)>::kColdSeed == ColdSeed::kRing) {
+            return seedRing(reading, context(Pose2{}, m->t));
+          }
+          return std::nullopt;
+        },
+        m->reading);
+    if (r && (ring == nullptr || r->radius < ring_seed.radius)) {
+      ring = m;
+      ring_seed = *r;
     }
     any_disc = any_disc || coldSeedOf(*m) == ColdSeed::kDisc;
     any_fix = any_fix || fixesDistance(*m);
