@@ -8,20 +8,12 @@ namespace estimation {
 
 Eigen::Matrix3d fisherInformation(const ObservationSet& observations, const Eigen::Vector3d& p) {
   Eigen::Matrix3d info = Eigen::Matrix3d::Zero();
-  Eigen::RowVector3d j;
-  for (const auto& z : observations.ranges) {
-    rangeResidual(z, p, &j);
-    info += j.transpose() * j;
-  }
-  for (const auto& z : observations.tdoas) {
-    tdoaResidual(z, p, &j);
-    info += j.transpose() * j;
-  }
-  Eigen::Matrix<double, 2, 3> jb;
-  for (const auto& z : observations.bearings) {
-    bearingResidual(z, p, &jb);
-    info += jb.transpose() * jb;
-  }
+  observations.forEach([&](const auto& list) {
+    for (const auto& z : list) {
+      const auto j = residualJacobian(z, p);
+      info += j.transpose() * j;
+    }
+  });
   return info;
 }
 

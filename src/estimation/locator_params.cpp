@@ -240,9 +240,9 @@ SolverEstimatorConfig LocatorConfig::solverEstimator() const {
   SolverEstimatorConfig e;
   e.solver.planar = c.planar;
   e.solver.height = c.height;
-  e.solver.range_loss = c.range_loss;
-  e.solver.tdoa_loss = c.tdoa_loss;
-  e.solver.bearing_loss = c.bearing_loss;
+  e.solver.loss<RangeObservation>() = c.range_loss;
+  e.solver.loss<TdoaObservation>() = c.tdoa_loss;
+  e.solver.loss<BearingObservation>() = c.bearing_loss;
   e.solver.ceres_covariance = c.ceres_covariance;
   e.solver.prior_range = c.default_range;
   e.kalman.model = c.motion_model;

@@ -9,14 +9,23 @@
 #include <cmath>
 #include <deque>
 #include <limits>
+#include <tuple>
+#include <type_traits>
 
-#include "radio_follow/common/param_error.hpp"
 #include "radio_follow/estimation/fisher.hpp"
 #include "radio_follow/estimation/measurement_models.hpp"
 
 namespace radio_follow {
 namespace estimation {
 namespace {
+
+/// One deque of cost functions per kind of a solve's ObservationSet::lists().
+template <typename Lists>
+struct CostStorage;
+template <typename... List>
+struct CostStorage<std::tuple<const List&...>> {
+  std::tuple<std::deque<typename List::value_type::Cost>...> deques;
+};
 
 std::unique_ptr<ceres::LossFunction> makeLoss(const LossConfig& loss) {
   switch (loss.type) {
@@ -34,36 +43,8 @@ std::unique_ptr<ceres::LossFunction> makeLoss(const LossConfig& loss) {
 
 }  // namespace
 
-LossType parseLossType(const std::string& text, const std::string& parameter) {
-  if (text == "none")
-    return LossType::kNone;
-  if (text == "huber")
-    return LossType::kHuber;
-  if (text == "soft_l1")
-    return LossType::kSoftL1;
-  if (text == "cauchy")
-    return LossType::kCauchy;
-  throw ParamError(parameter, paramValueString(text), "one of none, huber, soft_l1, cauchy");
-}
-
-std::string toString(LossType type) {
-  switch (type) {
-    case LossType::kHuber:
-      return "huber";
-    case LossType::kSoftL1:
-      return "soft_l1";
-    case LossType::kCauchy:
-      return "cauchy";
-    case LossType::kNone:
-      break;
-  }
-  return "none";
-}
-
 struct PositionSolver::CeresParts {
-  std::unique_ptr<ceres::LossFunction> range_loss;
-  std::unique_ptr<ceres::LossFunction> tdoa_loss;
-  std::unique_ptr<ceres::LossFunction> bearing_loss;
+  PerObservationKind<std::unique_ptr<ceres::LossFunction>> losses;
   ceres::HuberLoss convex_loss{2.0};
   ceres::SubsetManifold fixed_z{3, {2}};
   ceres::Problem::Options problem_options;
@@ -72,9 +53,9 @@ struct PositionSolver::CeresParts {
 
 PositionSolver::PositionSolver(const SolverConfig& config)
     : config_(config), parts_(std::make_unique<CeresParts>()) {
-  parts_->range_loss = makeLoss(config.range_loss);
-  parts_->tdoa_loss = makeLoss(config.tdoa_loss);
-  parts_->bearing_loss = makeLoss(config.bearing_loss);
+  for (std::size_t k = 0; k < config.losses.size(); ++k) {
+    parts_->losses[k] = makeLoss(config.losses[k]);
+  }
   // The solver owns nothing per problem: losses and the manifold live as long as the
   // solver, cost functions on the stack of solveOnce. No allocation churn per epoch.
   auto& po = parts_->problem_options;
@@ -133,27 +114,21 @@ SolveResult PositionSolver::solveOnce(const ObservationSet& observations,
   SolveResult result;
   double p[3] = {initial.x(), initial.y(), config_.planar ? config_.height : initial.z()};
   // Cost functions are not movable; deques keep their addresses stable while growing.
-  std::deque<RangeCost> ranges;
-  std::deque<TdoaCost> tdoas;
-  std::deque<BearingCost> bearings;
+  CostStorage<decltype(observations.lists())> costs;
+  std::deque<RangeCost>& ranges = std::get<std::deque<RangeCost>>(costs.deques);
 
-  ceres::LossFunction* convex = convex_stage ? &parts_->convex_loss : nullptr;
-  ceres::LossFunction* range_loss = convex_stage ? convex : parts_->range_loss.get();
-  ceres::LossFunction* tdoa_loss = convex_stage ? convex : parts_->tdoa_loss.get();
-  ceres::LossFunction* bearing_loss = convex_stage ? convex : parts_->bearing_loss.get();
   ceres::Problem problem(parts_->problem_options);
-  for (const auto& z : observations.ranges) {
-    ranges.emplace_back(z);
-    problem.AddResidualBlock(&ranges.back(), range_loss, p);
-  }
-  for (const auto& z : observations.tdoas) {
-    tdoas.emplace_back(z);
-    problem.AddResidualBlock(&tdoas.back(), tdoa_loss, p);
-  }
-  for (const auto& z : observations.bearings) {
-    bearings.emplace_back(z);
-    problem.AddResidualBlock(&bearings.back(), bearing_loss, p);
-  }
+  observations.forEach([&](const auto& list) {
+    using Observation = typename std::decay_t<decltype(list)>::value_type;
+    using Cost = typename Observation::Cost;
+    ceres::LossFunction* loss =
+        convex_stage ? &parts_->convex_loss : parts_->losses[kindIndex<Observation>()].get();
+    auto& deque = std::get<std::deque<Cost>>(costs.deques);
+    for (const auto& z : list) {
+      deque.emplace_back(z);
+      problem.AddResidualBlock(&deque.back(), loss, p);
+    }
+  });
   if (observations.ranges.empty()) {
     RangeObservation prior;
     prior.range = config_.prior_range;

@@ -81,9 +81,9 @@ bool SolverEstimator::mirrorAmbiguous(const ObservationSet& obs, const SolveResu
   if (config_.ambiguity_margin <= 0.0 || !config_.solver.planar) {
     return false;
   }
-  if (side_confirmed_ && (!obs.bearings.empty() || !obs.tdoas.empty())) {
-    // A bearing (or a distance difference) of a confirmed track: the mirror's residual is
-    // tens of sigmas, the test would only repeat what it found. Range-only epochs keep
+  if (side_confirmed_ && obs.size() > obs.ranges.size()) {
+    // A bearing (or any reading but a range) of a confirmed track: the mirror's residual
+    // is tens of sigmas, the test would only repeat what it found. Range-only epochs keep
     // testing, so that a track that drifts onto the wrong side is caught.
     return false;
   }
@@ -143,13 +143,13 @@ LocatorEstimate SolverEstimator::estimate(double now, const FreshMeasurements& f
     out.bearings_used.push_back(fresh.boards[k].board);
     newest = std::max(newest, fresh.bearing_stamps[k]);
   }
-  out.sources = (obs.ranges.empty() ? 0 : kSourceTwr) | (obs.tdoas.empty() ? 0 : kSourceTdoa) |
-                (obs.bearings.empty() ? 0 : kSourceAoa);
+  out.sources = obs.sources();
   out.stamp = std::isfinite(newest) ? newest : now;
 
-  // Is the position determined at all by what is fresh?
+  // Is the position determined at all by what is fresh? Ranges fix the distance from the
+  // robot (and start the solve, trilaterate); every other kind helps them.
   const bool ranged = !obs.ranges.empty();
-  const bool helpers = !obs.bearings.empty() || !obs.tdoas.empty();
+  const bool helpers = obs.size() > obs.ranges.size();
   const std::size_t full_ranges = config_.solver.planar ? 3 : 4;
   const bool warm_usable = warm_.has_value() && warm_ranged_ == ranged;
   if (obs.empty() || (ranged && !helpers && obs.ranges.size() < full_ranges - 1) ||

@@ -33,7 +33,7 @@ struct MontecarloOptions {
   int trials = 0;
   unsigned long seed = 0;
   std::string layouts;
-  rf::estimation::LossConfig range_loss = rf::estimation::SolverConfig{}.range_loss;
+  rf::estimation::LossConfig range_loss = rf::estimation::RangeObservation::kDefaultLoss;
   bool outliers = false;
 };
 
@@ -73,7 +73,7 @@ void accuracyTable(const MontecarloOptions& opt, const std::vector<Case>& cases)
       "(us) |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
   rf::estimation::SolverConfig config;
   config.height = kTargetHeight;
-  config.range_loss = opt.range_loss;
+  config.loss<rf::estimation::RangeObservation>() = opt.range_loss;
   const rf::estimation::PositionSolver solver(config);
   rf::estimation::InitializerConfig init;
   init.height = kTargetHeight;
@@ -180,7 +180,8 @@ void outlierTable(const MontecarloOptions& opt, const std::vector<Case>& cases) 
     for (const auto& loss : losses) {
       rf::estimation::SolverConfig config;
       config.height = kTargetHeight;
-      config.range_loss = config.bearing_loss = loss;
+      config.loss<rf::estimation::RangeObservation>() =
+          config.loss<rf::estimation::BearingObservation>() = loss;
       const rf::estimation::PositionSolver solver(config);
       double se[2] = {0.0, 0.0};
       int n[2] = {0, 0};

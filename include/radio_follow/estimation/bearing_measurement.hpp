@@ -14,6 +14,7 @@
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/estimation/correlated_error.hpp"
 #include "radio_follow/estimation/particle_filter.hpp"
+#include "radio_follow/estimation/robust_loss.hpp"
 #include "radio_follow/estimation/tracked_reading.hpp"
 
 namespace radio_follow {
@@ -23,8 +24,15 @@ namespace estimation {
 // observation, its model, its Ceres cost, its autodiff reference, its particle likelihood
 // and its answers to the particle tracker (tracked_reading.hpp), in one place.
 
-/// An angle-of-arrival bearing measured by one board, in that board's frame.
+class BearingCost;
+
+/// An angle-of-arrival bearing measured by one board, in that board's frame. Its loss
+/// unless tuned: bearing_loss.
 struct BearingObservation {
+  using Cost = BearingCost;
+  static constexpr LossConfig kDefaultLoss{LossType::kHuber, 2.0};
+  static constexpr std::uint8_t kSource = kSourceAoa;
+
   Eigen::Vector3d board = Eigen::Vector3d::Zero();  ///< board position, fixed frame, m
   /// Rotation board -> fixed frame (columns are the board axes in the fixed frame).
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
@@ -68,6 +76,13 @@ inline Eigen::Vector2d bearingResidual(const BearingObservation& z, const Eigen:
     *jacobian = dv * z.rotation.transpose();
   }
   return residual;
+}
+
+inline Eigen::Matrix<double, 2, 3> residualJacobian(const BearingObservation& z,
+                                                    const Eigen::Vector3d& p) {
+  Eigen::Matrix<double, 2, 3> j;
+  bearingResidual(z, p, &j);
+  return j;
 }
 
 /// Analytic wrapped (azimuth, elevation) residual in the board frame.
@@ -158,7 +173,7 @@ MeasurementFit weighBearing(ParticleFilter& filter, const Eigen::Vector3d& board
 /// removed, as the particle tracker takes it: a direction only, and a cold start samples
 /// rays along it when nothing fixes the distance.
 struct BearingReading {
-  static constexpr std::uint8_t kSource = kSourceAoa;
+  static constexpr std::uint8_t kSource = BearingObservation::kSource;
   static constexpr bool kFixesDistance = false;
   static constexpr ColdSeed kColdSeed = ColdSeed::kRay;
   static std::size_t expectedSensors(const Layout& layout) { return layout.aoa_boards.size(); }

@@ -49,9 +49,9 @@ struct LocatorConfig {
   double azimuth_sigma = deg2rad(5.0);           ///< rad
   double elevation_sigma = deg2rad(10.0);        ///< rad
   bool use_elevation = true;
-  LossConfig range_loss{LossType::kCauchy, 2.0};
-  LossConfig tdoa_loss{LossType::kCauchy, 2.0};
-  LossConfig bearing_loss{LossType::kHuber, 2.0};
+  LossConfig range_loss = RangeObservation::kDefaultLoss;
+  LossConfig tdoa_loss = TdoaObservation::kDefaultLoss;
+  LossConfig bearing_loss = BearingObservation::kDefaultLoss;
   double max_age = ParticleTrackerConfig().max_age;  ///< s; older measurements are dropped
   AoaSelectorConfig aoa;
   MotionModel motion_model = MotionModel::kConstantVelocity;

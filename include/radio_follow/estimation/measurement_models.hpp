@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <tuple>
 #include <type_traits>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -29,19 +31,76 @@ namespace estimation {
 /// locator's `default_range` (initializer, particle tracker).
 constexpr double kDefaultRange = 3.0;
 
-/// Everything one solve uses.
+/// Everything one solve uses: one list per kind. The solver, its Fisher information and
+/// the estimate's sources visit the lists through lists(), in its order (the order of the
+/// residual blocks), and ask each kind's observation type for its cost, loss and source.
 struct ObservationSet {
   std::vector<RangeObservation> ranges;
   std::vector<TdoaObservation> tdoas;
   std::vector<BearingObservation> bearings;
 
-  bool empty() const { return ranges.empty() && tdoas.empty() && bearings.empty(); }
+  auto lists() const { return std::tie(ranges, tdoas, bearings); }
+  auto lists() { return std::tie(ranges, tdoas, bearings); }
+
+  /// Calls `f` with each kind's list, in lists() order.
+  template <typename F>
+  void forEach(F&& f) const {
+    std::apply([&](const auto&... list) { (f(list), ...); }, lists());
+  }
+  template <typename F>
+  void forEach(F&& f) {
+    std::apply([&](auto&... list) { (f(list), ...); }, lists());
+  }
+
+  std::size_t size() const {
+    std::size_t n = 0;
+    forEach([&](const auto& list) { n += list.size(); });
+    return n;
+  }
+  bool empty() const { return size() == 0; }
   void clear() {
-    ranges.clear();
-    tdoas.clear();
-    bearings.clear();
+    forEach([](auto& list) { list.clear(); });
+  }
+  /// The source bits (target_status.hpp) of the kinds present.
+  std::uint8_t sources() const {
+    std::uint8_t bits = 0;
+    forEach([&](const auto& list) {
+      using Observation = typename std::decay_t<decltype(list)>::value_type;
+      bits |= list.empty() ? 0 : Observation::kSource;
+    });
+    return bits;
   }
 };
+
+/// One value per solver kind, in ObservationSet::lists() order, and its index by kind.
+template <typename T>
+using PerObservationKind =
+    std::array<T, std::tuple_size_v<decltype(std::declval<ObservationSet>().lists())>>;
+
+namespace detail {
+template <typename Observation, typename Lists>
+struct KindIndex;
+template <typename Observation, typename... List>
+struct KindIndex<Observation, std::tuple<List&...>> {
+  static constexpr std::size_t value = [] {
+    constexpr bool match[] = {std::is_same_v<std::vector<Observation>, List>...};
+    for (std::size_t i = 0; i < sizeof...(List); ++i) {
+      if (match[i])
+        return i;
+    }
+    return sizeof...(List);
+  }();
+};
+}  // namespace detail
+
+template <typename Observation>
+constexpr std::size_t kindIndex() {
+  constexpr std::size_t i =
+      detail::KindIndex<Observation, decltype(std::declval<ObservationSet&>().lists())>::value;
+  static_assert(i < std::tuple_size_v<decltype(std::declval<ObservationSet>().lists())>,
+                "not a kind of ObservationSet");
+  return i;
+}
 
 /// A calibrated reading of one kind, as the particle tracker takes it. The order is that
 /// of the sensor keys (SensorKey's first element), by which cold starts and the

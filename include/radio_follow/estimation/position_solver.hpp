@@ -3,7 +3,7 @@
 
 #include <Eigen/Core>
 #include <memory>
-#include <string>
+#include <type_traits>
 #include <vector>
 
 #include "radio_follow/config/layout.hpp"
@@ -12,26 +12,22 @@
 namespace radio_follow {
 namespace estimation {
 
-/// Robust loss applied to one sensor type's whitened residuals.
-enum class LossType { kNone, kHuber, kSoftL1, kCauchy };
-
-struct LossConfig {
-  LossType type = LossType::kNone;
-  /// Residual size (in sigmas) where the loss starts to down-weight.
-  double scale = 1.0;
-};
-
-/// "none" | "huber" | "soft_l1" | "cauchy"; throws ParamError naming `parameter` otherwise.
-LossType parseLossType(const std::string& text, const std::string& parameter);
-std::string toString(LossType type);
+/// Each kind's default loss (its observation type's kDefaultLoss), kindIndex() order.
+inline PerObservationKind<LossConfig> defaultLosses() {
+  PerObservationKind<LossConfig> losses;
+  ObservationSet{}.forEach([&](const auto& list) {
+    using Observation = typename std::decay_t<decltype(list)>::value_type;
+    losses[kindIndex<Observation>()] = Observation::kDefaultLoss;
+  });
+  return losses;
+}
 
 struct SolverConfig {
   /// 2D mode: z is held at `height` (a Ceres subset manifold), 3D mode: z is free.
   bool planar = true;
   double height = kDefaultTargetHeight;
-  LossConfig range_loss{LossType::kCauchy, 2.0};
-  LossConfig tdoa_loss{LossType::kCauchy, 2.0};
-  LossConfig bearing_loss{LossType::kHuber, 2.0};
+  /// The robust loss of each kind's residuals (range_loss, tdoa_loss, bearing_loss).
+  PerObservationKind<LossConfig> losses = defaultLosses();
   int max_iterations = 25;
   /// Covariance from ceres::Covariance (robust-loss-weighted Jacobian, SVD, rank deficiency
   /// reported) instead of the inverse Fisher information at the solution.
@@ -41,6 +37,15 @@ struct SolverConfig {
   /// (the observable part) can be solved. Metres.
   double prior_range = kDefaultRange;
   double prior_range_sigma = 10.0;
+
+  template <typename Observation>
+  LossConfig& loss() {
+    return losses[kindIndex<Observation>()];
+  }
+  template <typename Observation>
+  const LossConfig& loss() const {
+    return losses[kindIndex<Observation>()];
+  }
 };
 
 struct SolveResult {
@@ -55,8 +60,8 @@ struct SolveResult {
   int iterations = 0;
 };
 
-/// Nonlinear least squares for the target position with Ceres: one residual per range,
-/// TDoA difference and bearing (analytic Jacobians), each with its sensor type's loss.
+/// Nonlinear least squares for the target position with Ceres: one residual block per
+/// observation (its kind's analytic cost), each with its kind's loss.
 /// Stateless between calls; the caller chooses the starting point.
 class PositionSolver {
  public:

@@ -12,6 +12,7 @@
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/estimation/correlated_error.hpp"
 #include "radio_follow/estimation/particle_filter.hpp"
+#include "radio_follow/estimation/robust_loss.hpp"
 #include "radio_follow/estimation/tracked_reading.hpp"
 
 namespace radio_follow {
@@ -23,8 +24,16 @@ namespace estimation {
 // one place. The TDoA difference reuses the model and the likelihood
 // (tdoa_measurement.hpp).
 
-/// A two-way range from a module on the robot to the target, already calibrated.
+class RangeCost;
+
+/// A two-way range from a module on the robot to the target, already calibrated. Its
+/// answers to the solver (measurement_models.hpp): its cost, its loss unless tuned
+/// (range_loss), the source bit of an estimate it helped.
 struct RangeObservation {
+  using Cost = RangeCost;
+  static constexpr LossConfig kDefaultLoss{LossType::kCauchy, 2.0};
+  static constexpr std::uint8_t kSource = kSourceTwr;
+
   Eigen::Vector3d module = Eigen::Vector3d::Zero();  ///< module position, fixed frame, m
   double range = 0.0;                                ///< measured range, m
   double sigma = 0.03;                               ///< standard deviation, m
@@ -53,6 +62,13 @@ inline double rangeResidual(const RangeObservation& z, const Eigen::Vector3d& p,
     *jacobian /= z.sigma;
   }
   return (r - z.range) / z.sigma;
+}
+
+/// The whitened residual's Jacobian (the Fisher information's part of a range).
+inline Eigen::RowVector3d residualJacobian(const RangeObservation& z, const Eigen::Vector3d& p) {
+  Eigen::RowVector3d j;
+  rangeResidual(z, p, &j);
+  return j;
 }
 
 /// Analytic (||p - m|| - r) / sigma, one parameter block: the target position [x, y, z]
@@ -121,7 +137,7 @@ MeasurementFit weighRange(ParticleFilter& filter, const Eigen::Vector3d& module,
 /// A calibrated range of TWR module `module` (layout index), as the particle tracker
 /// takes it: it fixes the distance, and a cold start samples a ring around the module.
 struct RangeReading {
-  static constexpr std::uint8_t kSource = kSourceTwr;
+  static constexpr std::uint8_t kSource = RangeObservation::kSource;
   static constexpr bool kFixesDistance = true;
   static constexpr ColdSeed kColdSeed = ColdSeed::kRing;
   static std::size_t expectedSensors(const Layout& layout) { return layout.twr_modules.size(); }

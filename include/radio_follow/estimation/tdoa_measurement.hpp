@@ -16,8 +16,14 @@ namespace estimation {
 // heavy-tailed one, symmetric: either anchor's path may be long) and its answers to the
 // particle tracker (tracked_reading.hpp).
 
-/// A TDoA distance difference |p - a| - |p - b|.
+class TdoaCost;
+
+/// A TDoA distance difference |p - a| - |p - b|. Its loss unless tuned: tdoa_loss.
 struct TdoaObservation {
+  using Cost = TdoaCost;
+  static constexpr LossConfig kDefaultLoss{LossType::kCauchy, 2.0};
+  static constexpr std::uint8_t kSource = kSourceTdoa;
+
   Eigen::Vector3d anchor_a = Eigen::Vector3d::Zero();  ///< fixed frame, m
   Eigen::Vector3d anchor_b = Eigen::Vector3d::Zero();  ///< fixed frame, m
   double difference = 0.0;                             ///< m
@@ -35,6 +41,12 @@ inline double tdoaResidual(const TdoaObservation& z, const Eigen::Vector3d& p,
     *jacobian = (ga - gb) / z.sigma;
   }
   return (ra - rb - z.difference) / z.sigma;
+}
+
+inline Eigen::RowVector3d residualJacobian(const TdoaObservation& z, const Eigen::Vector3d& p) {
+  Eigen::RowVector3d j;
+  tdoaResidual(z, p, &j);
+  return j;
 }
 
 /// Analytic (||p - a|| - ||p - b|| - d) / sigma.
@@ -87,7 +99,7 @@ MeasurementFit weighTdoa(ParticleFilter& filter, const Eigen::Vector3d& a, const
 /// distance once several pairs cross, and a cold start samples a disc around the robot
 /// (one pair's hyperbola gives a direction only). All pairs count as one sensor heard.
 struct TdoaReading {
-  static constexpr std::uint8_t kSource = kSourceTdoa;
+  static constexpr std::uint8_t kSource = TdoaObservation::kSource;
   static constexpr bool kFixesDistance = true;
   static constexpr ColdSeed kColdSeed = ColdSeed::kDisc;
   static std::size_t expectedSensors(const Layout& layout) {

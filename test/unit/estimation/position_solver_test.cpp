@@ -35,7 +35,7 @@ TEST(PositionSolver, RecoversTruthAndCovarianceFromNoiseFreeRanges) {
 TEST(PositionSolver, CeresCovarianceAgreesWithFisherWithoutLoss) {
   const Layout layout = test::shippedLayout("spot.yaml");
   SolverConfig config;
-  config.range_loss.type = config.bearing_loss.type = LossType::kNone;
+  config.loss<RangeObservation>().type = config.loss<BearingObservation>().type = LossType::kNone;
   config.ceres_covariance = true;
   PositionSolver solver(config);
   const Eigen::Vector3d truth(4.0, 1.0, config.height);
@@ -69,9 +69,9 @@ TEST(PositionSolver, RobustLossResistsANonLineOfSightRange) {
   ObservationSet obs = idealObservations(layout, truth, SyntheticNoise{}, 0);
   obs.ranges[0].range += 2.0;  // NLOS: the direct path is blocked, the echo is longer
   SolverConfig plain;
-  plain.range_loss.type = LossType::kNone;
+  plain.loss<RangeObservation>().type = LossType::kNone;
   SolverConfig robust;
-  robust.range_loss = {LossType::kCauchy, 1.0};
+  robust.loss<RangeObservation>() = {LossType::kCauchy, 1.0};
   const SolveResult a = PositionSolver(plain).solve(obs, truth);
   const SolveResult b = PositionSolver(robust).solve(obs, truth);
   ASSERT_TRUE(a.success && b.success);
