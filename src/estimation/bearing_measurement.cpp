@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "radio_follow/common/plausibility.hpp"
 #include "radio_follow/estimation/fast_exp.hpp"
+#include "radio_follow/estimation/locator.hpp"
 #include "radio_follow/estimation/particle_tracker.hpp"
 
 namespace radio_follow {
@@ -168,6 +170,32 @@ SeedRay seedRay(const BearingReading& r, const TrackerContext& c) {
   ray.azimuth = r.azimuth;
   ray.elevation = r.elevation;
   return ray;
+}
+
+Intake accept(BearingReading& r, const LocatorIntake& c) {
+  if (r.board >= c.layout.aoa_boards.size() || !plausibleAngleRad(r.azimuth) ||
+      !plausibleAngleRad(r.elevation)) {
+    return Intake::kRefused;
+  }
+  r.elevation = std::clamp(r.elevation - c.layout.aoa_boards[r.board].elevation_offset, -0.5 * kPi,
+                           0.5 * kPi);
+  return Intake::kAccepted;
+}
+
+void observe(const BearingReading& r, double t, const LocatorIntake& c, FreshMeasurements& fresh,
+             LocatorEstimate& out) {
+  const AoaBoard& board = c.layout.aoa_boards[r.board];
+  AoaCandidate candidate;
+  candidate.board = r.board;
+  candidate.position = board.position;
+  candidate.rotation = board.orientation.toRotationMatrix();
+  candidate.field_of_view = board.field_of_view;
+  candidate.rssi = r.rssi;
+  fresh.boards.push_back(candidate);
+  fresh.angles.emplace_back(r.azimuth, r.elevation);
+  fresh.bearing_stamps.push_back(t);
+  out.bearings_fresh.push_back(r.board);
+  out.bearing_angles.emplace_back(r.azimuth, r.elevation);
 }
 
 }  // namespace estimation

@@ -13,13 +13,13 @@ namespace estimation {
 ParticleEstimator::ParticleEstimator(const Layout& layout, const ParticleTrackerConfig& config)
     : boards_(layout.aoa_boards), config_(config), tracker_(layout, config), rss_(boards_) {}
 
-void ParticleEstimator::add(const TrackedMeasurement& m, double rssi) {
+void ParticleEstimator::add(const TrackedMeasurement& m) {
   tracker_.add(m);
   const auto* bearing = std::get_if<BearingReading>(&m.reading);
   if (bearing == nullptr || !config_.rss_direction) {
     return;
   }
-  if (const std::optional<RssDifference> d = rss_.add(bearing->board, rssi, m.t)) {
+  if (const std::optional<RssDifference> d = rss_.add(bearing->board, bearing->rssi, m.t)) {
     // The pair's readings are within 0.1 s of this one: its pose.
     tracker_.add({d->t, m.pose, RssDirectionReading{d->pair, d->difference}});
   }

@@ -1,10 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/estimation/range_measurement.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "radio_follow/common/angles.hpp"
+#include "radio_follow/common/plausibility.hpp"
 #include "radio_follow/estimation/fast_exp.hpp"
+#include "radio_follow/estimation/locator.hpp"
 #include "radio_follow/estimation/particle_tracker.hpp"
 
 namespace radio_follow {
@@ -96,6 +100,27 @@ SeedRing seedRing(const RangeReading& r, const TrackerContext& c) {
   ring.centre = c.layout.twr_modules[r.module].position;
   ring.radius = r.range;
   return ring;
+}
+
+Intake accept(RangeReading& r, const LocatorIntake& c) {
+  // The drivers' bounds (plausibility.hpp), and 0 m is no range to solve with.
+  if (r.module >= c.layout.twr_modules.size() || !plausibleRange(r.range) || r.range <= 0.0) {
+    return Intake::kRefused;
+  }
+  r.range = c.layout.twr_modules[r.module].correctRange(r.range);
+  return r.range > 0.0 ? Intake::kAccepted : Intake::kRefused;
+}
+
+void observe(const RangeReading& r, double t, const LocatorIntake& c, FreshMeasurements& fresh,
+             LocatorEstimate& out) {
+  RangeObservation z;
+  z.module = c.layout.twr_modules[r.module].position;
+  z.range = r.range;
+  z.sigma = c.config.range_sigma;
+  fresh.obs.ranges.push_back(z);
+  fresh.newest = std::max(fresh.newest, t);
+  out.ranges_used.push_back(r.module);
+  out.ranges_m.push_back(z.range);
 }
 
 }  // namespace estimation

@@ -1,6 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "radio_follow/estimation/tdoa_measurement.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "radio_follow/common/plausibility.hpp"
+#include "radio_follow/estimation/locator.hpp"
 #include "radio_follow/estimation/particle_tracker.hpp"
 
 namespace radio_follow {
@@ -38,6 +44,37 @@ std::optional<InformingSensor> informing(const TdoaReading& r, const Eigen::Vect
   s.white_sigma = r.sigma;
   s.bias_sigma = c.config.tdoa_bias_sigma;
   return s;
+}
+
+Intake accept(TdoaReading& r, const LocatorIntake& c) {
+  const std::size_t anchors = c.layout.tdoa_anchors.size();
+  if (r.anchor_a >= anchors || r.anchor_b >= anchors || r.anchor_a == r.anchor_b ||
+      !plausibleDistanceDifference(r.difference)) {
+    return Intake::kRefused;
+  }
+  if (c.tdoa_calibration.active()) {
+    const std::optional<double> offset = c.tdoa_calibration.offset(r.anchor_a, r.anchor_b);
+    if (!offset) {
+      ++c.stats.tdoa_uncalibrated;  // an uncorrected offset would turn the heading
+      return Intake::kHeld;
+    }
+    r.difference -= *offset;
+  }
+  if (!(r.sigma > 0.0 && std::isfinite(r.sigma))) {
+    r.sigma = c.config.tdoa_sigma;
+  }
+  return Intake::kAccepted;
+}
+
+void observe(const TdoaReading& r, double t, const LocatorIntake& c, FreshMeasurements& fresh,
+             LocatorEstimate& /*out*/) {
+  TdoaObservation z;
+  z.anchor_a = c.layout.tdoa_anchors[r.anchor_a].position;
+  z.anchor_b = c.layout.tdoa_anchors[r.anchor_b].position;
+  z.difference = r.difference;
+  z.sigma = r.sigma;
+  fresh.obs.tdoas.push_back(z);
+  fresh.newest = std::max(fresh.newest, t);
 }
 
 }  // namespace estimation

@@ -183,6 +183,7 @@ struct BearingReading {
   std::size_t board = 0;
   double azimuth = 0.0;    ///< rad
   double elevation = 0.0;  ///< rad
+  double rssi = 0.0;       ///< dBm (the solver's board selection, the RSS direction)
 };
 
 /// The bearing likelihood with the board's field of view (tested on the cloud's mean, or
@@ -202,6 +203,14 @@ inline bool usable(const BearingReading& /*r*/, const TrackerContext& /*c*/) {
 }
 /// The board's position and orientation and the angles.
 SeedRay seedRay(const BearingReading& r, const TrackerContext& c);
+
+/// A known board and plausible angles, then the board's elevation offset removed (a real
+/// board reads low): both estimators, and the published bearing, see the corrected one.
+Intake accept(BearingReading& r, const LocatorIntake& c);
+/// The board as a candidate for the solver's selection (which boards may speak is the
+/// estimator's choice); the estimate's bearings_fresh and bearing_angles.
+void observe(const BearingReading& r, double t, const LocatorIntake& c, FreshMeasurements& fresh,
+             LocatorEstimate& out);
 
 }  // namespace estimation
 }  // namespace radio_follow

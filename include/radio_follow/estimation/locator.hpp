@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <cmath>
 #include <cstddef>
+#include <map>
 #include <optional>
 #include <vector>
 
@@ -17,33 +19,52 @@
 namespace radio_follow {
 namespace estimation {
 
-/// The target locator: keeps the newest measurement of every sensor (dropped after
-/// max_age, or when stamped ahead of the clock), learns the TDoA offsets, and hands the
-/// measurements to the configured PositionEstimator (ParticleEstimator or
-/// SolverEstimator). Time is double seconds; no ROS.
+/// What a kind's accept() and observe() may read (tracked_reading.hpp), and the
+/// statistics they count in.
+struct LocatorIntake {
+  const Layout& layout;
+  const LocatorConfig& config;
+  const TdoaCalibration& tdoa_calibration;
+  LocatorStats& stats;
+};
+
+/// The target locator: keeps the newest reading of every sensor (dropped after max_age,
+/// or when stamped ahead of the clock), learns the TDoA offsets, and hands the readings
+/// to the configured PositionEstimator (ParticleEstimator or SolverEstimator). It names
+/// no measurement kind: each kind's reading checks and calibrates itself (accept) and
+/// puts itself into an update (observe). Time is double seconds; no ROS.
 class Locator {
  public:
   Locator(const Layout& layout, const LocatorConfig& config);
 
-  // Sensors are named by their index in the layout's lists (Layout::twrModuleIndex and
-  // the like): the wrappers resolve a message's IDs once, not the core on every message.
-  // An index the layout does not have (kNoSensor) is refused and counted.
-
-  /// Raw (uncalibrated) range of TWR module `module`; false if the module is unknown
-  /// or the range is not finite and positive.
+  /// A raw reading at `t`, its sensors named by their index in the layout's lists
+  /// (Layout::twrModuleIndex and the like): the wrappers resolve a message's IDs once, not
+  /// the core on every message. False when its kind refuses it (an index the layout does
+  /// not have, kNoSensor, or an implausible value) or `t` is not finite: counted in
+  /// LocatorStats::invalid_measurements. True when accepted, or held by its kind (a TDoA
+  /// pair waiting for its offset).
   /// `pose`: the robot in the odometry frame at `t` (particle estimator: the track is
-  /// then kept in the odometry frame; give it for every measurement or for none).
+  /// then kept in the odometry frame; give it for every reading or for none).
+  bool add(double t, TrackedReading reading, const std::optional<Pose2>& pose = std::nullopt);
+
+  // Shorthands of add() for the kinds the package ships.
+
+  /// Raw (uncalibrated) range of TWR module `module`.
   bool addRange(std::size_t module, double raw_range, double t,
-                const std::optional<Pose2>& pose = std::nullopt);
-  /// Bearing of board `board` in the board frame.
+                const std::optional<Pose2>& pose = std::nullopt) {
+    return add(t, RangeReading{module, raw_range}, pose);
+  }
+  /// Bearing of board `board` in the board frame, with the board's RSSI, dBm.
   bool addBearing(std::size_t board, double azimuth, double elevation, double rssi, double t,
-                  const std::optional<Pose2>& pose = std::nullopt);
+                  const std::optional<Pose2>& pose = std::nullopt) {
+    return add(t, BearingReading{board, azimuth, elevation, rssi}, pose);
+  }
   /// Distance difference |p - a| - |p - b| of anchors a and b; variance <= 0 uses tdoa_sigma.
-  /// With TDoA auto-calibration active (TdoaCalibration::active) the pair's learnt offset
-  /// is subtracted first; until the pair has one the difference is held back (counted in
-  /// LocatorStats::tdoa_uncalibrated, not refused).
   bool addTdoa(std::size_t a, std::size_t b, double difference, double variance, double t,
-               const std::optional<Pose2>& pose = std::nullopt);
+               const std::optional<Pose2>& pose = std::nullopt) {
+    const double sigma = variance > 0.0 && std::isfinite(variance) ? std::sqrt(variance) : 0.0;
+    return add(t, TdoaReading{a, b, difference, sigma}, pose);
+  }
   /// A difference |m - a| - |m - b| of one of the robot's own TWR modules' blinks: feeds
   /// the anchors' offsets (TdoaCalibration), never the estimate. False for an unknown
   /// module or anchor or a value that is not finite.
@@ -73,26 +94,15 @@ class Locator {
   const TdoaCalibration& tdoaCalibration() const { return tdoa_calibration_; }
 
  private:
-  struct Stamped {
+  /// A sensor's newest accepted reading.
+  struct Slot {
     double t = -1.0;
     bool valid = false;
-  };
-  struct RangeSlot : Stamped {
-    double range = 0.0;
-  };
-  struct BearingSlot : Stamped {
-    double azimuth = 0.0;
-    double elevation = 0.0;
-    double rssi = 0.0;
-  };
-  struct TdoaSlot : Stamped {
-    std::size_t a = 0;
-    std::size_t b = 0;
-    double difference = 0.0;
-    double sigma = 0.0;
+    TrackedReading reading;
   };
 
-  bool fresh(Stamped& slot, double now);
+  LocatorIntake intake() { return {layout_, config_, tdoa_calibration_, stats_}; }
+  bool fresh(Slot& slot, double now);
   /// The estimator config_.estimator names; the other one is idle.
   PositionEstimator& active();
 
@@ -102,9 +112,8 @@ class Locator {
   SolverEstimator solver_;
   ParticleEstimator particle_;
   TdoaCalibration tdoa_calibration_;
-  std::vector<RangeSlot> ranges_;
-  std::vector<BearingSlot> bearings_;
-  std::vector<TdoaSlot> tdoas_;
+  /// By sensor: an update visits them in SensorKey order (kind, then layout index).
+  std::map<SensorKey, Slot> slots_;
   LocatorStats stats_;
   TimePolicy time_;
 };

@@ -19,7 +19,7 @@ class ParticleEstimator : public PositionEstimator {
  public:
   ParticleEstimator(const Layout& layout, const ParticleTrackerConfig& config);
 
-  void add(const TrackedMeasurement& m, double rssi) override;
+  void add(const TrackedMeasurement& m) override;
   /// The fresh lists only feed the diagnostics (which bearings were "used").
   LocatorEstimate estimate(double now, const FreshMeasurements& fresh, LocatorEstimate partial,
                            LocatorStats& stats) override;

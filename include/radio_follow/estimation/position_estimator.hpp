@@ -16,15 +16,15 @@ namespace estimation {
 /// What is fresh at an update, as the Locator assembled it from its slots (the newest
 /// measurement of each sensor, none older than max_age nor stamped ahead of the clock).
 struct FreshMeasurements {
-  /// Ranges (calibrated) and TDoA differences (offset-corrected) with their sigmas; no
-  /// bearings: which boards may speak is the estimator's choice.
+  /// Every kind's fresh readings (calibrated, with their sigmas) but the bearings: which
+  /// boards may speak is the estimator's choice.
   ObservationSet obs;
   /// Every board with a fresh bearing, in layout order, and of each its (azimuth,
   /// elevation) in the board frame (elevation offset removed), rad, and stamp, s.
   std::vector<AoaCandidate> boards;
   std::vector<Eigen::Vector2d> angles;
   std::vector<double> bearing_stamps;
-  /// Newest stamp among obs's ranges and differences, s; -inf when there are none.
+  /// Newest stamp among obs's readings, s; -inf when there are none.
   double newest = -std::numeric_limits<double>::infinity();
 };
 
@@ -41,11 +41,10 @@ class PositionEstimator {
   virtual ~PositionEstimator() = default;
 
   /// An accepted, calibrated measurement, at once (only the active estimator gets them).
-  /// `rssi`: the board's RSSI with a bearing, dBm (unused for other kinds).
-  virtual void add(const TrackedMeasurement& m, double rssi) = 0;
-  /// Every accepted bearing's RSSI, whichever estimator is active: history that must be
+  virtual void add(const TrackedMeasurement& m) = 0;
+  /// Every accepted measurement, whichever estimator is active: history that must be
   /// there when a live switch makes this estimator the active one. Default: none kept.
-  virtual void recordRssi(std::size_t /*board*/, double /*rssi*/) {}
+  virtual void record(const TrackedMeasurement& /*m*/) {}
   /// The estimate at `now`. `partial` carries what the Locator filled in (solver_cost NaN,
   /// ranges_used, ranges_m, bearings_fresh, bearing_angles); the estimator adds its part
   /// and counts solves, failures, LOST, AMBIGUOUS and non-finite epochs in `stats`.

@@ -161,5 +161,11 @@ inline bool usable(const RangeReading& /*r*/, const TrackerContext& /*c*/) {
 /// The module's position and the range.
 SeedRing seedRing(const RangeReading& r, const TrackerContext& c);
 
+/// A known module and a plausible positive raw range, then the module's calibration.
+Intake accept(RangeReading& r, const LocatorIntake& c);
+/// A RangeObservation with range_sigma; the estimate's ranges_used and ranges_m.
+void observe(const RangeReading& r, double t, const LocatorIntake& c, FreshMeasurements& fresh,
+             LocatorEstimate& out);
+
 }  // namespace estimation
 }  // namespace radio_follow

@@ -92,6 +92,12 @@ inline Decorrelation decorrelation(const RssDirectionReading& /*r*/, const Track
 }
 /// An optional input (rss_direction), and only of a pair the layout has.
 bool usable(const RssDirectionReading& r, const TrackerContext& c);
+/// Refused: the particle estimator forms these from the bearings' RSSI; no sensor sends one.
+inline Intake accept(RssDirectionReading& /*r*/, const LocatorIntake& /*c*/) {
+  return Intake::kRefused;
+}
+inline void observe(const RssDirectionReading& /*r*/, double /*t*/, const LocatorIntake& /*c*/,
+                    FreshMeasurements& /*fresh*/, LocatorEstimate& /*out*/) {}
 
 /// One pair's RSSI difference, formed from one reading of each board.
 struct RssDifference {

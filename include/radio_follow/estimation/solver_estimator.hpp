@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <memory>
 #include <optional>
+#include <variant>
 
 #include "radio_follow/estimation/aoa_selector.hpp"
 #include "radio_follow/estimation/initializer.hpp"
@@ -46,8 +47,13 @@ class SolverEstimator : public PositionEstimator {
   SolverEstimator(std::size_t board_count, const SolverEstimatorConfig& config);
 
   /// Measurements are read from the Locator's fresh lists at each update: nothing to do.
-  void add(const TrackedMeasurement& /*m*/, double /*rssi*/) override {}
-  void recordRssi(std::size_t board, double rssi) override { selector_.recordRssi(board, rssi); }
+  void add(const TrackedMeasurement& /*m*/) override {}
+  /// A bearing's RSSI: the board selection's history.
+  void record(const TrackedMeasurement& m) override {
+    if (const auto* bearing = std::get_if<BearingReading>(&m.reading)) {
+      selector_.recordRssi(bearing->board, bearing->rssi);
+    }
+  }
   LocatorEstimate estimate(double now, const FreshMeasurements& fresh, LocatorEstimate partial,
                            LocatorStats& stats) override;
   /// Forgets the filter's track, the warm start and the mirror test's side; keeps the

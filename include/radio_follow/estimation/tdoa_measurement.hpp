@@ -126,5 +126,14 @@ inline bool usable(const TdoaReading& /*r*/, const TrackerContext& /*c*/) {
   return true;
 }
 
+/// Two distinct known anchors and a plausible difference; the pair's learnt offset
+/// removed while TDoA auto-calibration is active (held, counted in
+/// LocatorStats::tdoa_uncalibrated, until the pair has one); a sigma that is not positive
+/// and finite becomes tdoa_sigma.
+Intake accept(TdoaReading& r, const LocatorIntake& c);
+/// A TdoaObservation with the reading's sigma.
+void observe(const TdoaReading& r, double t, const LocatorIntake& c, FreshMeasurements& fresh,
+             LocatorEstimate& out);
+
 }  // namespace estimation
 }  // namespace radio_follow

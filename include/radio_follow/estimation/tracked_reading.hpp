@@ -26,8 +26,25 @@ namespace estimation {
 //     `usable()` (an optional input switched off), and `seedRing()` or `seedRay()` for
 //     its ColdSeed.
 // The readings are listed once, in measurement_models.hpp's TrackedReading.
+//
+// The Locator (locator.hpp) asks two more, so that it names no kind either:
+//   - `Intake accept(Reading& raw, const LocatorIntake&)`: checks a raw reading against
+//     the layout and the plausible bounds and calibrates it in place;
+//   - `void observe(const Reading&, double t, const LocatorIntake&, FreshMeasurements&,
+//     LocatorEstimate&)`: puts a fresh reading into what the estimators get at an update
+//     (the solver's observations) and into the estimate's record of what was used.
 
-struct TrackerContext;  // particle_tracker.hpp: the layout, the tuning, the robot's pose
+struct TrackerContext;     // particle_tracker.hpp: the layout, the tuning, the robot's pose
+struct LocatorIntake;      // locator.hpp: the layout, the tuning, the TDoA calibration
+struct FreshMeasurements;  // position_estimator.hpp
+struct LocatorEstimate;    // locator_types.hpp
+
+/// What the Locator does with a raw reading its kind has checked.
+enum class Intake {
+  kAccepted,  ///< calibrated: kept as its sensor's newest and handed to the estimator
+  kHeld,      ///< valid but not usable yet (a TDoA pair without its offset): counted by the kind
+  kRefused,   ///< unknown sensor or implausible value: counted as invalid
+};
 
 /// Layout indices of the sensors a reading comes from (the second: a TDoA pair's b).
 using SensorPair = std::pair<std::size_t, std::size_t>;

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <string>
 
@@ -84,6 +85,16 @@ TEST(Locator, ImplausibleRangesAreRefused) {
                                 0.0));  // a long plain number from a device
   EXPECT_FALSE(locator.addRange(locator.layout().twrModuleIndex("5722"), kMaxUwbRange + 1.0, 0.0));
   EXPECT_EQ(locator.stats().invalid_measurements, 2u);
+}
+
+TEST(Locator, NoSensorSendsAnRssDirection) {
+  // The particle estimator forms RSS directions from the bearings' RSSI: a reading of
+  // that kind handed to the Locator is refused and counted, like any invalid input.
+  Locator locator(layoutFile("cube.yaml"), LocatorConfig{});
+  EXPECT_FALSE(locator.add(0.0, RssDirectionReading{0, 3.0}));
+  EXPECT_FALSE(locator.add(std::nan(""), RangeReading{0, 3.0}));
+  EXPECT_EQ(locator.stats().invalid_measurements, 2u);
+  EXPECT_EQ(locator.update(0.0).status, TargetStatus::kLost);
 }
 
 TEST(Locator, OneRangeAloneIsLost) {
