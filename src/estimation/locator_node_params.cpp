@@ -29,9 +29,10 @@ const ParamTable<LocatorNodeParams>& LocatorNodeParams::table() {
 
 void LocatorNodeParams::load(const ParamSource& nh) {
   table().load(nh, *this);
-  nh.param("uwb_topics", uwb_topics, uwb_topics);
-  nh.param("aoa_topics", aoa_topics, aoa_topics);
-  nh.param("tdoa_topics", tdoa_topics, tdoa_topics);
+  for (const std::string& name : topicsParams()) {
+    std::vector<std::string>& list = topics[name];
+    nh.param(name, list, list);
+  }
   locator.load(nh);
 }
 

@@ -176,6 +176,7 @@ struct BearingReading {
   static constexpr std::uint8_t kSource = BearingObservation::kSource;
   static constexpr bool kFixesDistance = false;
   static constexpr ColdSeed kColdSeed = ColdSeed::kRay;
+  static constexpr const char* kTopicsParam = "aoa_topics";
   static std::size_t expectedSensors(const Layout& layout) { return layout.aoa_boards.size(); }
   SensorPair sensors() const { return {board, 0}; }
   std::optional<SensorPair> heardAs() const { return sensors(); }

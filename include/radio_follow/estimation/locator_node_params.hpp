@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -16,10 +17,9 @@ namespace estimation {
 /// keys from the same file.
 struct LocatorNodeParams {
   std::string layout_file;  ///< required
-  /// Inputs; all three empty (the default) = the layout's conventional topics.
-  std::vector<std::string> uwb_topics;
-  std::vector<std::string> aoa_topics;
-  std::vector<std::string> tdoa_topics;
+  /// Inputs, by each kind's topics parameter (topicsParams(): uwb_topics, aoa_topics,
+  /// tdoa_topics); all empty (the default) = the layout's conventional topics.
+  std::map<std::string, std::vector<std::string>> topics;
   double rate = 20.0;                   ///< solves per second, Hz
   std::string target_frame = "target";  ///< child frame of the published TF
   bool publish_tf = true;

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <tuple>
 #include <type_traits>
 #include <utility>
@@ -153,8 +154,25 @@ struct Kinds<std::variant<Reading...>> {
     return ((!distance_only || Reading::kFixesDistance ? Reading::expectedSensors(layout) : 0) +
             ...);
   }
+  template <typename F>
+  static void forEach(F&& f) {
+    (f(static_cast<const Reading*>(nullptr)), ...);
+  }
 };
 }  // namespace detail
+
+/// The locator node's topics parameters (kTopicsParam), one per kind that has one, in
+/// TrackedReading order.
+inline std::vector<std::string> topicsParams() {
+  std::vector<std::string> names;
+  detail::Kinds<TrackedReading>::forEach([&](const auto* kind) {
+    using Reading = std::remove_cv_t<std::remove_pointer_t<decltype(kind)>>;
+    if (Reading::kTopicsParam != nullptr) {
+      names.emplace_back(Reading::kTopicsParam);
+    }
+  });
+  return names;
+}
 
 /// The sensors of `layout` a cold start waits to hear, over every kind.
 inline std::size_t expectedSensors(const Layout& layout) {

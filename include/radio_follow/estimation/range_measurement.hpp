@@ -140,6 +140,7 @@ struct RangeReading {
   static constexpr std::uint8_t kSource = RangeObservation::kSource;
   static constexpr bool kFixesDistance = true;
   static constexpr ColdSeed kColdSeed = ColdSeed::kRing;
+  static constexpr const char* kTopicsParam = "uwb_topics";
   static std::size_t expectedSensors(const Layout& layout) { return layout.twr_modules.size(); }
   SensorPair sensors() const { return {module, 0}; }
   std::optional<SensorPair> heardAs() const { return sensors(); }

@@ -72,6 +72,7 @@ struct RssDirectionReading {
   static constexpr std::uint8_t kSource = kSourceAoa;
   static constexpr bool kFixesDistance = false;
   static constexpr ColdSeed kColdSeed = ColdSeed::kNone;
+  static constexpr const char* kTopicsParam = nullptr;  ///< formed by the locator, no topic
   static std::size_t expectedSensors(const Layout& /*layout*/) { return 0; }
   SensorPair sensors() const { return {pair, 0}; }
   std::optional<SensorPair> heardAs() const { return std::nullopt; }

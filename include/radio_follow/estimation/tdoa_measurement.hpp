@@ -102,6 +102,7 @@ struct TdoaReading {
   static constexpr std::uint8_t kSource = TdoaObservation::kSource;
   static constexpr bool kFixesDistance = true;
   static constexpr ColdSeed kColdSeed = ColdSeed::kDisc;
+  static constexpr const char* kTopicsParam = "tdoa_topics";
   static std::size_t expectedSensors(const Layout& layout) {
     return layout.tdoa_anchors.empty() ? 0 : 1;
   }

@@ -21,6 +21,8 @@ namespace estimation {
 //     start waits to hear;
 //   - `SensorPair sensors() const`: the sensors it comes from;
 //   - `std::optional<SensorPair> heardAs() const`: the sensor a cold start counts as heard;
+//   - `static constexpr const char* kTopicsParam`: the locator node's parameter listing its
+//     input topics (nullptr: it has none);
 //   - free functions taking the reading first: `weigh()` (its likelihood of the
 //     particles), `informing()` (its part of the covariance floor), `decorrelation()`,
 //     `usable()` (an optional input switched off), and `seedRing()` or `seedRay()` for

@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <limits>
 
@@ -94,13 +93,6 @@ LocatorNode::LocatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
     inputs_ = std::make_unique<LocatorInputs>(
         *locator_, [this](const ros::Time& stamp) { return odometryPose(stamp); });
   }
-  if (params_.uwb_topics.empty() && params_.aoa_topics.empty() && params_.tdoa_topics.empty()) {
-    const SensorTopics topics = conventionalTopics(layout_);
-    params_.uwb_topics = topics.uwb;
-    params_.aoa_topics = topics.aoa;
-    params_.tdoa_topics = topics.tdoa;
-  }
-
   target_pub_ = nh.advertise<TargetEstimate>("target", 10);
   pose_pub_ = nh.advertise<geometry_msgs::PoseWithCovarianceStamped>("target_pose", 10);
   markers_pub_ = nh.advertise<visualization_msgs::MarkerArray>("markers", 1);
@@ -110,15 +102,7 @@ LocatorNode::LocatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
     debugAdvertised(path_pub_);
     path_.header.frame_id = layout_.fixed_frame;
   }
-  for (const auto& topic : params_.uwb_topics) {
-    subscribe<UwbRanges>(nh, topic, &LocatorNode::onRanges);
-  }
-  for (const auto& topic : params_.aoa_topics) {
-    subscribe<AoaBearing>(nh, topic, &LocatorNode::onBearing);
-  }
-  for (const auto& topic : params_.tdoa_topics) {
-    subscribe<TdoaMeasurements>(nh, topic, &LocatorNode::onTdoa);
-  }
+  subscribeInputs(nh);
   std::vector<std::string> resolved;
   for (const ros::Subscriber& s : subscribers_) {
     resolved.push_back(s.getTopic());
@@ -158,19 +142,26 @@ std::optional<Pose2> LocatorNode::odometryPose(const ros::Time& stamp) const {
                         params_.tf_tolerance);
 }
 
-template <typename Message>
-void LocatorNode::subscribe(ros::NodeHandle& nh, const std::string& topic,
-                            void (LocatorNode::*callback)(const typename Message::ConstPtr&)) {
-  const std::size_t index = subscribers_.size();
-  const boost::function<void(const typename Message::ConstPtr&)> handler =
-      [this, index, callback, topic](const typename Message::ConstPtr& msg) {
-        barrier_.run(topic, [&] {
-          noteInput(index);
-          (this->*callback)(msg);
-        });
-      };
-  subscribers_.push_back(nh.subscribe<Message>(topic, 50, handler));
-  debugSubscribed(subscribers_.back());
+void LocatorNode::subscribeInputs(ros::NodeHandle& nh) {
+  bool none_given = true;
+  for (const auto& [param, topics] : params_.topics) {
+    none_given = none_given && topics.empty();
+  }
+  for (const auto& input : inputs_->inputs()) {
+    const std::vector<std::string> topics =
+        none_given ? input->defaultTopics(layout_) : params_.topics[input->topicsParam()];
+    for (const std::string& topic : topics) {
+      const std::size_t index = subscribers_.size();
+      subscribers_.push_back(input->subscribe(
+          nh, topic, [this, index, topic](const std::function<std::size_t()>& handle) {
+            barrier_.run(topic, [&] {
+              noteInput(index);
+              ignored_messages_ += handle();
+            });
+          }));
+      debugSubscribed(subscribers_.back());
+    }
+  }
 }
 
 void LocatorNode::noteInput(std::size_t index) {
@@ -222,41 +213,6 @@ void LocatorNode::watchInputs(const ros::Time& now) {
                              s.bearings_rejected_fov - last_stats_.bearings_rejected_fov);
   }
   last_stats_ = s;
-}
-
-void LocatorNode::onRanges(const UwbRanges::ConstPtr& msg) {
-  if (const std::size_t refused = inputs_->add(*msg)) {
-    ignored_messages_ += refused;
-    ROS_WARN_THROTTLE(5.0, "locator: ignoring range from unknown module '%s' or invalid value",
-                      (msg->tag_id.empty() ? msg->header.frame_id : msg->tag_id).c_str());
-  }
-  if (inputs_->targetRanges() == 0 && !inputs_->otherAnchors().empty()) {
-    // Ranges arrive, none to the target: a wrong target.uwb_anchor_id leaves the
-    // estimate LOST for good, so say which anchors are heard.
-    std::string heard;
-    for (const auto& [anchor, count] : inputs_->otherAnchors()) {
-      heard += (heard.empty() ? "" : ", ") + anchor;
-    }
-    ROS_WARN_THROTTLE(5.0,
-                      "locator: ranges to anchor(s) %s but none to the layout's target "
-                      "'%s' (target.uwb_anchor_id in %s)",
-                      heard.c_str(), layout_.target_anchor_id.c_str(), params_.layout_file.c_str());
-  }
-}
-
-void LocatorNode::onBearing(const AoaBearing::ConstPtr& msg) {
-  if (inputs_->add(*msg) != 0) {
-    ++ignored_messages_;
-    ROS_WARN_THROTTLE(5.0, "locator: ignoring bearing from unknown board frame '%s'",
-                      msg->header.frame_id.c_str());
-  }
-}
-
-void LocatorNode::onTdoa(const TdoaMeasurements::ConstPtr& msg) {
-  if (const std::size_t refused = inputs_->add(*msg)) {
-    ignored_messages_ += refused;
-    ROS_WARN_THROTTLE(5.0, "locator: ignoring %zu TDoA difference(s) (unknown anchor?)", refused);
-  }
 }
 
 void LocatorNode::onTimer(const ros::TimerEvent& /*event*/) {
@@ -399,29 +355,8 @@ void LocatorNode::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) 
   status.add("filter resets", f.resetCount());
   status.add("lost epochs", s.lost);
   status.add("ignored messages", ignored_messages_);
-  std::size_t other = 0;
-  for (const auto& entry : inputs_->otherAnchors()) {
-    other += entry.second;
-  }
-  status.add("ranges to the target anchor", inputs_->targetRanges());
-  status.add("ranges to other anchors", other);
-  std::size_t other_tdoa = 0;
-  for (const auto& entry : inputs_->otherTdoaTags()) {
-    other_tdoa += entry.second;
-  }
-  status.add("TDoA messages of other tags (not fused)", other_tdoa);
-  status.add("TDoA calibration blinks (robot's modules)", inputs_->calibrationBlinks());
-  status.add("TDoA differences awaiting calibration", s.tdoa_uncalibrated);
-  for (const auto& pair : locator_->tdoaCalibration().pairs()) {
-    const std::string name = "TDoA offset " + layout_.tdoa_anchors[pair.a].id + "-" +
-                             layout_.tdoa_anchors[pair.b].id + " (m)";
-    char value[64];
-    if (pair.offset) {
-      std::snprintf(value, sizeof(value), "%.3f (%zu blinks)", *pair.offset, pair.samples);
-    } else {
-      std::snprintf(value, sizeof(value), "learning (%zu blinks)", pair.samples);
-    }
-    status.add(name, std::string(value));
+  for (const auto& input : inputs_->inputs()) {
+    input->diagnose(status);
   }
   status.add("solve time mean (us)",
              solves_seen_ > 0 ? 1e6 * solve_seconds_sum_ / static_cast<double>(solves_seen_) : 0.0);

@@ -14,10 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "radio_follow/AoaBearing.h"
 #include "radio_follow/TargetEstimate.h"
-#include "radio_follow/TdoaMeasurements.h"
-#include "radio_follow/UwbRanges.h"
 #include "radio_follow/common/geometry.hpp"
 #include "radio_follow/common/input_watch.hpp"
 #include "radio_follow/estimation/locator.hpp"
@@ -31,7 +28,8 @@
 
 namespace radio_follow {
 
-/// ROS wiring of the Locator: subscribes to the drivers' measurements, runs the solver at
+/// ROS wiring of the Locator: subscribes to the drivers' measurements (one SensorInput per
+/// measurement kind, locator_inputs.hpp), runs the solver at
 /// a fixed rate and publishes the target estimate, its pose, TF, markers, the path of
 /// recent estimates and diagnostics; warns which expected inputs are silent.
 /// Sensor positions come from the layout file (not from TF). See doc/nodes/locator.md.
@@ -42,9 +40,6 @@ class LocatorNode {
   LocatorNode(ros::NodeHandle& nh, ros::NodeHandle& private_nh);
 
  private:
-  void onRanges(const UwbRanges::ConstPtr& msg);
-  void onBearing(const AoaBearing::ConstPtr& msg);
-  void onTdoa(const TdoaMeasurements::ConstPtr& msg);
   void onTimer(const ros::TimerEvent& event);
   void publish(const estimation::LocatorEstimate& estimate, const ros::Time& now);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
@@ -55,9 +50,8 @@ class LocatorNode {
   /// The robot's pose in odom_frame at `stamp` from TF, or nothing.
   std::optional<Pose2> odometryPose(const ros::Time& stamp) const;
   void extendPath(const estimation::LocatorEstimate& estimate, const ros::Time& stamp);
-  template <typename Message>
-  void subscribe(ros::NodeHandle& nh, const std::string& topic,
-                 void (LocatorNode::*callback)(const typename Message::ConstPtr&));
+  /// Subscribes every input to its topics (all topics parameters empty: the layout's).
+  void subscribeInputs(ros::NodeHandle& nh);
 
   Params params_;
   Layout layout_;
