@@ -123,24 +123,9 @@ void writeFile(const std::string& path, const std::string& text) {
 
 // The layout's sensors the bag has no message of, and the bag's sensors the layout does
 // not name: a layout that matches none of the bag explains an empty replay.
-void printSensorMatch(const rf::BagData& bag, const rf::Layout& layout) {
-  std::set<std::string> heard;      // layout IDs with a message
-  std::set<std::string> strangers;  // the bag's IDs or frames the layout does not know
-  for (const auto& msg : bag.ranges) {
-    const std::string& id = msg.tag_id.empty() ? msg.header.frame_id : msg.tag_id;
-    if (const rf::TwrModule* module = layout.findTwrModule(id)) {
-      heard.insert(module->id);
-    } else {
-      strangers.insert("module " + id);
-    }
-  }
-  for (const auto& msg : bag.bearings) {
-    if (const rf::AoaBoard* board = layout.findAoaBoard(msg.header.frame_id)) {
-      heard.insert(board->id);
-    } else {
-      strangers.insert("board frame " + msg.header.frame_id);
-    }
-  }
+void printSensorMatch(const rf::SensorMatch& match, const rf::Layout& layout) {
+  const std::set<std::string>& heard = match.heard;          // layout IDs with a message
+  const std::set<std::string>& strangers = match.strangers;  // IDs the layout does not know
   const rf::SensorTopics topics = rf::conventionalTopics(layout);
   std::vector<std::string> silent;
   for (std::size_t i = 0; i < layout.twr_modules.size(); ++i) {
@@ -317,7 +302,7 @@ int main(int argc, char** argv) {
     std::cout << "bag " << o.bag << ": " << bag.duration() << " s, " << bag.entries.size()
               << " sensor messages, replayed in " << wall << " s ("
               << bag.duration() / std::max(wall, 1e-9) << " x real time)\n";
-    printSensorMatch(bag, layout);
+    printSensorMatch(result.sensors, layout);
     printSummary(result, bag, params.odom_frame, o.truth_topic);
     if (result.refused > 0) {
       std::cout << result.refused << " measurements refused (sensors not in the layout?)\n";

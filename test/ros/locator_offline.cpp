@@ -64,8 +64,8 @@ constexpr double kP95Goal = 0.50;
 TEST_F(LocatorOffline, ReplaysTheRealisticBagInTheOdometryFrameAtTheNodesRate) {
   const rf::BagData bag = rf::loadBag(bag_, "ground_truth/target_relative");
   ASSERT_GT(bag.duration(), 30.0);
-  EXPECT_GT(bag.ranges.size(), 1000u);    // 3 modules at 10 Hz
-  EXPECT_GT(bag.bearings.size(), 1000u);  // 4 boards at 10 Hz
+  EXPECT_GT(bag.count("radio_follow/UwbRanges"), 1000u);   // 3 modules at 10 Hz
+  EXPECT_GT(bag.count("radio_follow/AoaBearing"), 1000u);  // 4 boards at 10 Hz
   EXPECT_GT(bag.truth.size(), 500u);
   EXPECT_GT(bag.tf.size(), 1000u);  // the simulator's odom -> base_link at 100 Hz
 

@@ -2,6 +2,7 @@
 // The AoA bearings' input: AoaBearing of the robot's boards, only of the target's tag when
 // the layout names one, a board named by its frame.
 #include <memory>
+#include <set>
 #include <string>
 
 #include "radio_follow/AoaBearing.h"
@@ -20,6 +21,14 @@ class AoaBearingInput final : public MessageInput<AoaBearing> {
   }
 
   std::size_t add(const AoaBearing& msg) override {
+    const std::size_t board = boards_(msg.header.frame_id, [&](const std::string& id) {
+      return inputs_.layout().aoaBoardIndex(id);
+    });
+    if (board == kNoSensor) {
+      strangers_.insert("board frame " + msg.header.frame_id);
+    } else {
+      heard_.insert(board);
+    }
     const std::string& tag = inputs_.layout().target_tag_id;
     if (!tag.empty() && normalizeId(msg.tag_id) != tag) {
       return 0;
@@ -28,12 +37,16 @@ class AoaBearingInput final : public MessageInput<AoaBearing> {
     if (!inputs_.poseFor(msg.header.stamp, &pose)) {
       return 0;
     }
-    const std::size_t board = boards_(msg.header.frame_id, [&](const std::string& id) {
-      return inputs_.layout().aoaBoardIndex(id);
-    });
     return !inputs_.locator().add(
         msg.header.stamp.toSec(),
         estimation::BearingReading{board, msg.azimuth, msg.elevation, msg.rssi}, pose);
+  }
+
+  void match(SensorMatch& match) const override {
+    for (const std::size_t board : heard_) {
+      match.heard.insert(inputs_.layout().aoa_boards[board].id);
+    }
+    match.strangers.insert(strangers_.begin(), strangers_.end());
   }
 
   void warn(const AoaBearing& msg, std::size_t refused) const override {
@@ -44,7 +57,9 @@ class AoaBearingInput final : public MessageInput<AoaBearing> {
   }
 
  private:
-  IdCache boards_;  // AoaBearing frame -> AoA board index
+  std::set<std::size_t> heard_;      // boards named
+  std::set<std::string> strangers_;  // frames the layout does not have
+  IdCache boards_;                   // AoaBearing frame -> AoA board index
 };
 
 std::unique_ptr<SensorInput> makeAoaBearingInput(LocatorInputs& inputs) {

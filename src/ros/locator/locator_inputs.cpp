@@ -4,15 +4,26 @@
 #include <cmath>
 
 namespace radio_follow {
+namespace {
+
+std::vector<std::unique_ptr<SensorInput>> makeInputs(LocatorInputs& inputs) {
+  std::vector<std::unique_ptr<SensorInput>> all;
+  for (const SensorInputKind& kind : sensorInputKinds()) {
+    all.push_back(kind.make(inputs));
+  }
+  return all;
+}
+
+}  // namespace
 
 LocatorInputs::LocatorInputs(estimation::Locator& locator)
-    : locator_(locator), inputs_(makeSensorInputs(*this)) {}
+    : locator_(locator), inputs_(makeInputs(*this)) {}
 
 LocatorInputs::LocatorInputs(estimation::Locator& locator, PoseLookup lookup, Clock clock)
     : locator_(locator),
       lookup_(std::move(lookup)),
       clock_(std::move(clock)),
-      inputs_(makeSensorInputs(*this)) {}
+      inputs_(makeInputs(*this)) {}
 
 bool LocatorInputs::poseFor(const ros::Time& stamp, std::optional<Pose2>* pose) {
   pose->reset();

@@ -3,6 +3,7 @@
 // anchor, a module named by its ID or else its frame.
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 
 #include "radio_follow/UwbRanges.h"
@@ -26,9 +27,14 @@ class UwbRangesInput final : public MessageInput<UwbRanges> {
     // saying "da12" and a driver printing "DA12" mean the same anchor. (The module lookup,
     // Layout::findTwrModule, normalises the module ID itself.)
     const Layout& layout = inputs_.layout();
+    const std::string& name = msg.tag_id.empty() ? msg.header.frame_id : msg.tag_id;
     const std::size_t module =
-        modules_(msg.tag_id.empty() ? msg.header.frame_id : msg.tag_id,
-                 [&](const std::string& id) { return layout.twrModuleIndex(id); });
+        modules_(name, [&](const std::string& id) { return layout.twrModuleIndex(id); });
+    if (module == kNoSensor) {
+      strangers_.insert("module " + name);
+    } else {
+      heard_.insert(module);
+    }
     std::optional<Pose2> pose;
     if (!inputs_.poseFor(msg.header.stamp, &pose)) {
       return 0;  // counted by the placement
@@ -68,6 +74,13 @@ class UwbRangesInput final : public MessageInput<UwbRanges> {
     }
   }
 
+  void match(SensorMatch& match) const override {
+    for (const std::size_t module : heard_) {
+      match.heard.insert(inputs_.layout().twr_modules[module].id);
+    }
+    match.strangers.insert(strangers_.begin(), strangers_.end());
+  }
+
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) const override {
     std::size_t other = 0;
     for (const auto& entry : other_anchors_) {
@@ -82,7 +95,9 @@ class UwbRangesInput final : public MessageInput<UwbRanges> {
   /// Ranges to other anchors, by normalised anchor ID: with none to the target, the
   /// layout's target.uwb_anchor_id is probably wrong (warn()).
   std::map<std::string, std::size_t> other_anchors_;
-  IdCache modules_;         // UwbRanges tag_id or frame -> TWR module index
+  std::set<std::size_t> heard_;      // modules named
+  std::set<std::string> strangers_;  // names the layout does not have
+  IdCache modules_;                  // UwbRanges tag_id or frame -> TWR module index
   IdCache target_anchors_;  // UwbRange.anchor_id -> 0: the target's, kNoSensor: another
 };
 

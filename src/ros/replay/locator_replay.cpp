@@ -29,23 +29,33 @@ BagData loadBag(const std::string& path, const std::string& truth_topic) {
   // which may differ) only says which transforms had arrived when a measurement did, and
   // times the gaps in TF, as the node's own clock would.
   // Only the connections of these types are read (odometry, commands, ... are skipped).
-  const rosbag::TypeQuery types({"radio_follow/UwbRanges", "radio_follow/AoaBearing",
-                                 "radio_follow/TdoaMeasurements", "geometry_msgs/PointStamped",
-                                 "tf2_msgs/TFMessage"});
-  for (const rosbag::MessageInstance& m : rosbag::View(bag, types)) {
+  const std::vector<SensorInputKind>& kinds = sensorInputKinds();
+  std::vector<std::string> type_names{"geometry_msgs/PointStamped", "tf2_msgs/TFMessage"};
+  for (const SensorInputKind& kind : kinds) {
+    type_names.push_back(kind.message_type);
+  }
+  std::string sensor_types;
+  for (const SensorInputKind& kind : kinds) {
+    sensor_types += (sensor_types.empty() ? "" : ", ") + kind.message_type;
+  }
+  for (const rosbag::MessageInstance& m : rosbag::View(bag, rosbag::TypeQuery(type_names))) {
     const double received = m.getTime().toSec();
-    if (auto r = m.instantiate<UwbRanges>()) {
-      data.entries.push_back(
-          {r->header.stamp.toSec(), received, BagData::Entry::Kind::kRanges, data.ranges.size()});
-      data.ranges.push_back(*r);
-    } else if (auto b = m.instantiate<AoaBearing>()) {
-      data.entries.push_back({b->header.stamp.toSec(), received, BagData::Entry::Kind::kBearing,
-                              data.bearings.size()});
-      data.bearings.push_back(*b);
-    } else if (auto d = m.instantiate<TdoaMeasurements>()) {
-      data.entries.push_back(
-          {d->header.stamp.toSec(), received, BagData::Entry::Kind::kTdoa, data.tdoa.size()});
-      data.tdoa.push_back(*d);
+    const auto kind = std::find_if(kinds.begin(), kinds.end(), [&](const SensorInputKind& k) {
+      return k.message_type == m.getDataType();
+    });
+    if (kind != kinds.end()) {
+      if (m.getMD5Sum() != kind->md5sum) {
+        continue;  // another definition of the type: not this package's message
+      }
+      BagData::Entry entry;
+      entry.received = received;
+      entry.kind = static_cast<std::size_t>(kind - kinds.begin());
+      entry.message.resize(m.size());
+      ros::serialization::OStream stream(entry.message.data(),
+                                         static_cast<std::uint32_t>(entry.message.size()));
+      m.write(stream);
+      entry.t = kind->stamp(entry.message);
+      data.entries.push_back(std::move(entry));
     } else if (auto tf = m.instantiate<tf2_msgs::TFMessage>()) {
       const bool is_static = m.getTopic() == "/tf_static" || m.getTopic() == "tf_static";
       if (is_static || m.getTopic() == "/tf" || m.getTopic() == "tf") {
@@ -60,8 +70,8 @@ BagData loadBag(const std::string& path, const std::string& truth_topic) {
     }
   }
   if (data.entries.empty()) {
-    throw std::runtime_error("bag '" + path +
-                             "' holds no UwbRanges, AoaBearing or TdoaMeasurements message");
+    throw std::runtime_error("bag '" + path + "' holds no message of a sensor input (" +
+                             sensor_types + ")");
   }
   std::stable_sort(data.entries.begin(), data.entries.end(),
                    [](const auto& a, const auto& b) { return a.t < b.t; });
@@ -70,6 +80,13 @@ BagData loadBag(const std::string& path, const std::string& truth_topic) {
   std::stable_sort(data.tf.begin(), data.tf.end(),
                    [](const auto& a, const auto& b) { return a.received < b.received; });
   return data;
+}
+
+std::size_t BagData::count(const std::string& message_type) const {
+  const std::vector<SensorInputKind>& kinds = sensorInputKinds();
+  return static_cast<std::size_t>(
+      std::count_if(entries.begin(), entries.end(),
+                    [&](const Entry& e) { return kinds[e.kind].message_type == message_type; }));
 }
 
 namespace {
@@ -139,17 +156,7 @@ ReplayResult replay(const BagData& bag, const Layout& layout, const LocatorNode:
       if (odometry) {
         feedTf(e.received);
       }
-      switch (e.kind) {
-        case BagData::Entry::Kind::kRanges:
-          result.refused += inputs.add(bag.ranges[e.index]);
-          break;
-        case BagData::Entry::Kind::kBearing:
-          result.refused += inputs.add(bag.bearings[e.index]);
-          break;
-        case BagData::Entry::Kind::kTdoa:
-          result.refused += inputs.add(bag.tdoa[e.index]);
-          break;
-      }
+      result.refused += inputs.inputs()[e.kind]->addSerialized(e.message);
     }
     ReplayRow row;
     row.t = now;
@@ -176,6 +183,7 @@ ReplayResult replay(const BagData& bag, const Layout& layout, const LocatorNode:
   }
   result.availability = double(with_position) / result.rows.size();
   result.placement = inputs.placement();
+  result.sensors = inputs.match();
   return result;
 }
 

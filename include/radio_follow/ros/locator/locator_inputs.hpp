@@ -46,7 +46,7 @@ class IdCache {
 };
 
 /// Hands driver messages to a Locator the one way both the locator node and the offline
-/// replay do: through every kind's SensorInput (makeSensorInputs), each message's
+/// replay do: through every kind's SensorInput (sensorInputKinds()), each message's
 /// readings stamped with its header and, with a pose lookup, placed in the odometry frame.
 class LocatorInputs {
  public:
@@ -75,8 +75,16 @@ class LocatorInputs {
     return 0;
   }
 
-  /// Every kind's input.
+  /// Every kind's input, in sensorInputKinds() order.
   const std::vector<std::unique_ptr<SensorInput>>& inputs() const { return inputs_; }
+  /// What every input's messages named so far.
+  SensorMatch match() const {
+    SensorMatch m;
+    for (const auto& input : inputs_) {
+      input->match(m);
+    }
+    return m;
+  }
 
   // For the inputs.
   estimation::Locator& locator() { return locator_; }

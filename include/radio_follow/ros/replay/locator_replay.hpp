@@ -5,12 +5,10 @@
 #include <geometry_msgs/TransformStamped.h>
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <string>
 #include <vector>
 
-#include "radio_follow/AoaBearing.h"
-#include "radio_follow/TdoaMeasurements.h"
-#include "radio_follow/UwbRanges.h"
 #include "radio_follow/common/error_statistics.hpp"
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/estimation/locator.hpp"
@@ -25,13 +23,10 @@ struct BagData {
   struct Entry {
     double t = 0.0;         ///< the message's header stamp (driver receive time), s
     double received = 0.0;  ///< when the recorder received it (the bag's time), s
-    enum class Kind { kRanges, kBearing, kTdoa } kind = Kind::kRanges;
-    std::size_t index = 0;  ///< into the vector of its kind
+    std::size_t kind = 0;   ///< its input: index into sensorInputKinds()
+    std::vector<std::uint8_t> message;  ///< serialized
   };
   std::vector<Entry> entries;  ///< sorted by t
-  std::vector<UwbRanges> ranges;
-  std::vector<AoaBearing> bearings;
-  std::vector<TdoaMeasurements> tdoa;
   /// The target in the robot frame (the simulator's ground_truth/target_relative), sorted
   /// by stamp.
   std::vector<geometry_msgs::PointStamped> truth;
@@ -44,9 +39,12 @@ struct BagData {
   std::vector<Transform> tf;
 
   double duration() const { return entries.empty() ? 0.0 : entries.back().t - entries.front().t; }
+  /// Messages of `message_type` (e.g. "radio_follow/UwbRanges").
+  std::size_t count(const std::string& message_type) const;
 };
 
-/// Reads every UwbRanges, AoaBearing and TdoaMeasurements message of a bag (any topic),
+/// Reads every message of an input's type (sensorInputKinds(): UwbRanges, AoaBearing,
+/// TdoaMeasurements) of a bag (any topic),
 /// the transforms on /tf and /tf_static and the PointStamped messages on `truth_topic`. Throws
 /// std::runtime_error naming the bag when it cannot be read or holds no sensor message.
 BagData loadBag(const std::string& path, const std::string& truth_topic);
@@ -74,6 +72,7 @@ struct ReplayResult {
   /// Over the rows with a direction (OK/DEGRADED/HEADING_ONLY) and a truth, by status.
   HeadingStatistics heading;
   std::size_t refused = 0;    ///< measurements the locator refused (unknown sensors)
+  SensorMatch sensors;        ///< the layout's sensors the messages named, and strangers
   double availability = 0.0;  ///< share of updates with a position
   /// Where the messages went: placed in the odometry frame, dropped in a TF gap, or in the
   /// robot frame (no odometry in the bag, or `odom_frame` empty: then all of them).
