@@ -115,7 +115,7 @@ constexpr double kMaxBearingSigmaScale = 2.0;
 
 MeasurementFit weigh(const BearingReading& r, ParticleFilter& filter, const TrackerContext& c) {
   const AoaBoard& board = c.layout.aoa_boards[r.board];
-  BearingLikelihood model = c.config.bearing;
+  BearingLikelihood model = c.config.of<BearingReading>().likelihood;
   model.field_of_view = board.field_of_view;
   // A cold start's cloud is spread around the robot: its mean says nothing about where
   // the target is, so each particle asks whether the board sees it.
@@ -146,8 +146,8 @@ std::optional<InformingSensor> informing(const BearingReading& r, const Eigen::V
   }
   InformingSensor s;
   s.gradient = azimuthGradient(c.pose.toFixed(board.position), position);
-  s.white_sigma = c.config.bearing.azimuth_sigma;
-  s.bias_sigma = c.config.azimuth_bias_sigma;
+  s.white_sigma = c.config.of<BearingReading>().likelihood.azimuth_sigma;
+  s.bias_sigma = c.config.of<BearingReading>().bias_sigma;
   return s;
 }
 
@@ -156,8 +156,8 @@ Decorrelation decorrelation(const BearingReading& /*r*/, const TrackerContext& c
   // ranges; with no range the bearings are all the direction there is, and only one
   // advertising interval's readings (one per channel) count as one.
   Decorrelation d;
-  d.time = c.ranged ? c.config.bearing_decorrelation_time
-                    : std::min(c.config.bearing_decorrelation_time, kUnrangedBearingDecorrelation);
+  const double time = c.config.of<BearingReading>().decorrelation_time;
+  d.time = c.ranged ? time : std::min(time, kUnrangedBearingDecorrelation);
   d.max_scale = kMaxBearingSigmaScale;
   return d;
 }

@@ -275,18 +275,25 @@ ParticleTrackerConfig LocatorConfig::tracker() const {
   t.filter.stand_time = c.stand_time;
   t.filter.walk_time = c.walk_time;
   t.filter.stand_noise = c.stand_noise;
-  t.range_decorrelation_time = c.range_decorrelation_time;
-  t.bearing_decorrelation_time = c.bearing_decorrelation_time;
-  t.range.sigma = c.range_sigma;
-  t.range.outlier_share = c.range_outlier_share;
-  t.range.outlier_length = c.range_outlier_length;
-  t.tdoa = t.range;
-  t.tdoa.one_sided = false;  // either anchor's path may be the long one
-  t.bearing.azimuth_sigma = c.azimuth_sigma;
-  t.bearing.elevation_sigma = c.elevation_sigma;
-  t.bearing.use_elevation = c.use_elevation;
-  t.bearing.outlier_share = c.bearing_outlier_share;
-  t.bearing.elevation_outlier_share = c.elevation_outlier_share;
+  RangeReading::Tuning& range = t.of<RangeReading>();
+  range.likelihood.sigma = c.range_sigma;
+  range.likelihood.outlier_share = c.range_outlier_share;
+  range.likelihood.outlier_length = c.range_outlier_length;
+  range.decorrelation_time = c.range_decorrelation_time;
+  range.bias_sigma = c.range_bias_sigma;
+  TdoaReading::Tuning& tdoa = t.of<TdoaReading>();
+  tdoa.likelihood.sigma = c.range_sigma;  // each difference weighs with its own sigma
+  tdoa.likelihood.outlier_share = c.range_outlier_share;
+  tdoa.likelihood.outlier_length = c.range_outlier_length;
+  tdoa.bias_sigma = c.tdoa_bias_sigma;
+  BearingReading::Tuning& bearing = t.of<BearingReading>();
+  bearing.likelihood.azimuth_sigma = c.azimuth_sigma;
+  bearing.likelihood.elevation_sigma = c.elevation_sigma;
+  bearing.likelihood.use_elevation = c.use_elevation;
+  bearing.likelihood.outlier_share = c.bearing_outlier_share;
+  bearing.likelihood.elevation_outlier_share = c.elevation_outlier_share;
+  bearing.decorrelation_time = c.bearing_decorrelation_time;
+  bearing.bias_sigma = c.azimuth_bias_sigma;
   t.max_age = c.max_age;
   t.ambiguity_margin = c.ambiguity_margin;
   t.max_position_sigma = c.max_position_sigma;
@@ -294,14 +301,12 @@ ParticleTrackerConfig LocatorConfig::tracker() const {
   t.lost_sigma = c.lost_sigma;
   t.default_range = c.default_range;
   t.mirror_memory = c.mirror_memory;
-  t.range_bias_sigma = c.range_bias_sigma;
-  t.tdoa_bias_sigma = c.tdoa_bias_sigma;
-  t.azimuth_bias_sigma = c.azimuth_bias_sigma;
-  t.rss_direction = c.rss_direction;
-  t.rss.gain = c.rss_direction_gain;
-  t.rss.sigma = c.rss_direction_sigma;
+  RssDirectionReading::Tuning& rss = t.of<RssDirectionReading>();
+  rss.enabled = c.rss_direction;
+  rss.likelihood.gain = c.rss_direction_gain;
+  rss.likelihood.sigma = c.rss_direction_sigma;
   // A reflected reading's RSSI is as far off as its angle: the bearings' outlier share.
-  t.rss.outlier_share = c.bearing_outlier_share;
+  rss.likelihood.outlier_share = c.bearing_outlier_share;
   return t;
 }
 

@@ -16,7 +16,7 @@ ParticleEstimator::ParticleEstimator(const Layout& layout, const ParticleTracker
 void ParticleEstimator::add(const TrackedMeasurement& m) {
   tracker_.add(m);
   const auto* bearing = std::get_if<BearingReading>(&m.reading);
-  if (bearing == nullptr || !config_.rss_direction) {
+  if (bearing == nullptr || !config_.of<RssDirectionReading>().enabled) {
     return;
   }
   if (const std::optional<RssDifference> d = rss_.add(bearing->board, bearing->rssi, m.t)) {

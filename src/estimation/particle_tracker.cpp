@@ -205,7 +205,7 @@ void ParticleTracker::apply(const TrackedMeasurement& m) {
         // A board hears a tag behind it as its mirror image in front: while the robot
         // stands still, whatever the two clouds' fits say about the side is their own
         // difference, not the data's. Only the field of view's prior counts.
-        const double prior = std::log(config_.bearing.behind_weight);
+        const double prior = std::log(config_.of<BearingReading>().likelihood.behind_weight);
         change = inFront(main_.mean(), pose) ? prior : -prior;
       }
       evidence_ = std::clamp(faded + change, -kMaxEvidence, kMaxEvidence);

@@ -73,7 +73,7 @@ MeasurementFit weighRange(ParticleFilter& filter, const Eigen::Vector3d& module,
 }
 
 MeasurementFit weigh(const RangeReading& r, ParticleFilter& filter, const TrackerContext& c) {
-  RangeLikelihood model = c.config.range;
+  RangeLikelihood model = c.config.of<RangeReading>().likelihood;
   model.sigma *= c.sigma_scale;
   return weighRange(filter, c.pose.toFixed(c.layout.twr_modules[r.module].position), r.range,
                     model);
@@ -84,14 +84,14 @@ std::optional<InformingSensor> informing(const RangeReading& r, const Eigen::Vec
   InformingSensor s;
   s.gradient = rangeGradient(c.pose.toFixed(c.layout.twr_modules[r.module].position), position,
                              c.config.filter.planar);
-  s.white_sigma = c.config.range.sigma;
-  s.bias_sigma = c.config.range_bias_sigma;
+  s.white_sigma = c.config.of<RangeReading>().likelihood.sigma;
+  s.bias_sigma = c.config.of<RangeReading>().bias_sigma;
   return s;
 }
 
 Decorrelation decorrelation(const RangeReading& /*r*/, const TrackerContext& c) {
   Decorrelation d;
-  d.time = c.config.range_decorrelation_time;
+  d.time = c.config.of<RangeReading>().decorrelation_time;
   return d;
 }
 

@@ -123,11 +123,11 @@ MeasurementFit weigh(const RssDirectionReading& r, ParticleFilter& filter,
                      const TrackerContext& c) {
   const RssPair& pair = c.rss_pairs[r.pair];
   return weighRssDirection(filter, c.pose.toFixed(pair.midpoint), c.pose.yaw + pair.axis_yaw,
-                           r.difference, c.config.rss);
+                           r.difference, c.config.of<RssDirectionReading>().likelihood);
 }
 
 bool usable(const RssDirectionReading& r, const TrackerContext& c) {
-  return c.config.rss_direction && r.pair < c.rss_pairs.size();
+  return c.config.of<RssDirectionReading>().enabled && r.pair < c.rss_pairs.size();
 }
 
 }  // namespace estimation

@@ -28,7 +28,7 @@ MeasurementFit weighTdoa(ParticleFilter& filter, const Eigen::Vector3d& a, const
 }
 
 MeasurementFit weigh(const TdoaReading& r, ParticleFilter& filter, const TrackerContext& c) {
-  RangeLikelihood model = c.config.tdoa;
+  RangeLikelihood model = c.config.of<TdoaReading>().likelihood;
   model.sigma = r.sigma;
   return weighTdoa(filter, c.pose.toFixed(c.layout.tdoa_anchors[r.anchor_a].position),
                    c.pose.toFixed(c.layout.tdoa_anchors[r.anchor_b].position), r.difference, model);
@@ -42,7 +42,7 @@ std::optional<InformingSensor> informing(const TdoaReading& r, const Eigen::Vect
                rangeGradient(c.pose.toFixed(c.layout.tdoa_anchors[r.anchor_b].position), position,
                              c.config.filter.planar);
   s.white_sigma = r.sigma;
-  s.bias_sigma = c.config.tdoa_bias_sigma;
+  s.bias_sigma = c.config.of<TdoaReading>().bias_sigma;
   return s;
 }
 

@@ -177,6 +177,15 @@ struct BearingReading {
   static constexpr bool kFixesDistance = false;
   static constexpr ColdSeed kColdSeed = ColdSeed::kRay;
   static constexpr const char* kTopicsParam = "aoa_topics";
+  struct Tuning {
+    BearingLikelihood likelihood;
+    /// The range's decorrelation for a board's bearings while ranges fix the distance
+    /// (real boards report about 30 a second, whose errors share the geometry's multipath
+    /// and stay correlated for seconds while the person walks); without a range, at most
+    /// one advertising interval (0.1 s), s; 0: all fully.
+    double decorrelation_time = 0.5;
+    double bias_sigma = deg2rad(2.0);  ///< rad, the azimuth's slowly varying error
+  };
   static std::size_t expectedSensors(const Layout& layout) { return layout.aoa_boards.size(); }
   SensorPair sensors() const { return {board, 0}; }
   std::optional<SensorPair> heardAs() const { return sensors(); }

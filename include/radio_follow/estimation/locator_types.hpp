@@ -101,20 +101,20 @@ struct LocatorConfig {
   double walk_time = ParticleFilter::Config().walk_time;
   double stand_noise = ParticleFilter::Config().stand_noise;
   /// Particle estimator: a module's ranges closer in time than this count as a fraction
-  /// of a measurement (ParticleTrackerConfig::range_decorrelation_time), s; 0: all fully.
-  double range_decorrelation_time = ParticleTrackerConfig().range_decorrelation_time;
+  /// of a measurement (RangeReading::Tuning::decorrelation_time), s; 0: all fully.
+  double range_decorrelation_time = RangeReading::Tuning().decorrelation_time;
   /// Particle estimator: the same for a board's bearings
-  /// (ParticleTrackerConfig::bearing_decorrelation_time), s; 0: all fully.
-  double bearing_decorrelation_time = ParticleTrackerConfig().bearing_decorrelation_time;
+  /// (BearingReading::Tuning::decorrelation_time), s; 0: all fully.
+  double bearing_decorrelation_time = BearingReading::Tuning().decorrelation_time;
   /// Particle estimator: the slowly varying part of each sensor's error, which filtering
   /// cannot average away (correlated_error.hpp); the floor of the reported covariance.
-  double range_bias_sigma = ParticleTrackerConfig().range_bias_sigma;      ///< m, TWR ranges
-  double tdoa_bias_sigma = ParticleTrackerConfig().tdoa_bias_sigma;        ///< m, TDoA differences
-  double azimuth_bias_sigma = ParticleTrackerConfig().azimuth_bias_sigma;  ///< rad, AoA azimuths
+  double range_bias_sigma = RangeReading::Tuning().bias_sigma;      ///< m, TWR ranges
+  double tdoa_bias_sigma = TdoaReading::Tuning().bias_sigma;        ///< m, TDoA differences
+  double azimuth_bias_sigma = BearingReading::Tuning().bias_sigma;  ///< rad, AoA azimuths
   /// Particle estimator: seed 001's RSS direction. The RSSI difference of two opposed
   /// boards (rss_direction.hpp) weighs which side of the pair the target is on; an
   /// optional input, off by default.
-  bool rss_direction = false;
+  bool rss_direction = RssDirectionReading::Tuning().enabled;
   /// g: the difference with the target straight ahead of one board of a pair, dB (the
   /// front-to-back drop of one board: doc/nodes/locator.md, "RSS direction").
   double rss_direction_gain = RssDirectionLikelihood().gain;

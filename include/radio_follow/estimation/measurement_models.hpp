@@ -108,6 +108,36 @@ constexpr std::size_t kindIndex() {
 /// covariance floor visit the sensors: keep it when adding a kind at the end.
 using TrackedReading = std::variant<RangeReading, BearingReading, TdoaReading, RssDirectionReading>;
 
+namespace detail {
+template <typename Variant>
+struct ReadingTuple;
+template <typename... Reading>
+struct ReadingTuple<std::variant<Reading...>> {
+  using Tunings = std::tuple<typename Reading::Tuning...>;
+  template <typename R>
+  static constexpr std::size_t index() {
+    constexpr bool match[] = {std::is_same_v<R, Reading>...};
+    for (std::size_t i = 0; i < sizeof...(Reading); ++i) {
+      if (match[i])
+        return i;
+    }
+    return sizeof...(Reading);
+  }
+};
+}  // namespace detail
+
+/// Every kind's tuning in the particle tracker (its reading's Tuning), in TrackedReading
+/// order: ParticleTrackerConfig::of<Reading>().
+using ReadingTunings = detail::ReadingTuple<TrackedReading>::Tunings;
+
+/// A reading type's index in TrackedReading.
+template <typename Reading>
+constexpr std::size_t readingIndex() {
+  constexpr std::size_t i = detail::ReadingTuple<TrackedReading>::index<Reading>();
+  static_assert(i < std::variant_size_v<TrackedReading>, "not a kind of TrackedReading");
+  return i;
+}
+
 /// One calibrated reading at its own stamp, with the robot's pose in the tracking frame at
 /// that stamp (none: the robot's own frame is the tracking frame).
 struct TrackedMeasurement {

@@ -24,13 +24,8 @@ namespace estimation {
 /// The particle backend's tuning (filled from LocatorConfig).
 struct ParticleTrackerConfig {
   ParticleFilter::Config filter;
-  RangeLikelihood range;
-  RangeLikelihood tdoa;  ///< sigma per measurement
-  BearingLikelihood bearing;
-  /// Seed 001's RSS direction of opposed boards: an optional input; when false the
-  /// tracker ignores kRssDirection measurements.
-  bool rss_direction = false;
-  RssDirectionLikelihood rss;
+  /// Each kind's tuning: its likelihood, decorrelation and bias (of<Reading>()).
+  ReadingTunings kinds;
   double max_age = 0.5;             ///< s; measurements older than this are dropped
   double ambiguity_margin = 2.0;    ///< nats; see ParticleTracker
   /// s, time constant of the mirror evidence's fading: two of the bearings' correlation
@@ -40,22 +35,15 @@ struct ParticleTrackerConfig {
   double max_relative_sigma = 0.1;  ///< ... or this fraction of the distance
   double lost_sigma = 1.0;          ///< m, worst axis beyond which the track is LOST
   double default_range = kDefaultRange;  ///< m, distance reported along a bearing alone
-  /// A module's ranges closer in time than this are not independent (real errors stay
-  /// correlated over tenths of a second and longer): one arriving dt < this after the
-  /// module's previous one counts as dt / this of a measurement (its sigma grows by
-  /// sqrt(this / dt)), so a 100 Hz module carries the information of a 10 Hz one and the
-  /// cloud does not collapse onto the current error. s; 0: every range counts fully.
-  double range_decorrelation_time = 0.1;
-  /// The same for a board's bearings while ranges fix the distance (real boards report
-  /// about 30 a second, whose errors share the geometry's multipath and stay correlated
-  /// for seconds while the person walks); without a range, at most one advertising
-  /// interval (0.1 s), s; 0: all fully.
-  double bearing_decorrelation_time = 0.5;
-  /// The slowly varying part of each sensor's error (correlated_error.hpp): the floor
-  /// of the reported covariance. Range and TDoA in m, azimuth in rad.
-  double range_bias_sigma = 0.05;
-  double tdoa_bias_sigma = 0.05;
-  double azimuth_bias_sigma = deg2rad(2.0);
+
+  template <typename Reading>
+  typename Reading::Tuning& of() {
+    return std::get<readingIndex<Reading>()>(kinds);
+  }
+  template <typename Reading>
+  const typename Reading::Tuning& of() const {
+    return std::get<readingIndex<Reading>()>(kinds);
+  }
 };
 
 /// What a reading needs from the tracker to answer its questions (tracked_reading.hpp):

@@ -141,6 +141,19 @@ struct RangeReading {
   static constexpr bool kFixesDistance = true;
   static constexpr ColdSeed kColdSeed = ColdSeed::kRing;
   static constexpr const char* kTopicsParam = "uwb_topics";
+  /// Its tuning in the tracker (ParticleTrackerConfig::of(), from LocatorConfig).
+  struct Tuning {
+    RangeLikelihood likelihood;  ///< range_sigma, range_outlier_share, range_outlier_length
+    /// A module's ranges closer in time than this are not independent (real errors stay
+    /// correlated over tenths of a second and longer): one arriving dt < this after the
+    /// module's previous one counts as dt / this of a measurement (its sigma grows by
+    /// sqrt(this / dt)), so a 100 Hz module carries the information of a 10 Hz one and the
+    /// cloud does not collapse onto the current error. s; 0: every range counts fully.
+    double decorrelation_time = 0.1;
+    /// The slowly varying part of the error (correlated_error.hpp): the floor of the
+    /// reported covariance, m.
+    double bias_sigma = 0.05;
+  };
   static std::size_t expectedSensors(const Layout& layout) { return layout.twr_modules.size(); }
   SensorPair sensors() const { return {module, 0}; }
   std::optional<SensorPair> heardAs() const { return sensors(); }

@@ -73,6 +73,10 @@ struct RssDirectionReading {
   static constexpr bool kFixesDistance = false;
   static constexpr ColdSeed kColdSeed = ColdSeed::kNone;
   static constexpr const char* kTopicsParam = nullptr;  ///< formed by the locator, no topic
+  struct Tuning {
+    bool enabled = false;  ///< rss_direction: an optional input
+    RssDirectionLikelihood likelihood;
+  };
   static std::size_t expectedSensors(const Layout& /*layout*/) { return 0; }
   SensorPair sensors() const { return {pair, 0}; }
   std::optional<SensorPair> heardAs() const { return std::nullopt; }

@@ -103,6 +103,15 @@ struct TdoaReading {
   static constexpr bool kFixesDistance = true;
   static constexpr ColdSeed kColdSeed = ColdSeed::kDisc;
   static constexpr const char* kTopicsParam = "tdoa_topics";
+  struct Tuning {
+    /// The range's, symmetric: either anchor's path may be the long one.
+    RangeLikelihood likelihood = [] {
+      RangeLikelihood l;
+      l.one_sided = false;
+      return l;
+    }();
+    double bias_sigma = 0.05;  ///< m, the slowly varying error (correlated_error.hpp)
+  };
   static std::size_t expectedSensors(const Layout& layout) {
     return layout.tdoa_anchors.empty() ? 0 : 1;
   }

@@ -398,7 +398,7 @@ TrackerOutput collinearRangesWithRss(const Eigen::Vector3d& truth, bool rss, uns
   }
   layout.aoa_boards = test::uncalibratedLayout("spot.yaml").aoa_boards;
   ParticleTrackerConfig config;
-  config.rss_direction = rss;
+  config.of<RssDirectionReading>().enabled = rss;
   ParticleTracker tracker(layout, config);
   const std::vector<RssPair> pairs = opposedBoardPairs(layout.aoa_boards);
   std::mt19937_64 rng(seed);
