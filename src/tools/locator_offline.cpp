@@ -33,7 +33,7 @@ struct Options {
   std::string sweep;
   std::string out;
   std::string truth_topic = "ground_truth/target_relative";
-  double rate = 0.0;  ///< 0: the parameter files' `rate` (default 20 Hz)
+  double rate = 0.0;  ///< 0: the parameter files' `rate`
 };
 
 rf::cli::CommandLine commandLine() {
@@ -52,7 +52,7 @@ rf::cli::CommandLine commandLine() {
       "params", po::value<std::vector<std::string>>()->value_name("FILE"),
       "locator parameters; repeat: later files override earlier keys (default: the "
       "locator's own defaults)")("rate", po::value<std::string>()->value_name("HZ"),
-                                 "update rate (default: the files' rate, 20 Hz)")(
+                                 "update rate (default: the files' rate)")(
       "truth-topic", po::value<std::string>()->value_name("TOPIC"),
       "PointStamped ground truth in the robot frame (default: ground_truth/target_relative, "
       "the simulator's)")("out", po::value<std::string>()->value_name("DIR"),

@@ -8,8 +8,8 @@ namespace radio_follow {
 /// How far ahead of the receiver's clock a stamp may be before it counts as "from the
 /// future", seconds. Drivers stamp with the host's receive time, so on one machine a
 /// stamp is never ahead; between machines NTP keeps clocks within a few milliseconds.
-/// 50 ms admits that and one roscpp delivery, and is an order of magnitude below every
-/// freshness timeout (estimate_timeout 0.5 s, range_timeout 1 s) it could extend.
+/// 50 ms admits that and one roscpp delivery, and is an order of magnitude below the
+/// shipped freshness timeouts (estimate_timeout, range_timeout) it could extend.
 constexpr double kFutureStampTolerance = 0.05;
 
 /// The same under simulated time (/use_sim_time: the simulator, a replayed bag), seconds

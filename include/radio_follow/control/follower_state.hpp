@@ -67,8 +67,8 @@ std::string defaultText(FollowerState state);
 /// How long a status must hold before it is announced, s. Inputs at the edge of two stop
 /// reasons (steady future-stamped ranges: "Clock mismatch" / "No range to the target")
 /// used to flip the status 20 times a second, and the announcer spoke both in turn. Half
-/// a second is shorter than any stop's hold (hold_time, 1 s shipped), so every stop is
-/// still announced; cmd_vel does not wait for it.
+/// a second is shorter than the shipped stop's hold (hold_time), so every stop is still
+/// announced; cmd_vel does not wait for it.
 constexpr double kStatusSettleTime = 0.5;
 
 /// Decides when the node announces its status (FollowerStatus, the announcer speaks each

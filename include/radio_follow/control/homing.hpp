@@ -92,7 +92,7 @@ struct HomingParams {
   double max_linear = 0.5;           ///< m/s, v_max of eq 15
   double linear_gain = 0.5;          ///< 1/s, speed = min(v_max, gain * distance)
   double angular_gain = 1.0;         ///< 1/s
-  double max_angular = 1.0;          ///< rad/s
+  double max_angular = MotionLimits().max_angular;  ///< rad/s (the pipeline's, set by the node)
 
   void validate() const;
 };

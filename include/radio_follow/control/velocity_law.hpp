@@ -42,17 +42,17 @@ struct VelocityLawParams {
   double degraded_speed_factor = 0.5;
   /// A DEGRADED estimate is followed at full speed while its range sigma, and its bearing
   /// sigma as a sideways distance at the follow distance, are at most this, metres. The
-  /// locator calls an estimate OK when its worst sigma is within 0.5 m (max_position_sigma)
+  /// locator calls an estimate OK when its worst sigma is within its max_position_sigma
   /// or a share of the distance; far away, a bearing spread of a few degrees is metres
   /// sideways and the estimate DEGRADED, though steering needs only the angle: the robot
   /// heads along the bearing and the sideways error shrinks as it closes in.
   double max_follow_sigma = 0.5;
   /// Maximum forward speed, m/s (also the linear PID's output limit).
-  double max_linear = 1.5;
+  double max_linear = MotionLimits().max_linear;
   /// The base's braking deceleration (MotionLimits::max_linear_decel, copied by the node),
   /// m/s^2: the speed is never more than the robot can still brake from before the point
   /// where the law has it at rest (brakingSpeed()).
-  double max_linear_decel = 2.0;
+  double max_linear_decel = MotionLimits().max_linear_decel;
   /// The safety layer's stop distance (SafetyParams::safe_distance, copied by the node):
   /// the law must come to rest before it, so follow_distance - closing_distance >= it.
   double safe_distance = SafetyParams().safe_distance;
@@ -62,8 +62,9 @@ struct VelocityLawParams {
   double backwards_angle = 2.6179938779914944;  // 150 deg
   /// Consecutive "behind" cycles before the driving direction switches.
   int backwards_cycles = 5;
-  PidGains linear{1.0, 0.0, 0.0, 0.3, 0.2, 1.5};
-  PidGains angular{1.5, 0.0, 0.1, 0.3, 0.1, 1.0};
+  /// Output limits: the pipeline's max_linear and max_angular (set by lawWithCommon).
+  PidGains linear{1.0, 0.0, 0.0, 0.3, 0.2, MotionLimits().max_linear};
+  PidGains angular{1.5, 0.0, 0.1, 0.3, 0.1, MotionLimits().max_angular};
 
   /// The law's parameters (max_linear and safe_distance are the pipeline's, copied by
   /// lawWithCommon), linear_pid/* and angular_pid/* included.

@@ -151,8 +151,8 @@ struct BearingLikelihood {
     /// target is.
     kEachParticle,
   };
-  double azimuth_sigma = 0.087;   ///< rad
-  double elevation_sigma = 0.17;  ///< rad
+  double azimuth_sigma = deg2rad(5.0);     ///< rad
+  double elevation_sigma = deg2rad(10.0);  ///< rad
   bool use_elevation = true;
   double outlier_share = 0.05;  ///< reflections, from any direction
   /// Elevations alone off (shadowed: the wearer's body between tag and board), uniform.

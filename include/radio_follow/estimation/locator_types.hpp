@@ -46,8 +46,8 @@ struct LocatorConfig {
   double height = ParticleFilter::Config().height;  ///< m
   double range_sigma = RangeLikelihood().sigma;  ///< m (real DWM1001 ranges, doc/nodes/locator.md)
   double tdoa_sigma = 0.1;                       ///< m, when a difference has no variance
-  double azimuth_sigma = deg2rad(5.0);           ///< rad
-  double elevation_sigma = deg2rad(10.0);        ///< rad
+  double azimuth_sigma = BearingLikelihood().azimuth_sigma;      ///< rad
+  double elevation_sigma = BearingLikelihood().elevation_sigma;  ///< rad
   bool use_elevation = true;
   LossConfig range_loss = RangeObservation::kDefaultLoss;
   LossConfig tdoa_loss = TdoaObservation::kDefaultLoss;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "radio_follow/config/layout.hpp"
+#include "radio_follow/estimation/locator_types.hpp"
 #include "radio_follow/estimation/measurement_models.hpp"
 
 namespace radio_follow {
@@ -18,8 +19,10 @@ struct AdvisorConfig {
   /// Height of the tag above the fixed frame's origin, m.
   double target_height = kDefaultTargetHeight;
   bool planar = true;          ///< true: 2D bound (height known, the locator's 2D mode)
-  bool use_elevation = true;   ///< bearings carry an elevation (the locator's default)
-  double tdoa_sigma = 0.1;     ///< m, TDoA differences (no table in the simulator)
+  /// Bearings carry an elevation (the locator's default).
+  bool use_elevation = LocatorConfig().use_elevation;
+  /// m, TDoA differences (the locator's default; no table in the simulator).
+  double tdoa_sigma = LocatorConfig().tdoa_sigma;
   std::vector<double> rings{2.0, 4.0, 8.0};  ///< ring radii of the summary, m
   int ring_samples = 360;                    ///< points per ring
   int sectors = 16;                          ///< direction sectors, sector 0 centred ahead

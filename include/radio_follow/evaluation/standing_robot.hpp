@@ -10,6 +10,7 @@
 
 #include "radio_follow/config/layout.hpp"
 #include "radio_follow/estimation/locator.hpp"
+#include "radio_follow/estimation/locator_node_params.hpp"
 #include "radio_follow/sim/sensor_profile.hpp"
 #include "radio_follow/sim/virtual_sensors.hpp"
 #include "radio_follow/sim/world.hpp"
@@ -17,8 +18,8 @@
 namespace radio_follow {
 namespace evaluation {
 
-/// The locator node's update period in the lab's open-loop runs (its shipped 20 Hz), s.
-constexpr double kLocatorUpdatePeriod = 0.05;
+/// The locator node's update period in the lab's open-loop runs (its shipped `rate`), s.
+inline const double kLocatorUpdatePeriod = 1.0 / estimation::LocatorNodeParams().rate;
 
 /// One range or bearing the standing robot's sensors delivered, as the locator got it.
 struct SensorReading {
