@@ -39,7 +39,7 @@ Arguments, passed on to roslaunch (every one: roslaunch --ros-args radio_follow 
   scenario:=NAME      config/scenarios/NAME.yaml (default outdoor_loop):
                       $(shipped scenarios)
   controller:=NAME    velocity_controller (default) or path_follower
-  seed:=N             random seed of the simulated noise (default 1)
+  seed:=N             random seed of the simulated noise (default: config/simulator.yaml's)
   time_factor:=F      simulated seconds per wall second (default 4.0)
   serial:=true        the real serial drivers on simulated pseudo-terminals
   rviz:=true          open rviz with config/demo.rviz (needs Debian's rviz)
