@@ -98,7 +98,7 @@ class UwbRangesInput final : public MessageInput<UwbRanges> {
   std::set<std::size_t> heard_;      // modules named
   std::set<std::string> strangers_;  // names the layout does not have
   IdCache modules_;                  // UwbRanges tag_id or frame -> TWR module index
-  IdCache target_anchors_;  // UwbRange.anchor_id -> 0: the target's, kNoSensor: another
+  IdCache target_anchors_;           // UwbRange.anchor_id -> 0: the target's, kNoSensor: another
 };
 
 std::unique_ptr<SensorInput> makeUwbRangesInput(LocatorInputs& inputs) {
