@@ -79,18 +79,21 @@ using PerObservationKind =
     std::array<T, std::tuple_size_v<decltype(std::declval<ObservationSet>().lists())>>;
 
 namespace detail {
+/// The position of T among Ts (sizeof...(Ts) when absent).
+template <typename T, typename... Ts>
+constexpr std::size_t indexOf() {
+  constexpr bool match[] = {std::is_same_v<T, Ts>...};
+  for (std::size_t i = 0; i < sizeof...(Ts); ++i) {
+    if (match[i])
+      return i;
+  }
+  return sizeof...(Ts);
+}
 template <typename Observation, typename Lists>
 struct KindIndex;
 template <typename Observation, typename... List>
 struct KindIndex<Observation, std::tuple<List&...>> {
-  static constexpr std::size_t value = [] {
-    constexpr bool match[] = {std::is_same_v<std::vector<Observation>, List>...};
-    for (std::size_t i = 0; i < sizeof...(List); ++i) {
-      if (match[i])
-        return i;
-    }
-    return sizeof...(List);
-  }();
+  static constexpr std::size_t value = indexOf<std::vector<Observation>, List...>();
 };
 }  // namespace detail
 
@@ -116,12 +119,7 @@ struct ReadingTuple<std::variant<Reading...>> {
   using Tunings = std::tuple<typename Reading::Tuning...>;
   template <typename R>
   static constexpr std::size_t index() {
-    constexpr bool match[] = {std::is_same_v<R, Reading>...};
-    for (std::size_t i = 0; i < sizeof...(Reading); ++i) {
-      if (match[i])
-        return i;
-    }
-    return sizeof...(Reading);
+    return indexOf<R, Reading...>();
   }
 };
 }  // namespace detail
